@@ -1,0 +1,57 @@
+"""ivy: write numerical code once, run it on numpy, torch, jax and tensorflow.
+
+``import ivy`` imports no framework. The per-backend namespaces ``ivy.numpy``, ``ivy.torch``,
+``ivy.jax`` and ``ivy.tensorflow`` are imported on first access.
+
+Example:
+    >>> import numpy as np, ivy
+    >>> ivy.clip(np.array([-1., 2.]), 0, 1)           # framework inferred: numpy
+    array([0., 1.])
+    >>> ivy.clip(np.array([-1., 2.]), 0, 1, f='torch') # framework chosen: torch
+    tensor([0., 1.], dtype=torch.float64)
+"""
+
+from ivy import core, dtypes, errors, framework_handler
+from ivy.core import *  # noqa: F403 - the public API is listed in ivy.core.__all__
+from ivy.dtypes import *  # noqa: F403
+from ivy.errors import *  # noqa: F403
+from ivy.framework_handler import (
+    available_frameworks,
+    current_framework,
+    framework_of_type,
+    get_framework,
+    installed_frameworks,
+    set_framework,
+    unset_framework,
+)
+
+__version__ = "0.1.0"
+
+e = 2.718281828459045
+pi = 3.141592653589793
+inf = float("inf")
+nan = float("nan")
+newaxis = None
+
+_NAMESPACES = framework_handler.available_frameworks()
+
+__all__ = sorted(
+    set(core.__all__)
+    | set(dtypes.__all__)
+    | set(errors.__all__)
+    | set(framework_handler.__all__)
+    | {"e", "pi", "inf", "nan", "newaxis"}
+)
+
+
+def __getattr__(name: str):
+    """Load the backend namespaces ``ivy.numpy``, ``ivy.torch``, ... on first access."""
+    if name in _NAMESPACES:
+        ns = framework_handler.load_backend(name)
+        globals()[name] = ns
+        return ns
+    raise AttributeError(f"module 'ivy' has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(_NAMESPACES))

@@ -1,0 +1,100 @@
+"""numpy backend: array creation (float32 by default, as on every backend)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ivy.backends.numpy._helpers import (
+    check_device,
+    default_dtype_of_value,
+    has_own_dtype,
+    native_dtype,
+)
+
+__all__ = [
+    "asarray", "zeros", "ones", "empty", "full", "arange", "linspace", "eye",
+    "zeros_like", "ones_like", "empty_like", "full_like",
+]
+
+_DOWNCAST = {np.dtype(np.float64): np.float32, np.dtype(np.complex128): np.complex64}
+
+
+def asarray(obj, /, *, dtype=None, device=None, copy=None):
+    check_device(device)
+    if not isinstance(obj, (np.ndarray, np.generic)) and hasattr(obj, "__dlpack__"):
+        obj = _from_other_framework(obj)
+    if dtype is not None:
+        return np.asarray(obj, dtype=native_dtype(dtype), copy=copy)
+    x = np.asarray(obj, copy=copy)
+    if not has_own_dtype(obj) and x.dtype in _DOWNCAST:
+        return x.astype(_DOWNCAST[x.dtype])
+    return x
+
+
+def _from_other_framework(obj):
+    """A tensor of another framework: detach it if it can be, then let numpy read it."""
+    detach = getattr(obj, "detach", None)
+    if detach is not None:
+        obj = detach().cpu()
+    return obj
+
+
+def zeros(shape, *, dtype=None, device=None):
+    check_device(device)
+    return np.zeros(shape, dtype=native_dtype(dtype) or np.float32)
+
+
+def ones(shape, *, dtype=None, device=None):
+    check_device(device)
+    return np.ones(shape, dtype=native_dtype(dtype) or np.float32)
+
+
+def empty(shape, *, dtype=None, device=None):
+    check_device(device)
+    return np.empty(shape, dtype=native_dtype(dtype) or np.float32)
+
+
+def full(shape, fill_value, *, dtype=None, device=None):
+    check_device(device)
+    dt = native_dtype(dtype) or default_dtype_of_value(fill_value)
+    return np.full(shape, fill_value, dtype=dt)
+
+
+def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
+    check_device(device)
+    if dtype is None:
+        ints = all(isinstance(v, (int, np.integer)) for v in (start, stop, step) if v is not None)
+        dtype = np.int64 if ints else np.float32
+    if stop is None:
+        start, stop = 0, start
+    return np.arange(start, stop, step, dtype=native_dtype(dtype))
+
+
+def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True):
+    check_device(device)
+    return np.linspace(start, stop, num, endpoint=endpoint, dtype=native_dtype(dtype) or np.float32)
+
+
+def eye(n_rows, n_cols=None, /, *, k=0, dtype=None, device=None):
+    check_device(device)
+    return np.eye(n_rows, n_cols, k=k, dtype=native_dtype(dtype) or np.float32)
+
+
+def zeros_like(x, /, *, dtype=None, device=None):
+    check_device(device)
+    return np.zeros_like(x, dtype=native_dtype(dtype))
+
+
+def ones_like(x, /, *, dtype=None, device=None):
+    check_device(device)
+    return np.ones_like(x, dtype=native_dtype(dtype))
+
+
+def empty_like(x, /, *, dtype=None, device=None):
+    check_device(device)
+    return np.empty_like(x, dtype=native_dtype(dtype))
+
+
+def full_like(x, /, fill_value, *, dtype=None, device=None):
+    check_device(device)
+    return np.full_like(x, fill_value, dtype=native_dtype(dtype))

@@ -1,0 +1,11 @@
+"""numpy backend: dtype conversion."""
+
+from __future__ import annotations
+
+from ivy.backends.numpy._helpers import native_dtype
+
+__all__ = ["astype"]
+
+
+def astype(x, dtype, /, *, copy=True):
+    return x.astype(native_dtype(dtype), copy=copy)

@@ -1,0 +1,59 @@
+"""numpy backend: gathering and scattering."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ivy.backends.numpy._helpers import native_dtype
+
+__all__ = ["take", "gather_nd", "scatter_nd", "one_hot"]
+
+_REDUCERS = {"sum": np.add, "min": np.minimum, "max": np.maximum}
+
+
+def take(x, indices, /, *, axis=None):
+    return np.take(x, indices, axis=axis)
+
+
+def _index_tuple(indices):
+    indices = np.asarray(indices)
+    return tuple(np.moveaxis(indices, -1, 0))
+
+
+def gather_nd(params, indices, /):
+    return np.asarray(params)[_index_tuple(indices)]
+
+
+def scatter_nd(indices, updates, /, shape, *, reduction="sum"):
+    updates = np.asarray(updates)
+    idx = _index_tuple(indices)
+    out = np.zeros(shape, dtype=updates.dtype)
+    if reduction == "replace":
+        out[idx] = updates
+        return out
+    if reduction not in _REDUCERS:
+        raise ValueError(
+            f"scatter_nd: unknown reduction {reduction!r}; use 'sum', 'replace', 'min' or 'max'."
+        )
+    if reduction == "sum":
+        np.add.at(out, idx, updates)
+        return out
+    touched = np.zeros(shape, dtype=bool)
+    touched[idx] = True
+    fill = _extreme(updates.dtype, largest=reduction == "min")
+    out.fill(fill)
+    _REDUCERS[reduction].at(out, idx, updates)
+    out[~touched] = 0
+    return out
+
+
+def _extreme(dtype, largest):
+    if np.issubdtype(dtype, np.floating):
+        return np.inf if largest else -np.inf
+    info = np.iinfo(dtype)
+    return info.max if largest else info.min
+
+
+def one_hot(indices, depth, /, *, dtype=None):
+    indices = np.asarray(indices)
+    return (indices[..., None] == np.arange(depth)).astype(native_dtype(dtype) or np.float32)

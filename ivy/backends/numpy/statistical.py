@@ -1,0 +1,37 @@
+"""numpy backend: reductions."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ivy.backends.numpy._helpers import native_dtype
+
+__all__ = ["sum", "prod", "mean", "min", "max", "var", "std"]
+
+
+def sum(x, /, *, axis=None, dtype=None, keepdims=False):
+    return np.sum(x, axis=axis, dtype=native_dtype(dtype), keepdims=keepdims)
+
+
+def prod(x, /, *, axis=None, dtype=None, keepdims=False):
+    return np.prod(x, axis=axis, dtype=native_dtype(dtype), keepdims=keepdims)
+
+
+def mean(x, /, *, axis=None, keepdims=False):
+    return np.mean(x, axis=axis, keepdims=keepdims)
+
+
+def min(x, /, *, axis=None, keepdims=False):
+    return np.min(x, axis=axis, keepdims=keepdims)
+
+
+def max(x, /, *, axis=None, keepdims=False):
+    return np.max(x, axis=axis, keepdims=keepdims)
+
+
+def var(x, /, *, axis=None, correction=0.0, keepdims=False):
+    return np.var(x, axis=axis, ddof=correction, keepdims=keepdims)
+
+
+def std(x, /, *, axis=None, correction=0.0, keepdims=False):
+    return np.std(x, axis=axis, ddof=correction, keepdims=keepdims)

@@ -1,0 +1,326 @@
+"""Elementwise functions, with Array API broadcasting and type promotion.
+
+Binary functions accept Python scalars on either side: ``ivy.add(x, 1.0)``.
+"""
+
+from __future__ import annotations
+
+from ivy.core._dispatch import dispatch
+
+__all__ = [
+    "abs",
+    "acos",
+    "acosh",
+    "add",
+    "asin",
+    "asinh",
+    "atan",
+    "atan2",
+    "atanh",
+    "ceil",
+    "clip",
+    "cos",
+    "cosh",
+    "divide",
+    "equal",
+    "exp",
+    "expm1",
+    "floor",
+    "floor_divide",
+    "greater",
+    "greater_equal",
+    "isfinite",
+    "isinf",
+    "isnan",
+    "less",
+    "less_equal",
+    "log",
+    "log10",
+    "log1p",
+    "log2",
+    "logical_and",
+    "logical_not",
+    "logical_or",
+    "logical_xor",
+    "maximum",
+    "minimum",
+    "multiply",
+    "negative",
+    "not_equal",
+    "positive",
+    "pow",
+    "remainder",
+    "round",
+    "sign",
+    "sin",
+    "sinh",
+    "sqrt",
+    "square",
+    "subtract",
+    "tan",
+    "tanh",
+    "trunc",
+]
+
+
+@dispatch
+def abs(x, /, *, f=None):
+    """Absolute value."""
+
+
+@dispatch
+def acos(x, /, *, f=None):
+    """Inverse cosine, in radians."""
+
+
+@dispatch
+def acosh(x, /, *, f=None):
+    """Inverse hyperbolic cosine."""
+
+
+@dispatch
+def asin(x, /, *, f=None):
+    """Inverse sine, in radians."""
+
+
+@dispatch
+def asinh(x, /, *, f=None):
+    """Inverse hyperbolic sine."""
+
+
+@dispatch
+def atan(x, /, *, f=None):
+    """Inverse tangent, in radians."""
+
+
+@dispatch
+def atanh(x, /, *, f=None):
+    """Inverse hyperbolic tangent."""
+
+
+@dispatch
+def ceil(x, /, *, f=None):
+    """Smallest integer-valued number not less than x."""
+
+
+@dispatch
+def cos(x, /, *, f=None):
+    """Cosine of x in radians."""
+
+
+@dispatch
+def cosh(x, /, *, f=None):
+    """Hyperbolic cosine."""
+
+
+@dispatch
+def exp(x, /, *, f=None):
+    """Exponential e**x."""
+
+
+@dispatch
+def expm1(x, /, *, f=None):
+    """exp(x) - 1, accurate for small x."""
+
+
+@dispatch
+def floor(x, /, *, f=None):
+    """Largest integer-valued number not greater than x."""
+
+
+@dispatch
+def isfinite(x, /, *, f=None):
+    """True where x is finite."""
+
+
+@dispatch
+def isinf(x, /, *, f=None):
+    """True where x is +inf or -inf."""
+
+
+@dispatch
+def isnan(x, /, *, f=None):
+    """True where x is nan."""
+
+
+@dispatch
+def log(x, /, *, f=None):
+    """Natural logarithm."""
+
+
+@dispatch
+def log1p(x, /, *, f=None):
+    """log(1 + x), accurate for small x."""
+
+
+@dispatch
+def log2(x, /, *, f=None):
+    """Base-2 logarithm."""
+
+
+@dispatch
+def log10(x, /, *, f=None):
+    """Base-10 logarithm."""
+
+
+@dispatch
+def logical_not(x, /, *, f=None):
+    """Logical NOT of x (as bool)."""
+
+
+@dispatch
+def negative(x, /, *, f=None):
+    """-x."""
+
+
+@dispatch
+def positive(x, /, *, f=None):
+    """+x."""
+
+
+@dispatch
+def round(x, /, *, f=None):
+    """Round to the nearest integer-valued number, halves to even."""
+
+
+@dispatch
+def sign(x, /, *, f=None):
+    """Sign of x: -1, 0 or 1."""
+
+
+@dispatch
+def sin(x, /, *, f=None):
+    """Sine of x in radians."""
+
+
+@dispatch
+def sinh(x, /, *, f=None):
+    """Hyperbolic sine."""
+
+
+@dispatch
+def sqrt(x, /, *, f=None):
+    """Square root."""
+
+
+@dispatch
+def square(x, /, *, f=None):
+    """x * x."""
+
+
+@dispatch
+def tan(x, /, *, f=None):
+    """Tangent of x in radians."""
+
+
+@dispatch
+def tanh(x, /, *, f=None):
+    """Hyperbolic tangent."""
+
+
+@dispatch
+def trunc(x, /, *, f=None):
+    """Round toward zero."""
+
+
+@dispatch("x1", "x2")
+def add(x1, x2, /, *, f=None):
+    """x1 + x2."""
+
+
+@dispatch("x1", "x2")
+def atan2(x1, x2, /, *, f=None):
+    """Angle of the point (x2, x1), in radians, in [-pi, pi]."""
+
+
+@dispatch("x1", "x2")
+def divide(x1, x2, /, *, f=None):
+    """x1 / x2 (true division)."""
+
+
+@dispatch("x1", "x2")
+def equal(x1, x2, /, *, f=None):
+    """x1 == x2."""
+
+
+@dispatch("x1", "x2")
+def floor_divide(x1, x2, /, *, f=None):
+    """Floor of x1 / x2."""
+
+
+@dispatch("x1", "x2")
+def greater(x1, x2, /, *, f=None):
+    """x1 > x2."""
+
+
+@dispatch("x1", "x2")
+def greater_equal(x1, x2, /, *, f=None):
+    """x1 >= x2."""
+
+
+@dispatch("x1", "x2")
+def less(x1, x2, /, *, f=None):
+    """x1 < x2."""
+
+
+@dispatch("x1", "x2")
+def less_equal(x1, x2, /, *, f=None):
+    """x1 <= x2."""
+
+
+@dispatch("x1", "x2")
+def logical_and(x1, x2, /, *, f=None):
+    """x1 AND x2 (as bool)."""
+
+
+@dispatch("x1", "x2")
+def logical_or(x1, x2, /, *, f=None):
+    """x1 OR x2 (as bool)."""
+
+
+@dispatch("x1", "x2")
+def logical_xor(x1, x2, /, *, f=None):
+    """x1 XOR x2 (as bool)."""
+
+
+@dispatch("x1", "x2")
+def maximum(x1, x2, /, *, f=None):
+    """Elementwise maximum (nan propagates)."""
+
+
+@dispatch("x1", "x2")
+def minimum(x1, x2, /, *, f=None):
+    """Elementwise minimum (nan propagates)."""
+
+
+@dispatch("x1", "x2")
+def multiply(x1, x2, /, *, f=None):
+    """x1 * x2."""
+
+
+@dispatch("x1", "x2")
+def not_equal(x1, x2, /, *, f=None):
+    """x1 != x2."""
+
+
+@dispatch("x1", "x2")
+def pow(x1, x2, /, *, f=None):
+    """x1 ** x2."""
+
+
+@dispatch("x1", "x2")
+def remainder(x1, x2, /, *, f=None):
+    """x1 mod x2, with the sign of x2."""
+
+
+@dispatch("x1", "x2")
+def subtract(x1, x2, /, *, f=None):
+    """x1 - x2."""
+
+
+@dispatch("x", "min", "max")
+def clip(x, /, min=None, max=None, *, f=None):
+    """Clamp ``x`` to ``[min, max]``; either bound may be None, a scalar or an array.
+
+    Example: ``ivy.clip(np.array([-1., 2.]), 0, 1, f='torch')`` -> tensor([0., 1.]).
+    """

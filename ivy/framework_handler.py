@@ -1,0 +1,403 @@
+"""Framework selection: the backend registry, type inference, and the global framework stack.
+
+How a framework-agnostic call such as ``ivy.sin(x, f=None)`` picks its backend:
+
+1. an explicit ``f`` (a name such as ``'torch'`` or a namespace such as ``ivy.torch``), else
+2. the framework set globally with :func:`set_framework` (or a ``with`` block), else
+3. the type of the array inputs, looked up in a dict keyed by ``type(x)``.
+
+A type seen for the first time is resolved by the module its class (or a base class) was defined
+in, so ``import ivy`` imports no framework and a framework that is not installed is never needed:
+an object of a framework can only exist if that framework was already imported by the user.
+
+While a framework is set globally, the backend's functions are bound into the ``ivy`` namespace
+itself (``ivy.sin is ivy.torch.sin``), so calls through ``ivy`` cost nothing extra.
+"""
+
+from __future__ import annotations
+
+import importlib
+import importlib.util
+import sys
+import types
+from dataclasses import dataclass
+from typing import Any, Callable
+
+from ivy.errors import (
+    FrameworkNotInstalledError,
+    MixedFrameworksError,
+    NoFrameworkError,
+    UnknownFrameworkError,
+)
+
+__all__ = [
+    "get_framework",
+    "set_framework",
+    "unset_framework",
+    "current_framework",
+    "available_frameworks",
+    "installed_frameworks",
+    "framework_of_type",
+]
+
+
+@dataclass(frozen=True)
+class _BackendSpec:
+    module: str  # the ivy backend package
+    package: str  # the framework's own import name
+    extra: str  # the pyproject extra that installs it
+
+
+_BACKENDS: dict[str, _BackendSpec] = {
+    "numpy": _BackendSpec("ivy.backends.numpy", "numpy", "numpy"),
+    "torch": _BackendSpec("ivy.backends.torch", "torch", "torch"),
+    "jax": _BackendSpec("ivy.backends.jax", "jax", "jax"),
+    "tensorflow": _BackendSpec("ivy.backends.tensorflow", "tensorflow", "tensorflow"),
+}
+_ALIASES = {"np": "numpy", "pytorch": "torch", "tf": "tensorflow"}
+
+# Root module of a class -> backend name. Framework objects are recognised by where their class
+# (or one of its bases) was defined, which never requires importing anything.
+_MODULE_ROOTS = {
+    "numpy": "numpy",
+    "torch": "torch",
+    "jax": "jax",
+    "jaxlib": "jax",
+    "tensorflow": "tensorflow",
+}
+
+# Types that never decide a framework on their own: Python scalars, None, strings, slices...
+_PASSIVE: frozenset[type] = frozenset(
+    {int, float, bool, complex, str, bytes, type(None), slice, type(Ellipsis)}
+)
+# Containers that are searched for arrays.
+_CONTAINERS = (list, tuple, dict)
+
+# The state that generated dispatch functions read. They are compiled with this dict as their
+# globals, so updating an entry here updates every one of them at once.
+#   _current  : the namespace set globally, or None
+#   _by_type  : type(x) -> namespace, for array types only
+#   _by_f     : value of ``f`` (name or namespace) -> namespace
+dispatch_globals: dict[str, Any] = {
+    "_current": None,
+    "_by_type": {},
+    "_by_f": {},
+    "_passive": _PASSIVE,
+}
+_by_type: dict[type, types.ModuleType] = dispatch_globals["_by_type"]
+_by_f: dict[Any, types.ModuleType] = dispatch_globals["_by_f"]
+_weak_types: set[type] = set()  # numpy scalars: numpy only if no other framework is present
+_neutral_types: set[type] = set(_PASSIVE)
+
+_loaded: dict[str, types.ModuleType] = {}
+_stack: list[types.ModuleType] = []
+_on_load: list[Callable[[types.ModuleType], None]] = []
+
+
+# ----------------------------------------------------------------------------------------------
+# The registry
+# ----------------------------------------------------------------------------------------------
+
+
+def available_frameworks() -> tuple[str, ...]:
+    """Names of every framework ivy supports, installed or not."""
+    return tuple(_BACKENDS)
+
+
+def installed_frameworks() -> tuple[str, ...]:
+    """Names of the supported frameworks that are installed here (none is imported)."""
+    return tuple(n for n, s in _BACKENDS.items() if importlib.util.find_spec(s.package) is not None)
+
+
+def _canonical_name(name: str) -> str:
+    key = name.lower()
+    key = _ALIASES.get(key, key)
+    if key not in _BACKENDS:
+        raise UnknownFrameworkError(
+            f"Unknown framework {name!r}. Choose one of {', '.join(_BACKENDS)} "
+            f"(as f='torch', f=ivy.torch, or ivy.set_framework('torch'))."
+        )
+    return key
+
+
+def load_backend(name: str) -> types.ModuleType:
+    """Import (once) and return the ivy namespace of backend ``name``."""
+    name = _canonical_name(name)
+    ns = _loaded.get(name)
+    if ns is not None:
+        return ns
+    spec = _BACKENDS[name]
+    if importlib.util.find_spec(spec.package) is None:
+        hint = "" if name == "numpy" else f" or pip install 'ivy[{spec.extra}]'"
+        raise FrameworkNotInstalledError(
+            f"ivy's {name} backend needs the package '{spec.package}', which is not installed. "
+            f"Install it with pip install '.[{spec.extra}]' from the ivy repository{hint}, "
+            f"or choose another of the installed frameworks: {', '.join(installed_frameworks())}."
+        )
+    ns = importlib.import_module(spec.module)
+    ns.backend = name
+    ns.use = _Use(ns)
+    _loaded[name] = ns
+    _by_f[name] = ns
+    _by_f[ns] = ns
+    for alias, target in _ALIASES.items():
+        if target == name:
+            _by_f[alias] = ns
+    for hook in _on_load:
+        hook(ns)
+    return ns
+
+
+def on_backend_load(hook: Callable[[types.ModuleType], None]) -> None:
+    """Run ``hook(namespace)`` for every backend, now for the loaded ones and later for the rest."""
+    _on_load.append(hook)
+    for ns in list(_loaded.values()):
+        hook(ns)
+
+
+def _resolve_f(f: Any) -> types.ModuleType:
+    """Namespace for an explicit ``f`` argument: a name or a backend namespace."""
+    if isinstance(f, str):
+        return load_backend(f)
+    if isinstance(f, types.ModuleType) and getattr(f, "backend", None) in _loaded:
+        return f
+    raise UnknownFrameworkError(
+        f"f={f!r} is not a framework. Pass a name ({', '.join(_BACKENDS)}) "
+        f"or a namespace such as ivy.torch."
+    )
+
+
+dispatch_globals["_resolve_f"] = _resolve_f
+
+
+# ----------------------------------------------------------------------------------------------
+# Type inference
+# ----------------------------------------------------------------------------------------------
+
+
+def framework_of_type(t: type) -> str | None:
+    """Backend name that owns objects of type ``t``, or None for a type of no framework."""
+    for klass in t.__mro__:
+        root = klass.__module__.partition(".")[0]
+        name = _MODULE_ROOTS.get(root)
+        if name is not None:
+            return name
+    return None
+
+
+def _classify(t: type) -> types.ModuleType | None:
+    """Resolve and cache a type never seen before."""
+    name = framework_of_type(t)
+    if name is None:
+        _neutral_types.add(t)
+        return None
+    ns = load_backend(name)
+    if name == "numpy" and issubclass(t, _numpy_generic()):
+        _weak_types.add(t)
+    else:
+        _by_type[t] = ns
+    return ns
+
+
+def _numpy_generic() -> type:
+    return sys.modules["numpy"].generic
+
+
+def _infer(*objs: Any, name: str = "this function") -> types.ModuleType:
+    """Infer the namespace from the arrays found in ``objs`` (searching lists, tuples, dicts).
+
+    Raises MixedFrameworksError when arrays of two frameworks are found and NoFrameworkError when
+    none is found.
+    """
+    found: types.ModuleType | None = None
+    weak: types.ModuleType | None = None
+    pending = list(objs)
+    while pending:
+        obj = pending.pop()
+        t = type(obj)
+        ns = _by_type.get(t)
+        if ns is None:
+            if t in _neutral_types:
+                if isinstance(obj, _CONTAINERS):
+                    pending.extend(obj.values() if isinstance(obj, dict) else obj)
+                continue
+            if t in _weak_types:
+                weak = _loaded["numpy"]
+                continue
+            if isinstance(obj, _CONTAINERS):
+                pending.extend(obj.values() if isinstance(obj, dict) else obj)
+                continue
+            ns = _classify(t)
+            if ns is None:
+                continue
+            if t in _weak_types:
+                weak = ns
+                continue
+        if found is None:
+            found = ns
+        elif ns is not found:
+            raise MixedFrameworksError(
+                f"{name} got arrays of two frameworks, {found.backend} and {ns.backend}. "
+                f"Convert them to one framework first (e.g. with ivy.to_numpy or the framework's "
+                f"own conversion), or pass f= to choose the framework explicitly."
+            )
+    if found is not None:
+        return found
+    if weak is not None:
+        return weak
+    raise NoFrameworkError(
+        f"{name} could not infer a framework: none of its inputs is an array of "
+        f"{', '.join(_BACKENDS)}. Choose one with f='torch' (or f=ivy.torch), "
+        f"globally with ivy.set_framework('torch'), or in a block with "
+        f"`with ivy.set_framework('torch'):`."
+    )
+
+
+dispatch_globals["_infer"] = _infer
+
+
+# ----------------------------------------------------------------------------------------------
+# Public selection API
+# ----------------------------------------------------------------------------------------------
+
+
+def get_framework(*args: Any, f: Any = None) -> types.ModuleType:
+    """Return the backend namespace to use for ``args``.
+
+    Priority: explicit ``f`` > the globally set framework > inference from the inputs (which
+    searches lists, tuples and dicts).
+
+    Args:
+        *args: values whose arrays decide the framework.
+        f: a framework name (``'torch'``) or namespace (``ivy.torch``), or None.
+
+    Returns:
+        The backend namespace, e.g. ``ivy.torch``.
+
+    Example:
+        >>> xp = ivy.get_framework(np.ones(3))
+        >>> xp.backend
+        'numpy'
+    """
+    if f is not None:
+        try:
+            return _by_f[f]
+        except (KeyError, TypeError):
+            return _resolve_f(f)
+    if _stack:
+        return _stack[-1]
+    return _infer(*args, name="get_framework")
+
+
+def current_framework() -> types.ModuleType | None:
+    """The globally set backend namespace, or None when no framework is set."""
+    return _stack[-1] if _stack else None
+
+
+class _Scope:
+    """Returned by set_framework; as a context manager it restores the state it replaced."""
+
+    __slots__ = ("_depth", "_ns")
+
+    def __init__(self, depth: int, ns: types.ModuleType):
+        self._depth = depth
+        self._ns = ns
+
+    def __enter__(self) -> types.ModuleType:
+        return self._ns
+
+    def __exit__(self, *exc_info: object) -> None:
+        _restore_depth(self._depth)
+
+    def __repr__(self) -> str:
+        return f"<ivy framework scope {self._ns.backend}>"
+
+
+class _Use:
+    """``with ivy.torch.use:`` sets the framework for a block; reusable and nestable."""
+
+    __slots__ = ("_ns", "_depths")
+
+    def __init__(self, ns: types.ModuleType):
+        self._ns = ns
+        self._depths: list[int] = []
+
+    def __enter__(self) -> types.ModuleType:
+        self._depths.append(len(_stack))
+        _push(self._ns)
+        return self._ns
+
+    def __exit__(self, *exc_info: object) -> None:
+        _restore_depth(self._depths.pop())
+
+    def __repr__(self) -> str:
+        return f"<ivy.{self._ns.backend}.use>"
+
+
+def set_framework(framework: Any) -> _Scope:
+    """Set the framework globally: ``ivy.<fn>`` becomes the backend function itself.
+
+    Usable as a statement (undo with :func:`unset_framework`) or as a context manager, which
+    restores the previous state on exit, also when the block raises. Settings nest as a stack.
+
+    Args:
+        framework: a name (``'torch'``) or a namespace (``ivy.torch``).
+
+    Example:
+        >>> with ivy.set_framework('numpy'):
+        ...     ivy.sin is ivy.numpy.sin
+        True
+    """
+    ns = _resolve_f(framework)
+    depth = len(_stack)
+    _push(ns)
+    return _Scope(depth, ns)
+
+
+def unset_framework() -> None:
+    """Undo the most recent :func:`set_framework`; a no-op when no framework is set."""
+    if _stack:
+        _restore_depth(len(_stack) - 1)
+
+
+# ----------------------------------------------------------------------------------------------
+# Binding into the ivy namespace
+# ----------------------------------------------------------------------------------------------
+
+_MISSING = object()
+_saved: dict[str, Any] = {}  # ivy's own (framework-agnostic) attributes replaced by a binding
+
+
+def _push(ns: types.ModuleType) -> None:
+    _stack.append(ns)
+    _bind(ns)
+
+
+def _restore_depth(depth: int) -> None:
+    if len(_stack) <= depth:
+        return
+    del _stack[depth:]
+    if _stack:
+        _bind(_stack[-1])
+    else:
+        _unbind()
+
+
+def _bind(ns: types.ModuleType) -> None:
+    ivy_dict = sys.modules["ivy"].__dict__
+    for name in ns.__all__:
+        if name not in _saved:
+            _saved[name] = ivy_dict.get(name, _MISSING)
+        ivy_dict[name] = ns.__dict__[name]
+    dispatch_globals["_current"] = ns
+
+
+def _unbind() -> None:
+    ivy_dict = sys.modules["ivy"].__dict__
+    for name, value in _saved.items():
+        if value is _MISSING:
+            ivy_dict.pop(name, None)
+        else:
+            ivy_dict[name] = value
+    _saved.clear()
+    dispatch_globals["_current"] = None
