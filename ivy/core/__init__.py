@@ -1,30 +1,16 @@
-"""Framework-agnostic definitions of ivy's functions, one module per group."""
+"""Framework-agnostic definitions of ivy's functions, one module per group.
 
-from ivy.core import (
-    creation,
-    data_type,
-    elementwise,
-    general,
-    indexing,
-    linalg,
-    manipulation,
-    random,
-    searching,
-    statistical,
-)
+Every public module here is a group; each backend package has a module of the same name that
+implements the group's dispatched functions.
+"""
 
-GROUPS = (
-    creation,
-    data_type,
-    elementwise,
-    general,
-    indexing,
-    linalg,
-    manipulation,
-    random,
-    searching,
-    statistical,
+import importlib
+import pkgutil
+
+GROUP_NAMES = tuple(
+    sorted(m.name for m in pkgutil.iter_modules(__path__) if not m.name.startswith("_"))
 )
+GROUPS = tuple(importlib.import_module(f"{__name__}.{name}") for name in GROUP_NAMES)
 
 __all__ = sorted({name for group in GROUPS for name in group.__all__})
 
