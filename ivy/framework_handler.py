@@ -137,14 +137,14 @@ def load_backend(name: str) -> types.ModuleType:
     ns = importlib.import_module(spec.module)
     ns.backend = name
     ns.use = _Use(ns)
+    for hook in _on_load:
+        hook(ns)
     _loaded[name] = ns
     _by_f[name] = ns
     _by_f[ns] = ns
     for alias, target in _ALIASES.items():
         if target == name:
             _by_f[alias] = ns
-    for hook in _on_load:
-        hook(ns)
     return ns
 
 
@@ -245,9 +245,10 @@ def _infer(*objs: Any, name: str = "this function") -> types.ModuleType:
         return found
     if weak is not None:
         return weak
+    what = "has no array input" if not objs else "got no array among its inputs"
     raise NoFrameworkError(
-        f"{name} could not infer a framework: none of its inputs is an array of "
-        f"{', '.join(_BACKENDS)}. Choose one with f='torch' (or f=ivy.torch), "
+        f"{name} {what} to infer a framework from ({', '.join(_BACKENDS)}). "
+        f"Choose one with f='torch' (or f=ivy.torch), "
         f"globally with ivy.set_framework('torch'), or in a block with "
         f"`with ivy.set_framework('torch'):`."
     )

@@ -153,7 +153,11 @@ _ALIASES: dict[str, str] = {}
 
 
 def _bind_compositions(ns: types.ModuleType) -> None:
-    """Expose every composition in backend namespace ``ns`` with ``f`` bound to it."""
+    """Check that ``ns`` implements every dispatched function, then expose every composition in
+    it with ``f`` bound to it."""
+    missing = sorted(n for n in DISPATCHED if n not in _ALIASES and not hasattr(ns, n))
+    if missing:
+        raise ImportError(f"ivy backend {ns.__name__} does not implement {missing}")
     added = []
     for name, comp in COMPOSITIONS.items():
         if name in _ALIASES:

@@ -1,0 +1,274 @@
+"""Framework selection: inference from every input type, f=, global setting, blocks, errors."""
+
+from __future__ import annotations
+
+import types
+
+import numpy as np
+import pytest
+
+import ivy
+from ivy import framework_handler as fh
+
+
+@pytest.fixture
+def installed(request):
+    """Skip a case whose framework is not among the backends under test."""
+
+    def need(name):
+        if name not in request.config.ivy_backends:
+            pytest.skip(f"{name} is not among the tested backends")
+        return __import__(name)
+
+    return need
+
+
+# ---------------------------------------------------------------------------------------------
+# Inference from input types
+# ---------------------------------------------------------------------------------------------
+
+
+def test_numpy_arrays_and_scalars_infer_numpy():
+    assert ivy.get_framework(np.ones(2)) is ivy.numpy
+    assert ivy.get_framework(np.float32(1.0)) is ivy.numpy
+    assert ivy.get_framework(np.int64(1)) is ivy.numpy
+    out = ivy.sin(np.array([0.0, 1.0]))
+    np.testing.assert_allclose(out, np.sin([0.0, 1.0]))
+
+
+def test_torch_tensor_and_parameter(installed):
+    torch = installed("torch")
+    t = torch.ones(2)
+    p = torch.nn.Parameter(torch.ones(2))
+    assert ivy.get_framework(t) is ivy.torch
+    assert ivy.get_framework(p) is ivy.torch
+    assert isinstance(ivy.sin(p), torch.Tensor)
+
+
+def test_jax_arrays_and_tracers(installed):
+    jax = installed("jax")
+    x = jax.numpy.ones(3)
+    assert ivy.get_framework(x) is ivy.jax
+    seen = []
+
+    def fn(y):
+        seen.append(ivy.get_framework(y).backend)
+        return ivy.sum(ivy.sin(y))
+
+    jax.jit(fn)(x)
+    jax.grad(fn)(x)
+    jax.vmap(fn)(jax.numpy.ones((2, 3)))
+    assert seen == ["jax", "jax", "jax"]
+    grad = jax.grad(fn)(x)
+    np.testing.assert_allclose(np.asarray(grad), np.cos(np.ones(3)), rtol=1e-6)
+
+
+def test_tensorflow_eager_graph_and_variable(installed):
+    tf = installed("tensorflow")
+    seen = []
+
+    @tf.function
+    def fn(y):
+        seen.append(ivy.get_framework(y).backend)
+        return ivy.sin(y)
+
+    assert ivy.get_framework(tf.constant([1.0])) is ivy.tensorflow
+    assert ivy.get_framework(tf.Variable([1.0])) is ivy.tensorflow
+    out = fn(tf.constant([0.5]))
+    assert seen == ["tensorflow"]
+    np.testing.assert_allclose(out.numpy(), np.sin([0.5]), rtol=1e-6)
+
+
+def test_inference_searches_lists_tuples_and_dicts():
+    x = np.ones(2)
+    assert ivy.get_framework([1.0, (2, {"a": x})]) is ivy.numpy
+    assert ivy.get_framework({"w": [x]}) is ivy.numpy
+    out = ivy.concat([np.zeros(1), np.ones(1)])
+    np.testing.assert_array_equal(out, [0.0, 1.0])
+
+
+def test_python_scalars_beside_an_array_follow_the_array():
+    out = ivy.add(1.0, np.array([1.0]))
+    np.testing.assert_array_equal(out, [2.0])
+    out = ivy.clip(np.array([-1.0, 2.0]), 0, 1)
+    np.testing.assert_array_equal(out, [0.0, 1.0])
+
+
+def test_numpy_scalar_yields_to_another_framework(installed):
+    torch = installed("torch")
+    out = ivy.multiply(torch.ones(2), np.float32(3.0))
+    assert isinstance(out, torch.Tensor)
+
+
+def test_type_cache_is_filled_once():
+    ivy.sin(np.ones(1))
+    assert fh._by_type[np.ndarray] is ivy.numpy
+
+
+# ---------------------------------------------------------------------------------------------
+# Explicit f
+# ---------------------------------------------------------------------------------------------
+
+
+def test_f_as_name_namespace_and_alias(backend, xp):
+    x = np.array([-1.0, 2.0])
+    for f in (backend, xp):
+        out = ivy.clip(x, 0, 1, f=f)
+        assert ivy.get_framework(out) is xp
+        np.testing.assert_allclose(ivy.to_numpy(out), [0.0, 1.0])
+    assert ivy.get_framework(f=backend) is xp
+    if backend == "tensorflow":
+        assert ivy.get_framework(f="tf") is xp
+
+
+def test_f_wins_over_the_global_framework(backend, xp):
+    with ivy.set_framework("numpy"):
+        assert ivy.get_framework(f=backend) is xp
+        assert ivy.core.zeros(2, f=backend) is not None
+        assert ivy.get_framework(ivy.core.zeros(2, f=backend)) is xp
+
+
+# ---------------------------------------------------------------------------------------------
+# Global setting and blocks
+# ---------------------------------------------------------------------------------------------
+
+
+def test_set_framework_binds_backend_functions_into_ivy(backend, xp):
+    agnostic_sin = ivy.sin
+    ivy.set_framework(backend)
+    try:
+        assert ivy.sin is xp.sin
+        assert ivy.add is xp.add
+        assert ivy.float32 is xp.float32
+        assert ivy.current_framework() is xp
+        assert ivy.get_framework() is xp
+    finally:
+        ivy.unset_framework()
+    assert ivy.sin is agnostic_sin
+    assert ivy.float32 == "float32"
+    assert ivy.current_framework() is None
+
+
+def test_global_framework_wins_over_inference_for_held_references(backend, xp):
+    agnostic_zeros_like = ivy.zeros_like  # held before the framework is set
+    with ivy.set_framework(backend):
+        out = agnostic_zeros_like(xp.ones(2))
+        assert ivy.get_framework(out) is xp
+        assert ivy.get_framework(np.ones(2)) is xp
+
+
+def test_blocks_nest_and_restore(installed):
+    installed("torch")
+    installed("jax")
+    with ivy.set_framework("jax") as outer:
+        assert outer is ivy.jax
+        assert ivy.sin is ivy.jax.sin
+        with ivy.torch.use as inner:
+            assert inner is ivy.torch
+            assert ivy.sin is ivy.torch.sin
+            with ivy.numpy.use:
+                assert ivy.sin is ivy.numpy.sin
+            assert ivy.sin is ivy.torch.sin
+        assert ivy.sin is ivy.jax.sin
+    assert ivy.current_framework() is None
+    assert ivy.sin is ivy.core.sin
+
+
+def test_use_is_reusable_and_reentrant():
+    use = ivy.numpy.use
+    with use:
+        with use:
+            assert ivy.current_framework() is ivy.numpy
+        assert ivy.current_framework() is ivy.numpy
+    assert ivy.current_framework() is None
+
+
+def test_exception_inside_a_block_restores():
+    with pytest.raises(RuntimeError):
+        with ivy.set_framework("numpy"):
+            raise RuntimeError("boom")
+    assert ivy.current_framework() is None
+    assert ivy.sin is ivy.core.sin
+    with pytest.raises(RuntimeError):
+        with ivy.numpy.use:
+            ivy.set_framework("numpy")  # left set inside the block: the block still restores
+            raise RuntimeError("boom")
+    assert ivy.current_framework() is None
+
+
+def test_set_and_unset_as_statements_stack():
+    ivy.set_framework("numpy")
+    ivy.set_framework(ivy.numpy)
+    ivy.unset_framework()
+    assert ivy.current_framework() is ivy.numpy
+    ivy.unset_framework()
+    assert ivy.current_framework() is None
+    ivy.unset_framework()  # a no-op when nothing is set
+    assert ivy.current_framework() is None
+
+
+# ---------------------------------------------------------------------------------------------
+# Errors
+# ---------------------------------------------------------------------------------------------
+
+
+def test_unknown_framework_name():
+    with pytest.raises(ivy.UnknownFrameworkError, match="Choose one of numpy, torch, jax"):
+        ivy.zeros(2, f="mxnet")
+    with pytest.raises(ivy.UnknownFrameworkError):
+        ivy.set_framework("caffe")
+    with pytest.raises(ivy.UnknownFrameworkError, match="not a framework"):
+        ivy.zeros(2, f=types.ModuleType("numpy"))
+
+
+def test_framework_not_installed_names_the_extra(monkeypatch):
+    spec = fh._BackendSpec("ivy.backends.paddle", "paddle_is_not_installed_here", "paddle")
+    monkeypatch.setitem(fh._BACKENDS, "paddle", spec)
+    with pytest.raises(ivy.FrameworkNotInstalledError, match=r"pip install '\.\[paddle\]'"):
+        ivy.zeros(2, f="paddle")
+    assert issubclass(ivy.FrameworkNotInstalledError, ImportError)
+
+
+def test_arrays_of_two_frameworks(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    with pytest.raises(ivy.MixedFrameworksError, match="two frameworks"):
+        ivy.add(np.ones(2), xp.ones(2))
+    with pytest.raises(ivy.MixedFrameworksError):
+        ivy.concat([xp.ones(2), np.ones(2)])
+    with pytest.raises(ivy.MixedFrameworksError):
+        ivy.get_framework({"a": np.ones(1), "b": [xp.ones(1)]})
+
+
+def test_python_scalars_and_lists_need_a_framework():
+    for call in (lambda: ivy.sin(1.0), lambda: ivy.array([1.0, 2.0]), lambda: ivy.zeros(3)):
+        with pytest.raises(ivy.NoFrameworkError, match="set_framework"):
+            call()
+    with pytest.raises(ivy.NoFrameworkError, match="f='torch'"):
+        ivy.get_framework(1.0, [2, 3])
+    with ivy.set_framework("numpy"):
+        assert ivy.array([1.0, 2.0]).dtype == np.float32
+
+
+# ---------------------------------------------------------------------------------------------
+# The paper's snippets, verbatim
+# ---------------------------------------------------------------------------------------------
+
+
+def test_paper_snippets(installed):
+    tf = installed("tensorflow")
+    torch = installed("torch")
+    x = ivy.clip(np.array([-1.0, 2.0]), 0, 1, f="tensorflow")
+    np.testing.assert_array_equal(x.numpy(), [0.0, 1.0])
+    x = ivy.clip(np.array([-1.0, 2.0]), 0, 1, f=ivy.torch)
+    assert isinstance(x, torch.Tensor)
+    np.testing.assert_array_equal(x.numpy(), [0.0, 1.0])
+    x = ivy.clip(tf.constant([-1, 2.0]), 0, 1)
+    np.testing.assert_array_equal(x.numpy(), [0.0, 1.0])
+    x = ivy.clip(torch.tensor([-1, 2.0]), 0, 1)
+    np.testing.assert_array_equal(x.numpy(), [0.0, 1.0])
+    ivy.set_framework("tensorflow")
+    x = ivy.array([-1, 2.0])
+    x = ivy.clip(x, 0, 1)
+    ivy.unset_framework()
+    assert isinstance(x, tf.Tensor)
+    np.testing.assert_array_equal(x.numpy(), [0.0, 1.0])

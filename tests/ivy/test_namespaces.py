@@ -1,0 +1,77 @@
+"""The backend namespaces: same public names, every core function implemented, native dtypes."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+
+import ivy
+from ivy.core._dispatch import _ALIASES, COMPOSITIONS, DISPATCHED
+
+NATIVE_MODULES = {
+    "numpy": "numpy",
+    "torch": "torch",
+    "jax": "jax.numpy",
+    "tensorflow": "tensorflow",
+}
+
+
+def test_all_namespaces_export_the_same_public_names(request):
+    backends = request.config.ivy_backends
+    names = {b: set(getattr(ivy, b).__all__) for b in backends}
+    reference = names[backends[0]]
+    for backend, exported in names.items():
+        assert exported == reference, (
+            f"{backend} differs from {backends[0]}: "
+            f"missing {sorted(reference - exported)}, extra {sorted(exported - reference)}"
+        )
+
+
+def test_every_core_function_is_in_every_namespace(xp):
+    for name in list(DISPATCHED) + list(COMPOSITIONS):
+        assert callable(getattr(xp, name)), name
+        assert name in xp.__all__, name
+    for alias, target in _ALIASES.items():
+        assert getattr(xp, alias) is getattr(xp, target)
+        assert getattr(ivy, alias) is getattr(ivy, target)
+
+
+def test_agnostic_namespace_lists_every_core_function():
+    for name in list(DISPATCHED) + list(COMPOSITIONS):
+        assert name in ivy.__all__
+        assert getattr(ivy, name) is getattr(ivy.core, name)
+
+
+def test_dtypes_are_native_objects(backend, xp):
+    native = __import__(NATIVE_MODULES[backend], fromlist=["_"])
+    for name in ("float32", "float64", "int32", "int64", "uint8", "complex64"):
+        assert getattr(xp, name) is getattr(native, name)
+    assert getattr(ivy, "float32") == "float32"
+
+
+def test_backend_namespace_attributes(backend, xp):
+    assert xp.backend == backend
+    assert ivy.get_framework(f=xp) is xp
+
+
+@pytest.mark.parametrize("statement", ["import ivy", "import ivy; ivy.sin; ivy.get_framework"])
+def test_import_ivy_imports_no_framework(statement):
+    code = (
+        f"{statement}\nimport sys\n"
+        "heavy = [m for m in ('torch', 'jax', 'tensorflow', 'jaxlib') if m in sys.modules]\n"
+        "print(','.join(heavy))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == ""
+
+
+def test_only_the_used_framework_is_imported():
+    code = (
+        "import numpy as np, ivy, sys\n"
+        "ivy.sin(np.ones(2)); ivy.zeros(2, f='numpy')\n"
+        "print(','.join(m for m in ('torch', 'jax', 'tensorflow') if m in sys.modules))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == ""
