@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib
+import importlib.util
 from typing import Any
 
 from ivy import core
@@ -12,11 +13,14 @@ from ivy.dtypes import DTYPE_NAMES
 def assemble(package: str, namespace: dict[str, Any], native_dtypes: dict[str, Any]) -> None:
     """Fill ``namespace`` (a backend package's globals) with the public names of its modules.
 
-    Each backend package has one module per core group, with the same name; the group's
-    dispatched functions must all be defined there. Dtype names map to native dtype objects.
+    Each backend package has one module per core group that has dispatched functions, with the
+    same name as the group; those functions must all be defined there. Dtype names map to
+    native dtype objects.
     """
     exported: set[str] = set()
     for group_name, group in zip(core.GROUP_NAMES, core.GROUPS):
+        if not _has_dispatched(group) and importlib.util.find_spec(f"{package}.{group_name}") is None:
+            continue  # a group of compositions only needs no backend module
         module = importlib.import_module(f"{package}.{group_name}")
         names = getattr(module, "__all__", ())
         namespace.update({name: getattr(module, name) for name in names})
@@ -27,3 +31,9 @@ def assemble(package: str, namespace: dict[str, Any], native_dtypes: dict[str, A
     namespace.update(native_dtypes)
     exported.update(DTYPE_NAMES)
     namespace["__all__"] = sorted(exported)
+
+
+def _has_dispatched(group) -> bool:
+    return any(
+        getattr(getattr(group, name), "__ivy_kind__", None) == "dispatch" for name in group.__all__
+    )
