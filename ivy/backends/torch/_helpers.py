@@ -1,0 +1,92 @@
+"""Dtype, device and argument conversion shared by the torch backend's modules."""
+
+from __future__ import annotations
+
+import numpy as np
+import torch
+
+from ivy.dtypes import DTYPE_NAMES
+
+NATIVE_DTYPES = {name: getattr(torch, name) for name in DTYPE_NAMES}
+_NAMES = {t: name for name, t in NATIVE_DTYPES.items()}
+
+
+def native_dtype(dtype):
+    """torch dtype for a dtype name, a torch dtype or anything numpy reads as a dtype (``float``,
+    ``np.float64``); None stays None."""
+    if dtype is None or isinstance(dtype, torch.dtype):
+        return dtype
+    try:
+        return NATIVE_DTYPES[dtype if isinstance(dtype, str) else np.dtype(dtype).name]
+    except (KeyError, TypeError):
+        raise TypeError(f"Unknown dtype {dtype!r}; use one of {', '.join(DTYPE_NAMES)}.") from None
+
+
+def dtype_name(dtype) -> str:
+    try:
+        return _NAMES[dtype]
+    except KeyError:
+        raise TypeError(f"torch dtype {dtype} has no ivy name; ivy knows {DTYPE_NAMES}.") from None
+
+
+def native_device(device):
+    """torch device for an ivy device string ('cpu', 'gpu:N') or a torch device; None stays None."""
+    if device is None or device == "cpu" or isinstance(device, torch.device):
+        return device
+    if isinstance(device, str) and (device == "gpu" or device.startswith("gpu:")):
+        return "cuda" + device[3:]
+    raise ValueError(f"Unknown device {device!r}; use 'cpu' or 'gpu:N' (e.g. 'gpu:0').")
+
+
+def device_name(device: torch.device) -> str:
+    if device.type == "cpu":
+        return "cpu"
+    if device.type == "cuda":
+        return f"gpu:{device.index or 0}"
+    return str(device)
+
+
+def device_of(*values):
+    """Device of the first tensor among ``values``, or None."""
+    for v in values:
+        if isinstance(v, torch.Tensor):
+            return v.device
+    return None
+
+
+def has_own_dtype(obj) -> bool:
+    """True when ``obj`` carries a dtype (an array, or a list of arrays), so it must be kept."""
+    while isinstance(obj, (list, tuple)) and obj:
+        obj = obj[0]
+    return hasattr(obj, "dtype")
+
+
+def default_dtype_of_value(value):
+    """The dtype a Python value gets by default: bool, int64, float32 or complex64."""
+    if isinstance(value, (bool, np.bool_)):
+        return torch.bool
+    if isinstance(value, (int, np.integer)):
+        return torch.int64
+    if isinstance(value, (float, np.floating)):
+        return torch.float32
+    if isinstance(value, (complex, np.complexfloating)):
+        return torch.complex64
+    return None
+
+
+def with_tensor_operands(x1, x2):
+    """Both operands as tensors: a Python scalar becomes a 0-d tensor, which (as a scalar would)
+    takes the other operand's dtype when of the same kind (float16 tensor and 2.0 -> float16)."""
+    if isinstance(x1, torch.Tensor):
+        if isinstance(x2, torch.Tensor):
+            return x1, x2
+        return x1, torch.full((), x2, device=x1.device)
+    return torch.full((), x1, device=x2.device), x2
+
+
+def reduction_args(x, axis, keepdims):
+    """``(x, dim, keepdim)`` for a torch reduction. torch reads an empty ``dim`` as every axis, the
+    Array API as none: for ``axis=()`` reduce over a new size-1 axis instead, keeping every value."""
+    if isinstance(axis, (tuple, list)) and not axis:
+        return x.unsqueeze(-1), -1, False
+    return x, axis, keepdims

@@ -1,0 +1,124 @@
+"""torch backend: array creation (float32 by default, as on every backend)."""
+
+from __future__ import annotations
+
+import numpy as np
+import torch
+
+from ivy.backends.torch._helpers import (
+    default_dtype_of_value,
+    has_own_dtype,
+    native_device,
+    native_dtype,
+)
+
+__all__ = [
+    "asarray",
+    "zeros",
+    "ones",
+    "empty",
+    "full",
+    "arange",
+    "linspace",
+    "eye",
+    "zeros_like",
+    "ones_like",
+    "empty_like",
+    "full_like",
+]
+
+# torch's default dtypes can be changed by the user; ivy's cannot.
+_DOWNCAST = {torch.float64: torch.float32, torch.complex128: torch.complex64}
+
+
+def asarray(obj, /, *, dtype=None, device=None, copy=None):
+    dtype, device = native_dtype(dtype), native_device(device)
+    if isinstance(obj, (list, tuple)) and obj and has_own_dtype(obj):
+        obj = _stack(obj)
+    elif isinstance(obj, np.ndarray) and not obj.flags.writeable:
+        obj = obj.copy()  # torch would alias a read-only buffer as writable (and warn)
+    elif not isinstance(obj, (torch.Tensor, np.ndarray, np.generic)) and (
+        hasattr(obj, "__dlpack__") or hasattr(obj, "__array__")
+    ):
+        obj = _from_other_framework(obj)
+    x = torch.asarray(obj, dtype=dtype, device=device, copy=copy)
+    if dtype is None and x.dtype in _DOWNCAST and not has_own_dtype(obj):
+        return x.to(_DOWNCAST[x.dtype])
+    return x
+
+
+def _stack(seq):
+    """A (nested) list of arrays as one tensor, keeping their dtype."""
+    return torch.stack([_stack(o) if isinstance(o, (list, tuple)) else asarray(o) for o in seq])
+
+
+def _from_other_framework(obj):
+    """A jax or tensorflow array, copied: their buffers are immutable, a torch tensor is not."""
+    if hasattr(obj, "__dlpack__"):
+        return torch.from_dlpack(obj).clone()  # keeps the device
+    return torch.from_numpy(np.array(obj))
+
+
+def zeros(shape, *, dtype=None, device=None):
+    return torch.zeros(
+        shape, dtype=native_dtype(dtype) or torch.float32, device=native_device(device)
+    )
+
+
+def ones(shape, *, dtype=None, device=None):
+    return torch.ones(
+        shape, dtype=native_dtype(dtype) or torch.float32, device=native_device(device)
+    )
+
+
+def empty(shape, *, dtype=None, device=None):
+    return torch.empty(
+        shape, dtype=native_dtype(dtype) or torch.float32, device=native_device(device)
+    )
+
+
+def full(shape, fill_value, *, dtype=None, device=None):
+    shape = (shape,) if isinstance(shape, int) else shape
+    dtype = native_dtype(dtype) or default_dtype_of_value(fill_value)
+    return torch.full(shape, fill_value, dtype=dtype, device=native_device(device))
+
+
+def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
+    if dtype is None:
+        ints = all(isinstance(v, (int, np.integer)) for v in (start, stop, step) if v is not None)
+        dtype = torch.int64 if ints else torch.float32
+    if stop is None:
+        start, stop = 0, start
+    return torch.arange(start, stop, step, dtype=native_dtype(dtype), device=native_device(device))
+
+
+def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True):
+    dtype, device = native_dtype(dtype) or torch.float32, native_device(device)
+    if endpoint:
+        return torch.linspace(start, stop, num, dtype=dtype, device=device)
+    return torch.linspace(start, stop, num + 1, dtype=dtype, device=device)[:-1]
+
+
+def eye(n_rows, n_cols=None, /, *, k=0, dtype=None, device=None):
+    dtype, device = native_dtype(dtype) or torch.float32, native_device(device)
+    n_cols = n_rows if n_cols is None else n_cols
+    if k == 0:
+        return torch.eye(n_rows, n_cols, dtype=dtype, device=device)
+    rows = torch.arange(n_rows, device=device)[:, None]
+    return (torch.arange(n_cols, device=device) - rows == k).to(dtype)
+
+
+def zeros_like(x, /, *, dtype=None, device=None):
+    return torch.zeros_like(x, dtype=native_dtype(dtype), device=native_device(device))
+
+
+def ones_like(x, /, *, dtype=None, device=None):
+    return torch.ones_like(x, dtype=native_dtype(dtype), device=native_device(device))
+
+
+def empty_like(x, /, *, dtype=None, device=None):
+    return torch.empty_like(x, dtype=native_dtype(dtype), device=native_device(device))
+
+
+def full_like(x, /, fill_value, *, dtype=None, device=None):
+    return torch.full_like(x, fill_value, dtype=native_dtype(dtype), device=native_device(device))
