@@ -1,0 +1,8 @@
+"""ivy's tensorflow backend: ``ivy.tensorflow``. Dtypes are tf's own (``ivy.tensorflow.float32 is
+tf.float32``); the default float dtype is float32 and the default int dtype int64 (not tf's
+int32)."""
+
+from ivy.backends._assemble import assemble
+from ivy.backends.tensorflow._helpers import NATIVE_DTYPES
+
+assemble(__name__, globals(), NATIVE_DTYPES)

@@ -1,0 +1,278 @@
+"""Dtypes, devices, conversion and type promotion shared by the tensorflow backend's modules.
+
+tensorflow never promotes dtypes and converts Python ints to int32. The backend keeps tf's own
+functions on the fast path (same-dtype tensors, small Python scalars) and falls back to
+:func:`promote` only when they refuse the inputs.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from functools import reduce
+
+import numpy as np
+import tensorflow as tf
+
+from ivy.dtypes import DTYPE_NAMES
+
+NATIVE_DTYPES = {name: tf.as_dtype(name) for name in DTYPE_NAMES}
+
+TENSOR_TYPES = (tf.Tensor, tf.Variable)
+
+# Types that tf's own binary functions convert correctly next to a tensor. Python ints are safe
+# only while small (tf wraps an out-of-range int silently: int8 * 300); numpy objects are not safe
+# (tf casts them to the tensor's dtype silently: int64 * np.float64(2.5)). Tensor types are added
+# as they are met.
+FAST_TYPES = {type(tf.constant(0.0)), float, bool}
+
+# Errors by which tf's functions refuse inputs (other dtypes, or a dtype without a kernel), eager
+# and inside tf.function.
+REFUSED = (
+    TypeError,
+    ValueError,
+    tf.errors.InvalidArgumentError,
+    tf.errors.NotFoundError,
+)
+
+_DEFAULT_OF_KIND = {0: tf.bool, 1: tf.int64, 2: tf.float32, 3: tf.complex64}
+_COMPLEX_OF = {tf.float64: tf.complex128}
+_DOWNCAST = {np.dtype(np.float64): np.float32, np.dtype(np.complex128): np.complex64}
+_NULL_SCOPE = contextlib.nullcontext()
+# Scalars, numpy's included, are weak: they take the dtype of the arrays beside them.
+_SCALARS = (bool, int, float, complex, np.bool_, np.number)
+_INTEGERS = (int, np.integer)
+
+
+# ----------------------------------------------------------------------------------------------
+# Dtypes
+# ----------------------------------------------------------------------------------------------
+
+
+def native_dtype(dtype) -> tf.DType | None:
+    """tf dtype for a dtype name, tf dtype or numpy dtype; None stays None."""
+    if dtype is None or isinstance(dtype, tf.DType):
+        return dtype
+    if isinstance(dtype, str):
+        try:
+            return NATIVE_DTYPES[dtype]
+        except KeyError:
+            raise TypeError(
+                f"Unknown dtype {dtype!r}; use one of {', '.join(DTYPE_NAMES)}."
+            ) from None
+    try:
+        return tf.as_dtype(np.dtype(dtype))
+    except TypeError:
+        raise TypeError(
+            f"Unknown dtype {dtype!r}; use a name ({', '.join(DTYPE_NAMES)}), "
+            f"a tf dtype or a numpy dtype."
+        ) from None
+
+
+def kind(dtype: tf.DType) -> int:
+    """0 bool, 1 integer, 2 real floating, 3 complex."""
+    if dtype == tf.bool:
+        return 0
+    if dtype.is_integer:
+        return 1
+    return 3 if dtype.is_complex else 2
+
+
+def default_dtype_of_value(value) -> tf.DType:
+    """The dtype a value gets by default: bool, int64, float32 or complex64 for a scalar, else
+    its own."""
+    if isinstance(value, _SCALARS):
+        return _DEFAULT_OF_KIND[_scalar_kind(value)]
+    if hasattr(value, "dtype"):
+        return native_dtype(value.dtype)
+    return to_tensor(value).dtype
+
+
+def _scalar_kind(value) -> int:
+    if isinstance(value, (bool, np.bool_)):
+        return 0
+    if isinstance(value, _INTEGERS):
+        return 1
+    return 2 if isinstance(value, (float, np.floating)) else 3
+
+
+def promote_types(a: tf.DType, b: tf.DType) -> tf.DType:
+    """Array API promotion of two dtypes; an integer or bool with a floating dtype gives the
+    floating one (numpy would widen int64 + float32 to float64)."""
+    if a == b:
+        return a
+    ka, kb = kind(a), kind(b)
+    if min(ka, kb) <= 1 < max(ka, kb):
+        return a if ka > kb else b
+    return tf.as_dtype(np.promote_types(a.as_numpy_dtype, b.as_numpy_dtype))
+
+
+def result_type(*values) -> tf.DType:
+    """Result dtype of ``values`` (tensors, arrays, scalars) by Array API rules: scalars take the
+    dtype of the arrays unless they are of a higher kind (then the default dtype of their kind,
+    complex keeping float64's precision)."""
+    scalars = [v for v in values if isinstance(v, _SCALARS)]
+    arrays = [default_dtype_of_value(v) for v in values if not isinstance(v, _SCALARS)]
+    if not arrays:
+        arrays = [_DEFAULT_OF_KIND[max(_scalar_kind(s) for s in scalars)]]
+    dtype = reduce(promote_types, arrays)
+    top = max((_scalar_kind(s) for s in scalars), default=0)
+    if top <= kind(dtype):
+        return dtype
+    if top == 3 and kind(dtype) == 2:
+        return _COMPLEX_OF.get(dtype, tf.complex64)
+    return _DEFAULT_OF_KIND[top]
+
+
+def fast(value) -> bool:
+    """True when tf's own functions convert ``value`` correctly next to a tensor."""
+    return type(value) in FAST_TYPES or (type(value) is int and 0 <= value < 128)
+
+
+def promote(*values) -> list:
+    """``values`` as tensors of their common dtype (see :func:`result_type`)."""
+    dtype = result_type(*values)
+    out = []
+    for v in values:
+        if isinstance(v, TENSOR_TYPES):
+            FAST_TYPES.add(type(v))
+        out.append(tensor_of(v, dtype))
+    return out
+
+
+# ----------------------------------------------------------------------------------------------
+# Conversion
+# ----------------------------------------------------------------------------------------------
+
+
+def has_own_dtype(obj) -> bool:
+    """True when ``obj`` carries a dtype (an array, or a list of arrays), so it must be kept."""
+    while isinstance(obj, (list, tuple)) and obj:
+        obj = obj[0]
+    return hasattr(obj, "dtype")
+
+
+def to_tensor(obj, dtype: tf.DType | None = None):
+    """``obj`` as a tensor: tensors keep their dtype, variables are read, Python floats become
+    float32 and Python ints int64 (not tf's int32), numpy arrays keep their dtype."""
+    if isinstance(obj, TENSOR_TYPES):
+        if dtype is not None and obj.dtype is not dtype:
+            return tf.cast(obj, dtype)
+        return tf.convert_to_tensor(obj) if isinstance(obj, tf.Variable) else obj
+    if not isinstance(obj, (np.ndarray, np.generic)) and hasattr(obj, "__dlpack__"):
+        obj = _from_other_framework(obj)
+    if has_own_dtype(obj):
+        x = tf.convert_to_tensor(obj)  # numpy data, or a list of tensors (packed)
+        return x if dtype is None or x.dtype is dtype else tf.cast(x, dtype)
+    if dtype is not None:
+        return tf.constant(np.asarray(obj, dtype=dtype.as_numpy_dtype))
+    data = np.asarray(obj)
+    if data.dtype in _DOWNCAST:
+        data = data.astype(_DOWNCAST[data.dtype])
+    return tf.constant(data)
+
+
+def tensor(x):
+    """``x`` itself when it is a tensor or variable, else ``x`` converted by :func:`to_tensor`."""
+    return x if isinstance(x, TENSOR_TYPES) else to_tensor(x)
+
+
+def tensor_of(value, dtype: tf.DType):
+    """``value`` (tensor, array, Python scalar) as a tensor of ``dtype``, converted exactly (a
+    Python float goes to float64 without a float32 detour) and never wrapped around."""
+    if isinstance(value, TENSOR_TYPES):
+        return value if value.dtype is dtype else tf.cast(value, dtype)
+    if (
+        isinstance(value, _INTEGERS)
+        and not isinstance(value, bool)
+        and dtype.is_integer
+        and not dtype.min <= value <= dtype.max
+    ):
+        raise OverflowError(
+            f"Python integer {value} is out of bounds for {dtype.name}; use a wider dtype."
+        )
+    return to_tensor(value, dtype)
+
+
+def _from_other_framework(obj):
+    """A tensor of another framework as numpy data (detached first where it can be)."""
+    detach = getattr(obj, "detach", None)
+    if detach is not None:
+        obj = detach().cpu()
+    return np.asarray(obj)
+
+
+def floating(x):
+    """``x`` as a tensor, cast to the default float dtype (float32) unless it is floating."""
+    x = tensor(x)
+    dt = x.dtype
+    if dt is tf.float32 or dt is tf.float64 or dt.is_floating or dt.is_complex:
+        return x
+    return tf.cast(x, tf.float32)
+
+
+def normalize_axis(axis: int, ndim: int) -> int:
+    if not -ndim <= axis < ndim:
+        raise ValueError(f"axis {axis} is out of bounds for an array of {ndim} dimensions.")
+    return axis % ndim
+
+
+def static_rank(x, name: str) -> int:
+    rank = x.shape.rank
+    if rank is None:
+        raise ValueError(
+            f"{name} needs the number of dimensions of its input, which is unknown here (inside "
+            f"tf.function); give the tf.function an input_signature with a known rank."
+        )
+    return rank
+
+
+# ----------------------------------------------------------------------------------------------
+# Devices
+# ----------------------------------------------------------------------------------------------
+
+_TF_DEVICES: dict[str, str] = {}
+_IVY_DEVICES: dict[str, str] = {}
+
+
+def tf_device(device: str) -> str:
+    """tf device string ('/CPU:0', '/GPU:1') for an ivy device ('cpu', 'gpu:1')."""
+    name = _TF_DEVICES.get(device)
+    if name is not None:
+        return name
+    if not isinstance(device, str):
+        raise TypeError(f"device must be a string such as 'cpu' or 'gpu:0'; got {device!r}.")
+    kind_, _, index = device.lower().lstrip("/").partition(":")
+    if kind_ not in ("cpu", "gpu") or not (index or "0").isdigit():
+        raise ValueError(f"Unknown device {device!r}; use 'cpu' or 'gpu:N' (e.g. 'gpu:0').")
+    index = int(index or 0)
+    if kind_ == "gpu":
+        count = len(tf.config.list_logical_devices("GPU"))
+        if index >= count:
+            choices = "'cpu'" + (f" or 'gpu:0' to 'gpu:{count - 1}'" if count else "")
+            raise ValueError(
+                f"device {device!r}: tensorflow sees {count} GPU(s) on this machine; use {choices}."
+            )
+    name = f"/{kind_.upper()}:{index}"
+    _TF_DEVICES[device] = name
+    return name
+
+
+def placed(device):
+    """Context manager placing new tensors on ``device`` (does nothing for None)."""
+    return _NULL_SCOPE if device is None else tf.device(tf_device(device))
+
+
+def ivy_device(tf_name: str) -> str:
+    """'cpu' or 'gpu:N' for a tf device name such as '/job:localhost/.../device:GPU:0'."""
+    dev = _IVY_DEVICES.get(tf_name)
+    if dev is None:
+        spec = tf.DeviceSpec.from_string(tf_name)
+        if spec.device_type is None:  # a graph tensor not yet placed: tf's default choice
+            gpu = bool(tf.config.list_logical_devices("GPU"))
+            dev = "gpu:0" if gpu else "cpu"
+        elif spec.device_type.upper() == "GPU":
+            dev = f"gpu:{spec.device_index or 0}"
+        else:
+            dev = "cpu"
+        _IVY_DEVICES[tf_name] = dev
+    return dev

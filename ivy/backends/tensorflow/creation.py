@@ -1,0 +1,110 @@
+"""tensorflow backend: array creation (float32 and int64 by default, as on every backend)."""
+
+from __future__ import annotations
+
+import tensorflow as tf
+
+from ivy.backends.tensorflow._helpers import (
+    default_dtype_of_value,
+    native_dtype,
+    placed,
+    tensor,
+    tensor_of,
+    to_tensor,
+)
+
+__all__ = [
+    "asarray", "zeros", "ones", "empty", "full", "arange", "linspace", "eye",
+    "zeros_like", "ones_like", "empty_like", "full_like",
+]  # fmt: skip
+
+
+def asarray(obj, /, *, dtype=None, device=None, copy=None):
+    """tf tensors are immutable, so ``copy`` changes nothing; a variable is read into a tensor."""
+    if device is None:
+        return to_tensor(obj, native_dtype(dtype))
+    with placed(device):
+        return tf.identity(to_tensor(obj, native_dtype(dtype)))
+
+
+def zeros(shape, *, dtype=None, device=None):
+    with placed(device):
+        return tf.zeros(shape, native_dtype(dtype) or tf.float32)
+
+
+def ones(shape, *, dtype=None, device=None):
+    with placed(device):
+        return tf.ones(shape, native_dtype(dtype) or tf.float32)
+
+
+def empty(shape, *, dtype=None, device=None):
+    """tf has no uninitialised memory: zeros."""
+    return zeros(shape, dtype=dtype, device=device)
+
+
+def full(shape, fill_value, *, dtype=None, device=None):
+    dt = native_dtype(dtype) or default_dtype_of_value(fill_value)
+    shape = (shape,) if isinstance(shape, int) else shape
+    with placed(device):
+        return tf.broadcast_to(tensor_of(fill_value, dt), shape)
+
+
+def _is_int(value) -> bool:
+    dt = getattr(value, "dtype", None)
+    if dt is None:
+        return isinstance(value, int)
+    return native_dtype(dt).is_integer
+
+
+def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
+    ints = all(_is_int(v) for v in (start, stop, step) if v is not None)
+    dt = native_dtype(dtype) or (tf.int64 if ints else tf.float32)
+    work = dt if ints and dt.is_integer else tf.float64  # the length as numpy counts it
+    if stop is None:
+        start, stop = 0, start
+    with placed(device):
+        out = tf.range(tensor_of(start, work), tensor_of(stop, work), tensor_of(step, work))
+        return out if work is dt else tf.cast(out, dt)
+
+
+def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True):
+    dt = native_dtype(dtype) or tf.float32
+    work = dt if dt.is_floating else tf.float64
+    with placed(device):
+        out = tf.linspace(tensor_of(start, work), tensor_of(stop, work), num + (not endpoint))
+        if not endpoint:
+            out = out[:-1]
+        if dt.is_integer:
+            out = tf.math.floor(out)
+        return out if work is dt else tf.cast(out, dt)
+
+
+def eye(n_rows, n_cols=None, /, *, k=0, dtype=None, device=None):
+    dt = native_dtype(dtype) or tf.float32
+    n_cols = n_rows if n_cols is None else n_cols
+    with placed(device):
+        if k == 0:
+            return tf.eye(n_rows, n_cols, dtype=dt)
+        rows = tf.range(n_rows, dtype=tf.int64)[:, None]
+        return tf.cast(tf.equal(rows + k, tf.range(n_cols, dtype=tf.int64)), dt)
+
+
+def zeros_like(x, /, *, dtype=None, device=None):
+    with placed(device):
+        return tf.zeros_like(tensor(x), dtype=native_dtype(dtype))
+
+
+def ones_like(x, /, *, dtype=None, device=None):
+    with placed(device):
+        return tf.ones_like(tensor(x), dtype=native_dtype(dtype))
+
+
+def empty_like(x, /, *, dtype=None, device=None):
+    """tf has no uninitialised memory: zeros."""
+    return zeros_like(x, dtype=dtype, device=device)
+
+
+def full_like(x, /, fill_value, *, dtype=None, device=None):
+    x = tensor(x)
+    with placed(device):
+        return tf.fill(tf.shape(x), tensor_of(fill_value, native_dtype(dtype) or x.dtype))

@@ -1,0 +1,56 @@
+"""tensorflow backend: gathering and scattering."""
+
+from __future__ import annotations
+
+import tensorflow as tf
+
+from ivy.backends.tensorflow._helpers import native_dtype, tensor
+
+__all__ = ["take", "gather_nd", "scatter_nd", "one_hot"]
+
+gather_nd = tf.gather_nd
+
+_SCATTERS = {
+    "replace": tf.tensor_scatter_nd_update,
+    "min": tf.tensor_scatter_nd_min,
+    "max": tf.tensor_scatter_nd_max,
+}
+
+
+def take(x, indices, /, *, axis=None):
+    x = tensor(x)
+    if axis is None:
+        x, axis = tf.reshape(x, [-1]), 0
+    indices = tf.convert_to_tensor(indices)
+    size = tf.shape(x, out_type=indices.dtype)[axis]
+    return tf.gather(x, tf.where(indices < 0, indices + size, indices), axis=axis)
+
+
+def scatter_nd(indices, updates, /, shape, *, reduction="sum"):
+    updates = tensor(updates)
+    shape = (shape,) if isinstance(shape, int) else shape
+    if reduction == "sum":
+        return tf.scatter_nd(indices, updates, shape)
+    if reduction not in _SCATTERS:
+        raise ValueError(
+            f"scatter_nd: unknown reduction {reduction!r}; use 'sum', 'replace', 'min' or 'max'."
+        )
+    zeros = tf.zeros(shape, updates.dtype)
+    if reduction == "replace":
+        return tf.tensor_scatter_nd_update(zeros, indices, updates)
+    # Reduce into the dtype's extreme, then put 0 back where no update landed.
+    dt = updates.dtype
+    if dt.is_floating:
+        extreme = float("inf") if reduction == "min" else float("-inf")
+    else:
+        extreme = dt.max if reduction == "min" else dt.min
+    out = _SCATTERS[reduction](tf.fill(tf.shape(zeros), tf.constant(extreme, dt)), indices, updates)
+    touched = tf.scatter_nd(indices, tf.ones_like(updates, tf.int32), shape)
+    return tf.where(touched > 0, out, zeros)
+
+
+def one_hot(indices, depth, /, *, dtype=None):
+    dt = native_dtype(dtype) or tf.float32
+    if dt is tf.bool:  # tf's default on and off values are the numbers 1 and 0
+        return tf.one_hot(indices, depth, on_value=True, off_value=False, dtype=dt)
+    return tf.one_hot(indices, depth, dtype=dt)

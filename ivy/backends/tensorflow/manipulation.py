@@ -1,0 +1,121 @@
+"""tensorflow backend: shape manipulation."""
+
+from __future__ import annotations
+
+import numpy as np
+import tensorflow as tf
+
+from ivy.backends.tensorflow._helpers import (
+    FAST_TYPES,
+    REFUSED,
+    normalize_axis,
+    promote,
+    static_rank,
+    tensor,
+)
+
+__all__ = [
+    "reshape", "permute_dims", "transpose", "concat", "stack", "unstack", "split",
+    "squeeze", "expand_dims", "flip", "tile", "repeat", "roll", "swapaxes", "broadcast_to",
+]  # fmt: skip
+
+stack = tf.stack
+squeeze = tf.squeeze
+repeat = tf.repeat
+broadcast_to = tf.broadcast_to
+
+
+def reshape(x, /, shape, *, copy=None):
+    """tf tensors are immutable, so ``copy`` changes nothing."""
+    return tf.reshape(x, shape)
+
+
+def permute_dims(x, /, axes):
+    return tf.transpose(x, axes)
+
+
+def transpose(x, /, axes=None):
+    return tf.transpose(x, axes)
+
+
+def concat(arrays, /, *, axis=0):
+    if axis is None:
+        arrays, axis = [tf.reshape(tensor(a), [-1]) for a in arrays], 0
+    if all(type(a) in FAST_TYPES for a in arrays):
+        try:
+            return tf.concat(arrays, axis)
+        except REFUSED:
+            pass
+    return tf.concat(promote(*arrays), axis)
+
+
+def unstack(x, /, *, axis=0):
+    return tuple(tf.unstack(x, axis=axis))
+
+
+def split(x, /, num_or_size_splits=None, *, axis=0):
+    x = tensor(x)
+    size = x.shape[axis]
+    if num_or_size_splits is None:
+        if size is None:
+            raise ValueError(
+                f"split: the size of axis {axis} is unknown here (inside tf.function); pass "
+                f"num_or_size_splits, or give the tf.function an input_signature with that size."
+            )
+        num_or_size_splits = size
+    if isinstance(num_or_size_splits, (int, np.integer)):
+        if size is not None and size % num_or_size_splits:
+            raise ValueError(
+                f"split: axis {axis} of size {size} does not divide into "
+                f"{num_or_size_splits} equal pieces; pass a list of piece sizes instead."
+            )
+        return tf.split(x, num_or_size_splits, axis=axis)
+    sizes = [int(s) for s in num_or_size_splits]
+    if size is not None and sum(sizes) != size:
+        raise ValueError(
+            f"split: piece sizes {sizes} add up to {sum(sizes)}, not to the size "
+            f"{size} of axis {axis}."
+        )
+    return tf.split(x, sizes, axis=axis)
+
+
+def expand_dims(x, /, *, axis=0):
+    return tf.expand_dims(x, axis)
+
+
+def flip(x, /, *, axis=None):
+    if axis is None:
+        x = tensor(x)
+        axis = list(range(static_rank(x, "flip")))
+    elif isinstance(axis, int):
+        axis = [axis]
+    return tf.reverse(x, axis)
+
+
+def tile(x, repetitions, /):
+    x = tensor(x)
+    reps = [repetitions] if isinstance(repetitions, int) else list(repetitions)
+    rank = static_rank(x, "tile")
+    if len(reps) < rank:  # numpy: missing leading repetitions are 1
+        reps = [1] * (rank - len(reps)) + reps
+    for _ in range(len(reps) - rank):  # numpy: more repetitions than axes add leading axes
+        x = x[None]
+    return tf.tile(x, reps)
+
+
+def roll(x, /, shift, *, axis=None):
+    if axis is None:
+        x = tensor(x)
+        return tf.reshape(tf.roll(tf.reshape(x, [-1]), shift, 0), tf.shape(x))
+    if isinstance(axis, (tuple, list)) and isinstance(shift, int):
+        shift = [shift] * len(axis)
+    return tf.roll(x, shift, axis)
+
+
+def swapaxes(x, axis0, axis1, /):
+    x = tensor(x)
+    rank = static_rank(x, "swapaxes")
+    perm = list(range(rank))
+    a, b = normalize_axis(axis0, rank), normalize_axis(axis1, rank)
+    perm[a], perm[b] = b, a
+    return tf.transpose(x, perm)

@@ -1,0 +1,54 @@
+"""tensorflow backend: reductions. Integer sums and products accumulate in 64 bits."""
+
+from __future__ import annotations
+
+import tensorflow as tf
+
+from ivy.backends.tensorflow._helpers import floating, native_dtype, tensor
+
+__all__ = ["sum", "prod", "mean", "min", "max", "var", "std"]
+
+min = tf.math.reduce_min
+max = tf.math.reduce_max
+
+
+def _accumulator(x, dtype):
+    """``x`` cast to ``dtype``, or bool and small integers widened to int64 (uint64)."""
+    x = tensor(x)
+    if dtype is not None:
+        return tf.cast(x, native_dtype(dtype))
+    dt = x.dtype  # (dtypes are interned: `is` is much faster than ==)
+    if dt is tf.float32 or dt is tf.float64 or not (dt is tf.bool or dt.is_integer):
+        return x
+    if dt.size == 8:
+        return x
+    return tf.cast(x, tf.uint64 if dt.is_unsigned else tf.int64)
+
+
+def sum(x, /, *, axis=None, dtype=None, keepdims=False):
+    return tf.math.reduce_sum(_accumulator(x, dtype), axis=axis, keepdims=keepdims)
+
+
+def prod(x, /, *, axis=None, dtype=None, keepdims=False):
+    return tf.math.reduce_prod(_accumulator(x, dtype), axis=axis, keepdims=keepdims)
+
+
+def mean(x, /, *, axis=None, keepdims=False):
+    """Integers are averaged as float32 (tf would truncate the mean to an integer)."""
+    return tf.math.reduce_mean(floating(x), axis=axis, keepdims=keepdims)
+
+
+def var(x, /, *, axis=None, correction=0.0, keepdims=False):
+    x = floating(x)
+    out = tf.math.reduce_variance(x, axis=axis, keepdims=keepdims)
+    if not correction:
+        return out
+    n = x.shape.num_elements(), out.shape.num_elements()
+    if None in n:  # shapes unknown inside tf.function
+        n = tf.size(x), tf.size(out)
+    count = tf.cast(n[0], out.dtype) / tf.cast(n[1], out.dtype)  # elements per result
+    return out * count / (count - correction)
+
+
+def std(x, /, *, axis=None, correction=0.0, keepdims=False):
+    return tf.math.sqrt(var(x, axis=axis, correction=correction, keepdims=keepdims))
