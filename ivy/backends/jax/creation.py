@@ -1,0 +1,124 @@
+"""jax backend: array creation (float32 by default, as on every backend)."""
+
+from __future__ import annotations
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+
+from ivy.backends.jax._helpers import (
+    check_x64_of,
+    default_dtype_of_value,
+    default_int,
+    has_own_dtype,
+    native_device,
+    native_dtype,
+)
+
+__all__ = [
+    "asarray",
+    "zeros",
+    "ones",
+    "empty",
+    "full",
+    "arange",
+    "linspace",
+    "eye",
+    "zeros_like",
+    "ones_like",
+    "empty_like",
+    "full_like",
+]
+
+# Python floats and complexes are float32 / complex64 by default, whatever jax's x64 setting.
+_DOWNCAST = {np.dtype(np.float64): jnp.float32, np.dtype(np.complex128): jnp.complex64}
+
+
+def asarray(obj, /, *, dtype=None, device=None, copy=None):
+    dtype, device = native_dtype(dtype), native_device(device)
+    if copy is False and _needs_copy(obj, dtype, device):
+        raise ValueError(
+            "asarray: copy=False, but a copy is needed: jax copies numpy arrays, lists and other "
+            "frameworks' tensors, and any change of dtype or device. Pass copy=None to allow it."
+        )
+    if not isinstance(obj, (jax.Array, np.ndarray, np.generic)) and (
+        hasattr(obj, "__dlpack__") or hasattr(obj, "__array__")
+    ):
+        obj = _from_other_framework(obj)
+    if dtype is not None or has_own_dtype(obj):
+        if dtype is None:
+            check_x64_of(obj)
+        return jnp.asarray(obj, dtype=dtype, copy=copy, device=device)
+    # Python values: float32 / complex64 / the default int, and not weakly typed.
+    x = jnp.asarray(obj, copy=copy, device=device)
+    return jnp.asarray(x, dtype=_DOWNCAST.get(x.dtype, x.dtype))
+
+
+def _needs_copy(obj, dtype, device) -> bool:
+    if not isinstance(obj, jax.Array):
+        return True
+    if dtype is not None and np.dtype(dtype) != obj.dtype:
+        return True
+    return device is not None and not isinstance(obj, jax.core.Tracer) and obj.devices() != {device}
+
+
+def _from_other_framework(obj):
+    """A tensor of another framework (torch, tensorflow) as a numpy array, detached, on the CPU."""
+    detach = getattr(obj, "detach", None)
+    if detach is not None:
+        obj = detach().cpu()
+    return np.asarray(obj)
+
+
+def zeros(shape, *, dtype=None, device=None):
+    return jnp.zeros(shape, native_dtype(dtype) or jnp.float32, device=native_device(device))
+
+
+def ones(shape, *, dtype=None, device=None):
+    return jnp.ones(shape, native_dtype(dtype) or jnp.float32, device=native_device(device))
+
+
+def empty(shape, *, dtype=None, device=None):
+    return jnp.empty(shape, native_dtype(dtype) or jnp.float32, device=native_device(device))
+
+
+def full(shape, fill_value, *, dtype=None, device=None):
+    dt = native_dtype(dtype) or default_dtype_of_value(fill_value)
+    return jnp.full(shape, fill_value, dt, device=native_device(device))
+
+
+def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
+    if dtype is None:
+        ints = all(isinstance(v, (int, np.integer)) for v in (start, stop, step) if v is not None)
+        dt = default_int() if ints else jnp.float32
+    else:
+        dt = native_dtype(dtype)
+    if stop is None:
+        start, stop = 0, start
+    return jnp.arange(start, stop, step, dt, device=native_device(device))
+
+
+def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True):
+    dt = native_dtype(dtype) or jnp.float32
+    return jnp.linspace(start, stop, num, endpoint, dtype=dt, device=native_device(device))
+
+
+def eye(n_rows, n_cols=None, /, *, k=0, dtype=None, device=None):
+    dt = native_dtype(dtype) or jnp.float32
+    return jnp.eye(n_rows, n_cols, k, dt, device=native_device(device))
+
+
+def zeros_like(x, /, *, dtype=None, device=None):
+    return jnp.zeros_like(x, native_dtype(dtype), device=native_device(device))
+
+
+def ones_like(x, /, *, dtype=None, device=None):
+    return jnp.ones_like(x, native_dtype(dtype), device=native_device(device))
+
+
+def empty_like(x, /, *, dtype=None, device=None):
+    return jnp.empty_like(x, native_dtype(dtype), device=native_device(device))
+
+
+def full_like(x, /, fill_value, *, dtype=None, device=None):
+    return jnp.full_like(x, fill_value, native_dtype(dtype), device=native_device(device))

@@ -1,0 +1,64 @@
+"""jax backend: shape manipulation (jax.numpy's own functions where they match)."""
+
+from __future__ import annotations
+
+import itertools
+
+import jax.numpy as jnp
+import numpy as np
+
+__all__ = [
+    "reshape",
+    "permute_dims",
+    "transpose",
+    "concat",
+    "stack",
+    "unstack",
+    "split",
+    "squeeze",
+    "expand_dims",
+    "flip",
+    "tile",
+    "repeat",
+    "roll",
+    "swapaxes",
+    "broadcast_to",
+]
+
+reshape = jnp.reshape
+permute_dims = jnp.permute_dims
+transpose = jnp.transpose
+concat = jnp.concat
+stack = jnp.stack
+unstack = jnp.unstack
+squeeze = jnp.squeeze
+flip = jnp.flip
+tile = jnp.tile
+repeat = jnp.repeat
+roll = jnp.roll
+swapaxes = jnp.swapaxes
+broadcast_to = jnp.broadcast_to
+
+
+def split(x, /, num_or_size_splits=None, *, axis=0):
+    size = x.shape[axis]
+    if num_or_size_splits is None:
+        num_or_size_splits = size
+    if isinstance(num_or_size_splits, (int, np.integer)):
+        if size % num_or_size_splits:
+            raise ValueError(
+                f"split: axis {axis} of size {size} does not divide into "
+                f"{num_or_size_splits} equal pieces; pass a list of piece sizes instead."
+            )
+        return jnp.split(x, num_or_size_splits, axis=axis)
+    sizes = [int(s) for s in num_or_size_splits]
+    if sum(sizes) != size:
+        raise ValueError(
+            f"split: piece sizes {sizes} add up to {sum(sizes)}, not to the size "
+            f"{size} of axis {axis}."
+        )
+    return jnp.split(x, list(itertools.accumulate(sizes[:-1])), axis=axis)
+
+
+def expand_dims(x, /, *, axis=0):
+    return jnp.expand_dims(x, axis)

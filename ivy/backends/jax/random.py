@@ -1,0 +1,101 @@
+"""jax backend: random numbers from one module-level PRNG key.
+
+The key lives in ``_state``; every draw takes a fresh subkey from ``_state.next_key()``, which
+advances the key. Without :func:`seed`, the first draw seeds the key from the OS's entropy.
+"""
+
+from __future__ import annotations
+
+import operator
+import os
+import warnings
+
+import jax
+import jax.numpy as jnp
+
+from ivy.backends.jax._helpers import default_int, native_device, native_dtype
+
+__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle"]
+
+_MASK32 = 0xFFFFFFFF
+
+
+def _key_from_seed(seed_value):
+    """A PRNG key for a non-negative int of any size, the same whatever jax's x64 setting."""
+    value = operator.index(seed_value)
+    if value < 0:
+        raise ValueError(f"seed: expected a non-negative integer, got {seed_value!r}.")
+    key = jax.random.key(value & _MASK32)  # jax would truncate a larger seed without x64
+    value >>= 32
+    while value:
+        key = jax.random.fold_in(key, value & _MASK32)
+        value >>= 32
+    return key
+
+
+class _KeyState:
+    """The backend's PRNG key and the one place that advances it."""
+
+    def __init__(self):
+        self.key = None
+
+    def seed(self, seed_value):
+        self.key = _key_from_seed(seed_value)
+
+    def next_key(self):
+        """Return a fresh subkey and advance the key."""
+        if self.key is None:
+            self.seed(int.from_bytes(os.urandom(8), "little"))
+        key, subkey = jax.random.split(self.key)
+        if isinstance(key, jax.core.Tracer) and not isinstance(self.key, jax.core.Tracer):
+            # Drawing in traced code (jax.jit, lax.scan...) from the module-level key: advance it
+            # now rather than store a tracer. The numbers are then fixed when the code is traced.
+            warnings.warn(
+                "ivy.jax random functions in traced code (jax.jit, lax.scan, ...) draw their "
+                "numbers once, when the code is traced: every call of the compiled function "
+                "returns the same ones.",
+                stacklevel=3,
+            )
+            with jax.ensure_compile_time_eval():
+                key, subkey = jax.random.split(self.key)
+        self.key = key
+        return subkey
+
+
+_state = _KeyState()
+
+
+def seed(seed_value=0):
+    _state.seed(seed_value)
+
+
+def _shape(shape, *bounds):
+    if shape is None:
+        return jnp.broadcast_shapes(*(jnp.shape(b) for b in bounds))
+    return tuple(shape) if isinstance(shape, (tuple, list)) else (operator.index(shape),)
+
+
+def _placed(x, device):
+    return x if device is None else jax.device_put(x, native_device(device))
+
+
+def random_uniform(low=0.0, high=1.0, shape=None, *, dtype=None, device=None):
+    dt = native_dtype(dtype) or jnp.float32
+    out = jax.random.uniform(_state.next_key(), _shape(shape, low, high), dt, low, high)
+    return _placed(out, device)
+
+
+def random_normal(mean=0.0, std=1.0, shape=None, *, dtype=None, device=None):
+    dt = native_dtype(dtype) or jnp.float32
+    out = jax.random.normal(_state.next_key(), _shape(shape, mean, std), dt)
+    return _placed((mean + std * out).astype(dt), device)
+
+
+def randint(low, high, shape=None, *, dtype=None, device=None):
+    dt = native_dtype(dtype) or default_int()
+    out = jax.random.randint(_state.next_key(), _shape(shape, low, high), low, high, dt)
+    return _placed(out, device)
+
+
+def shuffle(x, /):
+    return jax.random.permutation(_state.next_key(), x)
