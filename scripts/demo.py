@@ -65,8 +65,9 @@ def main() -> None:
         print(f"{name:<12}{kind:<28}{err:>12.2e}{per_call * 1e3:>11.3f} ms{note}")
         assert xp.backend == name
     names = list(results)
-    agree = all(np.allclose(results[a], results[b], rtol=1e-4, atol=1e-5)
-                for a in names for b in names)
+    agree = all(
+        np.allclose(results[a], results[b], rtol=1e-4, atol=1e-5) for a in names for b in names
+    )
     close = all(np.allclose(r, expected, rtol=1e-4, atol=1e-5) for r in results.values())
     print(f"\nall {len(names)} backends agree with each other: {agree}")
     print(f"all agree with the float64 reference:          {close}")

@@ -16,12 +16,12 @@ import ivy
 ALL_BACKENDS = ("numpy", "torch", "jax", "tensorflow")
 DIFFERENTIABLE = ("torch", "jax", "tensorflow")
 
+
 def pytest_addoption(parser):
     parser.addoption(
         "--backends",
         default=None,
-        help="comma-separated backends to test (default: every installed one; "
-        "or set IVY_BACKENDS)",
+        help="comma-separated backends to test (default: every installed one; or set IVY_BACKENDS)",
     )
 
 

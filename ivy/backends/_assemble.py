@@ -19,7 +19,10 @@ def assemble(package: str, namespace: dict[str, Any], native_dtypes: dict[str, A
     """
     exported: set[str] = set()
     for group_name, group in zip(core.GROUP_NAMES, core.GROUPS):
-        if not _has_dispatched(group) and importlib.util.find_spec(f"{package}.{group_name}") is None:
+        if (
+            not _has_dispatched(group)
+            and importlib.util.find_spec(f"{package}.{group_name}") is None
+        ):
             continue  # a group of compositions only needs no backend module
         module = importlib.import_module(f"{package}.{group_name}")
         names = getattr(module, "__all__", ())

@@ -18,7 +18,8 @@ from __future__ import annotations
 import functools
 import inspect
 import types
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 from ivy import framework_handler as _fh
 
@@ -57,9 +58,7 @@ def _infer_block(name: str, arrays: list[str], indent: str) -> str:
         f"    ns = {slow}",
     ]
     if rest:
-        mismatch = " or ".join(
-            f"(type({p}) is not t and type({p}) not in _passive)" for p in rest
-        )
+        mismatch = " or ".join(f"(type({p}) is not t and type({p}) not in _passive)" for p in rest)
         lines += ["else:", f"    if {mismatch}:", f"        ns = {slow}"]
     return "\n".join(indent + line for line in lines)
 

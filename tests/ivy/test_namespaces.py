@@ -48,7 +48,7 @@ def test_dtypes_are_native_objects(backend, xp):
     native = __import__(NATIVE_MODULES[backend], fromlist=["_"])
     for name in ("float32", "float64", "int32", "int64", "uint8", "complex64"):
         assert getattr(xp, name) is getattr(native, name)
-    assert getattr(ivy, "float32") == "float32"
+    assert ivy.float32 == "float32"
 
 
 def test_backend_namespace_attributes(backend, xp):

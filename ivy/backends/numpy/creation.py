@@ -12,8 +12,18 @@ from ivy.backends.numpy._helpers import (
 )
 
 __all__ = [
-    "asarray", "zeros", "ones", "empty", "full", "arange", "linspace", "eye",
-    "zeros_like", "ones_like", "empty_like", "full_like",
+    "asarray",
+    "zeros",
+    "ones",
+    "empty",
+    "full",
+    "arange",
+    "linspace",
+    "eye",
+    "zeros_like",
+    "ones_like",
+    "empty_like",
+    "full_like",
 ]
 
 _DOWNCAST = {np.dtype(np.float64): np.float32, np.dtype(np.complex128): np.complex64}

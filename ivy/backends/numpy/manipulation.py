@@ -5,8 +5,21 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = [
-    "reshape", "permute_dims", "transpose", "concat", "stack", "unstack", "split",
-    "squeeze", "expand_dims", "flip", "tile", "repeat", "roll", "swapaxes", "broadcast_to",
+    "reshape",
+    "permute_dims",
+    "transpose",
+    "concat",
+    "stack",
+    "unstack",
+    "split",
+    "squeeze",
+    "expand_dims",
+    "flip",
+    "tile",
+    "repeat",
+    "roll",
+    "swapaxes",
+    "broadcast_to",
 ]
 
 
