@@ -1,5 +1,31 @@
 """Random numbers. ``ivy.seed(n)`` seeds every backend; draws need ``f=`` or a global framework
-unless an array argument decides it."""
+unless an array argument decides it.
+
+Design (the same on every backend): user code never handles keys or generators. Each backend
+keeps its generator state in one place, which every draw reads and advances:
+
+- numpy: one module-level ``numpy.random.Generator``;
+- torch: torch's global generator (``torch.manual_seed``); inside ``torch.compile`` inductor
+  takes a fresh seed from it on every call;
+- tensorflow: one ``tf.random.Generator``, whose state is a ``tf.Variable``: a ``tf.function``
+  reads and advances that variable on every call;
+- jax: one PRNG key in a small state object (``ivy.backends.jax.random._state``). Each draw
+  splits it. ``ivy.compile_fn`` threads the key through ``jax.jit`` as an extra input and output
+  (while tracing, the state holds the traced key; after the call the advanced key is written
+  back).
+
+Hence random calls inside functions compiled with ``ivy.compile_fn`` draw new numbers on every
+call, and after ``ivy.seed(n)`` a re-run draws the same numbers again, eager and compiled alike
+(compiled torch draws differ from eager torch draws for the same seed, but repeat themselves).
+Under a plain ``jax.jit`` (not ``ivy.compile_fn``) the jax key cannot be threaded: the numbers
+are drawn once, when the function is traced, with a warning; use ``ivy.compile_fn``, or
+``jax.random`` with explicit keys.
+
+Example:
+    >>> ivy.seed(0)
+    >>> noisy = ivy.compile_fn(lambda x: x + ivy.random_normal(shape=x.shape, f="jax"))
+    >>> a, b = noisy(x), noisy(x)  # different draws; ivy.seed(0) then repeats a, b
+"""
 
 from __future__ import annotations
 
@@ -12,10 +38,19 @@ _seed_value: list[int | None] = [None]
 
 
 def seed(seed_value: int = 0, *, f=None) -> None:
-    """Seed the random generators so that re-runs draw the same numbers.
+    """Seed the random generators so that re-runs draw the same numbers, eager and compiled.
 
     With ``f`` only that backend is seeded; otherwise every loaded backend, and backends loaded
     later are seeded with the same value on load.
+
+    Args:
+        seed_value: a non-negative integer.
+        f: a framework name or namespace to seed only that backend.
+
+    Example:
+        >>> ivy.seed(42); a = ivy.random_uniform(shape=(2,), f="torch")
+        >>> ivy.seed(42); bool((a == ivy.random_uniform(shape=(2,), f="torch")).all())
+        True
     """
     if f is not None:
         _fh.get_framework(f=f).seed(seed_value)

@@ -2,6 +2,13 @@
 
 The key lives in ``_state``; every draw takes a fresh subkey from ``_state.next_key()``, which
 advances the key. Without :func:`seed`, the first draw seeds the key from the OS's entropy.
+
+Compiled code: ``ivy.compile_fn`` (``ivy.backends.jax.compilation``) threads the key through the
+jitted function as an extra input and output; while it traces, ``_state.key`` holds the traced
+key, so draws inside differ from call to call and ``seed`` reproduces them. Under a plain
+``jax.jit`` (or ``lax.scan`` body) the key cannot be threaded: the draws are made once, when the
+code is traced, and a warning says so. Inside ``lax.scan``/``while_loop`` bodies of compiled code,
+pass keys explicitly (``jax.random``) rather than drawing from ivy.
 """
 
 from __future__ import annotations
@@ -53,7 +60,8 @@ class _KeyState:
             warnings.warn(
                 "ivy.jax random functions in traced code (jax.jit, lax.scan, ...) draw their "
                 "numbers once, when the code is traced: every call of the compiled function "
-                "returns the same ones.",
+                "returns the same ones. Compile with ivy.compile_fn instead of jax.jit to draw "
+                "fresh numbers on every call.",
                 stacklevel=3,
             )
             with jax.ensure_compile_time_eval():

@@ -1,0 +1,92 @@
+"""jax backend: compilation with ``jax.jit``, threading the backend's PRNG key through.
+
+The jitted function takes the backend's PRNG key (``ivy.backends.jax.random``) as an extra input
+and returns the advanced key as an extra output, which is written back to the key state after
+the call. While jax traces the function, the key state holds the traced key, so every ivy random
+function inside draws from it. Draws therefore differ from call to call (they are not constants
+frozen at trace time), ``ivy.seed(n)`` reproduces them, and a function that draws nothing just
+passes its key through. Compiled functions may call each other (the key is threaded through).
+
+Called inside someone else's trace (a plain ``jax.jit`` around a compiled function), the key
+cannot be written back: its draws are then fixed when that outer code is traced, with the
+warning of ``ivy.backends.jax.random``, as for any draw under a plain ``jax.jit``.
+
+``static_argnums`` and ``static_argnames`` refer to ``fn``'s parameters, as in ``jax.jit``; each
+completes the other through ``fn``'s signature, so a static argument may be passed by position
+or by name.
+"""
+
+from __future__ import annotations
+
+import functools
+import inspect
+import operator
+
+import jax
+
+from ivy.backends.jax import random as _random
+
+__all__ = ["compile_native"]
+
+_Tracer = jax.core.Tracer
+
+
+def _static_args(sig, static_argnums, static_argnames):
+    """jax.jit's static arguments of the traced function (whose first argument is the key).
+
+    Positions and names complete each other through ``fn``'s signature ``sig``, so a static
+    argument is static whether it is passed by position or by name.
+    """
+    nums = (static_argnums,) if isinstance(static_argnums, int) else (static_argnums or ())
+    names = (static_argnames,) if isinstance(static_argnames, str) else (static_argnames or ())
+    nums, names = [operator.index(i) for i in nums], list(names)
+    if sig is not None:
+        params = list(sig.parameters.values())
+        positional = [p for p in params if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+        if not any(p.kind is p.VAR_POSITIONAL for p in params):
+            nums = [i + len(positional) if i < 0 else i for i in nums]
+        for i, p in enumerate(positional):
+            if i in nums and p.kind is p.POSITIONAL_OR_KEYWORD and p.name not in names:
+                names.append(p.name)
+            if p.name in names and i not in nums:
+                nums.append(i)
+    shifted = tuple(i + 1 if i >= 0 else i for i in nums)
+    return shifted or None, tuple(names) or None
+
+
+def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
+    state = _random._state
+
+    def with_key(key, /, *args, **kwargs):
+        saved = state.key
+        state.key = key  # traced: draws inside the function come from the key passed in
+        try:
+            out = fn(*args, **kwargs)
+            return out, state.key
+        finally:
+            state.key = saved
+
+    try:
+        sig = inspect.signature(fn)
+    except (TypeError, ValueError):
+        sig = None
+    else:  # jax reads parameter names and kinds from the signature
+        key = inspect.Parameter("_ivy_prng_key", inspect.Parameter.POSITIONAL_ONLY)
+        with_key.__signature__ = sig.replace(parameters=[key, *sig.parameters.values()])
+    nums, names = _static_args(sig, static_argnums, static_argnames)
+    jitted = jax.jit(with_key, static_argnums=nums, static_argnames=names)
+
+    @functools.wraps(fn)
+    def compiled(*args, **kwargs):
+        key = state.key
+        if key is None:  # never seeded: next_key seeds from the OS's entropy
+            key = state.next_key()
+        out, new_key = jitted(key, *args, **kwargs)
+        if isinstance(new_key, _Tracer) and not isinstance(key, _Tracer):
+            state.next_key()  # under an outer trace: advance the key concretely (and warn)
+        else:
+            state.key = new_key
+        return out
+
+    compiled.jitted = jitted  # the jax.jit object: (key, *args) -> (out, new_key)
+    return compiled

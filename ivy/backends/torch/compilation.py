@@ -1,0 +1,57 @@
+"""torch backend: compilation with ``torch.compile`` (TorchDynamo and the inductor backend).
+
+Static arguments: dynamo guards on every non-tensor argument and recompiles when one changes, so
+Python values are always static; ``static_argnums`` and ``static_argnames`` are accepted for a
+uniform signature and need nothing more.
+
+Randomness: inductor draws compiled random numbers from a seed it takes from torch's global
+generator on every call, so draws differ from call to call and ``ivy.seed`` (``torch
+.manual_seed``) reproduces them (the compiled numbers differ from eager ones for the same seed).
+
+Gradients: dynamo does not trace ``torch.autograd.grad`` (what ``ivy.execute_with_gradients``
+uses); it splits the graph there and runs the gradient eagerly, so a compiled training step
+gives the eager results with the forward and update parts compiled.
+
+Fallback: where ``torch.compile`` cannot run (dynamo unsupported on this Python or platform, or
+the inductor backend fails to build, e.g. without a C++ compiler), the function runs eagerly
+instead, with one warning; its results are the same, only slower.
+"""
+
+from __future__ import annotations
+
+import functools
+import warnings
+
+import torch
+
+__all__ = ["compile_native"]
+
+
+def _warn_fallback(reason: str) -> None:
+    warnings.warn(
+        f"torch.compile cannot run here ({reason}); ivy.compile_fn runs the function eagerly "
+        f"instead, with the same results.",
+        RuntimeWarning,
+        stacklevel=4,
+    )
+
+
+def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
+    if not torch._dynamo.is_dynamo_supported():
+        _warn_fallback("TorchDynamo does not support this Python or platform")
+        return fn
+    current = [torch.compile(fn)]
+
+    @functools.wraps(fn)
+    def compiled(*args, **kwargs):
+        try:
+            return current[0](*args, **kwargs)
+        except torch._dynamo.exc.BackendCompilerFailed as error:
+            if current[0] is fn:
+                raise
+            _warn_fallback(f"{type(error.inner_exception).__name__}: {error.inner_exception}")
+            current[0] = fn
+            return fn(*args, **kwargs)
+
+    compiled.__wrapped__ = fn
+    return compiled

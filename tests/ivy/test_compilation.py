@@ -1,0 +1,175 @@
+"""ivy.compile_fn: compiled results equal eager results, on every backend, including a whole
+training step (loss, gradients, SGD update). torch.compile is slow to start, so torch compiles
+one function here (the training step), cached for the module and reused."""
+
+from __future__ import annotations
+
+import functools
+import warnings
+
+import numpy as np
+import pytest
+
+import ivy
+from ivy import nest
+from tests.helpers import is_native, native, numpy_of
+
+# torch.compile's own internals warn about torch.jit while compiling
+pytestmark = pytest.mark.filterwarnings("ignore:`torch.jit.script_method`:DeprecationWarning")
+
+COMPILED_TOL = dict(rtol=1e-10, atol=1e-12)  # float64; XLA and graph mode may fuse differently
+
+rng = np.random.default_rng(3)
+PARAMS = {"w": rng.normal(size=(3, 2)), "b": rng.normal(size=2) * 0.1}
+BATCH = (rng.normal(size=(8, 3)), rng.normal(size=(8, 2)))
+
+
+def loss_fn(v, x, y):
+    pred = ivy.tanh(ivy.matmul(x, v["w"]) + v["b"])
+    return ivy.mean((pred - y) ** 2), pred
+
+
+def train_step(v, x, y, lr=0.1):
+    """One SGD step, written by hand with ivy.nest (the optimizers live in ivy.stateful)."""
+    loss, grads, pred = ivy.execute_with_gradients(lambda v: loss_fn(v, x, y), v)
+    v = nest.multi_map_nest(lambda p, g: p - lr * g, v, grads)
+    return loss, v
+
+
+@functools.cache
+def compiled_train_step(backend):
+    return ivy.compile_fn(train_step)
+
+
+def _on(backend, n):
+    return nest.map_nest(lambda a: native(np.asarray(a, dtype=np.float64), backend), n)
+
+
+def _check_same(compiled, eager, backend):
+    assert nest.nest_structure(compiled) == nest.nest_structure(eager)
+    for c, e in zip(nest.nest_leaves(compiled), nest.nest_leaves(eager)):
+        assert is_native(c, backend)
+        np.testing.assert_allclose(numpy_of(c), numpy_of(e), **COMPILED_TOL)
+
+
+@pytest.mark.parametrize("backend_", ["torch", "jax", "tensorflow"])
+def test_compiled_training_step_equals_eager(request, backend_):
+    if backend_ not in request.config.ivy_backends:
+        pytest.skip(f"{backend_} not selected")
+    step = compiled_train_step(backend_)
+    x, y = _on(backend_, BATCH)
+    v_compiled = v_eager = _on(backend_, PARAMS)
+    losses = []
+    for _ in range(3):
+        loss_c, v_compiled = step(v_compiled, x, y)
+        loss_e, v_eager = train_step(v_eager, x, y)
+        _check_same((loss_c, v_compiled), (loss_e, v_eager), backend_)
+        losses.append(float(numpy_of(loss_c)))
+    assert losses[2] < losses[0]  # it trains
+
+
+def model(v, x, *, scale):
+    h = ivy.tanh(ivy.matmul(x, v["w"]) + v["b"])
+    return {
+        "out": h * scale,
+        "norm": ivy.sum(ivy.sin(x) ** 2, axis=-1),
+        "parts": (h[0], ivy.permute_dims(x, (1, 0))),
+    }
+
+
+def test_compiled_equals_eager(backend):
+    if backend == "torch":  # one torch.compile case, reused: the training step
+        step = compiled_train_step("torch")
+        args = (_on("torch", PARAMS), *_on("torch", BATCH))
+        _check_same(step(*args), train_step(*args), "torch")
+        return
+    v, (x, _) = _on(backend, PARAMS), _on(backend, BATCH)
+    compiled = ivy.compile_fn(model)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)  # numpy, at the first call: "no compiler"
+        for scale in (2.0, 3.0):
+            _check_same(compiled(v, x, scale=scale), model(v, x, scale=scale), backend)
+
+
+@pytest.mark.parametrize("backend_", ["jax", "tensorflow"])
+def test_static_arguments(request, backend_):
+    if backend_ not in request.config.ivy_backends:
+        pytest.skip(f"{backend_} not selected")
+
+    def tiled(x, n, *, axis=0):
+        return ivy.concat([x] * n, axis=axis)  # n decides the shape: a compile-time constant
+
+    x = native(np.arange(3.0), backend_)
+    by_num = ivy.compile_fn(tiled, static_argnums=1, static_argnames="axis")
+    by_name = ivy.compile_fn(tiled, static_argnames=("n", "axis"))
+    for fn in (by_num, by_name):
+        for n in (2, 3):
+            np.testing.assert_array_equal(numpy_of(fn(x, n)), np.tile(np.arange(3.0), n))
+        np.testing.assert_array_equal(numpy_of(fn(x, n=2, axis=0)), np.tile(np.arange(3.0), 2))
+
+
+def test_framework_is_resolved_at_the_first_call(request):
+    if "jax" not in request.config.ivy_backends:
+        pytest.skip("jax not selected")
+    import jax
+
+    traced = []
+
+    def double(x):
+        traced.append(type(x))
+        return x * 2
+
+    compiled = ivy.compile_fn(double)
+    assert traced == []  # nothing happens before the first call
+    out = compiled(native(np.arange(3.0), "jax"))
+    assert is_native(out, "jax")
+    assert issubclass(traced[0], jax.core.Tracer)
+    compiled(native(np.arange(3.0), "jax"))
+    assert len(traced) == 1  # compiled once, called twice
+    # an explicit framework compiles at once; numpy inputs are then converted
+    eager = ivy.compile_fn(double, f="jax")(np.arange(3.0))
+    assert is_native(eager, "jax")
+    assert ivy.jax.compile_fn(double)(np.arange(3.0)).shape == (3,)
+
+
+def test_compiled_function_without_arrays_needs_a_framework():
+    compiled = ivy.compile_fn(lambda n: n + 1)
+    with pytest.raises(ivy.NoFrameworkError):
+        compiled(1)
+
+
+def test_numpy_warns_and_returns_the_function():
+    def fn(x):
+        return x + 1
+
+    with pytest.warns(UserWarning, match="numpy has no compiler"):
+        assert ivy.compile_fn(fn, f="numpy") is fn
+    lazy = ivy.compile_fn(fn)
+    with pytest.warns(UserWarning, match="numpy has no compiler"):
+        np.testing.assert_array_equal(lazy(np.zeros(2)), [1.0, 1.0])
+
+
+def test_torch_falls_back_to_eager_when_compile_cannot_run(request, monkeypatch):
+    if "torch" not in request.config.ivy_backends:
+        pytest.skip("torch not selected")
+    import torch
+
+    def broken_compile(fn, **kwargs):
+        def run(*args, **kw):
+            raise torch._dynamo.exc.BackendCompilerFailed(
+                run, RuntimeError("no C++ compiler found"), None
+            )
+
+        return run
+
+    monkeypatch.setattr(torch, "compile", broken_compile)
+    compiled = ivy.compile_fn(lambda x: x * 3, f="torch")
+    with pytest.warns(RuntimeWarning, match="runs the function eagerly"):
+        out = compiled(torch.ones(2))
+    assert torch.equal(out, torch.full((2,), 3.0))
+    assert torch.equal(compiled(torch.ones(2)), torch.full((2,), 3.0))  # stays eager, silently
+
+    monkeypatch.setattr(torch._dynamo, "is_dynamo_supported", lambda: False)
+    with pytest.warns(RuntimeWarning, match="does not support"):
+        fn = ivy.torch.compile_fn(torch.sin)
+    assert fn is torch.sin

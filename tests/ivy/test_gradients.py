@@ -1,0 +1,357 @@
+"""Automatic differentiation: gradients of composite functions in float64, checked against
+central finite differences computed with numpy and across torch, jax and tensorflow."""
+
+from __future__ import annotations
+
+import types
+import zlib
+
+import numpy as np
+import pytest
+
+import ivy
+from ivy import nest
+from tests.helpers import TOLERANCES, is_native, native, numpy_of
+
+# The composite functions are written once against an array namespace: an ivy backend
+# namespace under test, or plain numpy (the reference, independent of ivy's numpy backend).
+NP = types.SimpleNamespace(
+    **{n: getattr(np, n) for n in dir(np) if not n.startswith("_")},
+    inv=np.linalg.inv,
+    vector_norm=np.linalg.vector_norm,
+)
+
+X_DATA = np.random.default_rng(7).normal(size=(5, 3))
+FD = dict(rtol=1e-6, atol=1e-8)  # central differences with h ~ 1e-6 in float64
+F64 = TOLERANCES["float64"]
+
+
+def mlp(v, xp):
+    h = xp.tanh(xp.matmul(xp.asarray(X_DATA), v["w1"]) + v["b1"])
+    out = xp.matmul(h, v["w2"])
+    return xp.mean(out**2) + 0.1 * xp.sum(v["w1"] ** 2)
+
+
+def logsumexp_softplus(v, xp):
+    a, b = v
+    return xp.log(xp.sum(xp.exp(a))) + xp.sum(xp.log1p(xp.exp(b)))
+
+
+def rational_sqrt(v, xp):
+    x, y = v
+    return xp.sum(xp.sqrt(x**2 + y**2 + 1.0) / (1.0 + x * x)) * xp.prod(xp.cos(y))
+
+
+def nested_broadcast(v, xp):
+    p, (q, s) = v["a"]["p"], v["q"]
+    m = xp.mean(xp.sin(p) * xp.cos(q), axis=0)
+    return xp.sum(m**2) * xp.exp(s) + xp.var(p)
+
+
+def linalg(v, xp):
+    a, b = v["A"], v["b"]
+    m = xp.matmul(a, xp.permute_dims(a, (1, 0))) + 3.0 * xp.eye(3, dtype=xp.float64)
+    return xp.sum(xp.matmul(xp.inv(m), b)) + xp.vector_norm(a)
+
+
+def _inputs(name):
+    rng = np.random.default_rng(zlib.crc32(name.encode()))
+    n = rng.normal
+    return {
+        "mlp": lambda: {"w1": n(size=(3, 4)), "b1": n(size=4), "w2": n(size=(4, 2))},
+        "logsumexp_softplus": lambda: [n(size=4), n(size=(2, 3))],
+        "rational_sqrt": lambda: (n(size=3), n(size=3)),
+        "nested_broadcast": lambda: {"a": {"p": n(size=(2, 3))}, "q": [n(size=3), n(size=())]},
+        "linalg": lambda: {"A": n(size=(3, 3)), "b": n(size=3)},
+    }[name]()
+
+
+COMPOSITES = {
+    f.__name__: f for f in (mlp, logsumexp_softplus, rational_sqrt, nested_broadcast, linalg)
+}
+
+
+def finite_differences(fn, v, h=1e-6):
+    """Central differences of the numpy function ``fn`` at the nest ``v`` of float64 arrays."""
+    leaves, spec = nest.flatten_nest(v)
+    leaves = [np.array(x, dtype=np.float64) for x in leaves]
+    grads = []
+    for leaf in leaves:
+        g = np.zeros_like(leaf)
+        for i in np.ndindex(leaf.shape):
+            old = leaf[i]
+            step = h * max(1.0, abs(old))
+            leaf[i] = old + step
+            up = fn(nest.unflatten_nest(spec, leaves))
+            leaf[i] = old - step
+            down = fn(nest.unflatten_nest(spec, leaves))
+            leaf[i] = old
+            g[i] = (up - down) / (2 * step)
+        grads.append(g)
+    return nest.unflatten_nest(spec, grads)
+
+
+def _on(backend, v):
+    return nest.map_nest(lambda a: native(np.asarray(a, dtype=np.float64), backend), v)
+
+
+def _to_numpy(v):
+    return nest.map_nest(numpy_of, v)
+
+
+def _assert_nests_close(actual, expected, **tol):
+    assert nest.nest_structure(actual) == nest.nest_structure(expected)
+    for a, e in zip(nest.nest_leaves(actual), nest.nest_leaves(expected)):
+        np.testing.assert_allclose(a, e, **tol)
+
+
+def _gradients(backend, name):
+    xp = getattr(ivy, backend)
+    v = _on(backend, _inputs(name))
+    loss, grads = ivy.execute_with_gradients(lambda v: COMPOSITES[name](v, xp), v)
+    assert is_native(loss, backend) and numpy_of(loss).shape == ()
+    for g in nest.nest_leaves(grads):
+        assert is_native(g, backend) and numpy_of(g).dtype == np.float64
+    return numpy_of(loss), _to_numpy(grads)
+
+
+# ----------------------------------------------------------------------------------------------
+# Gradients of composite functions
+# ----------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", COMPOSITES)
+def test_gradients_match_finite_differences(diff_backend, name):
+    loss, grads = _gradients(diff_backend, name)
+    v = _inputs(name)
+    reference = COMPOSITES[name]
+    np.testing.assert_allclose(loss, reference(v, NP), **F64)
+    _assert_nests_close(grads, finite_differences(lambda w: reference(w, NP), v), **FD)
+
+
+@pytest.mark.parametrize("name", COMPOSITES)
+def test_gradients_agree_across_backends(request, name):
+    backends = [b for b in request.config.ivy_backends if b in ("torch", "jax", "tensorflow")]
+    if len(backends) < 2:
+        pytest.skip("needs two differentiable backends")
+    results = {b: _gradients(b, name) for b in backends}
+    first = backends[0]
+    for b in backends[1:]:
+        np.testing.assert_allclose(results[b][0], results[first][0], rtol=1e-12, atol=1e-12)
+        _assert_nests_close(results[b][1], results[first][1], rtol=1e-11, atol=1e-12)
+
+
+def test_single_array_and_dict_key_order(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    x = native(np.array([1.0, 2.0, 3.0]), diff_backend)
+    loss, g = ivy.execute_with_gradients(lambda x: xp.sum(x**3), x)
+    np.testing.assert_allclose(numpy_of(loss), 36.0, **F64)
+    np.testing.assert_allclose(numpy_of(g), [3.0, 12.0, 27.0], **F64)
+    v = {"z": x, "a": x}
+    _, grads = ivy.execute_with_gradients(lambda v: xp.sum(v["z"] * v["a"]), v)
+    assert list(grads) == ["z", "a"]
+
+
+# ----------------------------------------------------------------------------------------------
+# Semantics: aux outputs, unused leaves, no accumulation, variables, retain_grads
+# ----------------------------------------------------------------------------------------------
+
+
+def test_aux_outputs_follow_the_gradients(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    v = {"w": native(np.array([1.0, -2.0]), diff_backend)}
+
+    def func(v):
+        y = v["w"] * 3.0
+        return xp.sum(y**2), y, {"mean": xp.mean(y)}
+
+    loss, grads, y, extra = ivy.execute_with_gradients(func, v)
+    np.testing.assert_allclose(numpy_of(loss), 45.0, **F64)
+    np.testing.assert_allclose(numpy_of(grads["w"]), [18.0, -36.0], **F64)
+    np.testing.assert_allclose(numpy_of(y), [3.0, -6.0], **F64)
+    np.testing.assert_allclose(numpy_of(extra["mean"]), -1.5, **F64)
+
+
+def test_unused_leaves_get_zero_gradients(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    v = {"used": native(np.ones(2), diff_backend), "unused": native(np.ones((2, 3)), diff_backend)}
+    _, grads = ivy.execute_with_gradients(lambda v: xp.sum(v["used"] * 2.0), v)
+    np.testing.assert_array_equal(numpy_of(grads["unused"]), np.zeros((2, 3)))
+    _, grads = ivy.execute_with_gradients(lambda v: xp.sum(xp.ones(3, dtype=xp.float64)), v)
+    np.testing.assert_array_equal(numpy_of(grads["used"]), np.zeros(2))
+
+
+def test_repeated_calls_do_not_accumulate(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    v = {"w": ivy.variable(native(np.array([1.0, 2.0]), diff_backend))}
+    first = ivy.execute_with_gradients(lambda v: xp.sum(v["w"] ** 2), v)[1]
+    second = ivy.execute_with_gradients(lambda v: xp.sum(v["w"] ** 2), v)[1]
+    np.testing.assert_array_equal(numpy_of(first["w"]), [2.0, 4.0])
+    np.testing.assert_array_equal(numpy_of(second["w"]), [2.0, 4.0])
+    if diff_backend == "torch":
+        assert v["w"].grad is None  # torch.autograd.grad, never .backward()
+
+
+def test_variables_are_differentiable_leaves(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    w = ivy.variable(native(np.array([0.5, 1.5]), diff_backend))
+    if diff_backend == "torch":
+        assert w.requires_grad and w.is_leaf
+    if diff_backend == "tensorflow":
+        import tensorflow as tf
+
+        assert isinstance(w, tf.Variable) and w.trainable
+    _, grads = ivy.execute_with_gradients(lambda v: xp.sum(xp.sin(v[0])), [w])
+    np.testing.assert_allclose(numpy_of(grads[0]), np.cos([0.5, 1.5]), **F64)
+
+
+def test_results_are_cut_from_the_graph_by_default(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    x = native(np.array([1.0, 2.0]), diff_backend)
+
+    def outer(x):
+        loss, g = ivy.execute_with_gradients(lambda x: xp.sum(x**3), x)
+        return xp.sum(g) + loss  # constants for the outer differentiation
+
+    _, g_outer = ivy.execute_with_gradients(outer, x)
+    np.testing.assert_array_equal(numpy_of(g_outer), [0.0, 0.0])
+    if diff_backend == "torch":
+        loss, g = ivy.execute_with_gradients(lambda x: xp.sum(x**3), x)
+        assert not loss.requires_grad and not g.requires_grad
+
+
+def test_retain_grads_gives_second_order_gradients(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    x = native(np.array([1.0, 2.0, -0.5]), diff_backend)
+
+    def outer(x):
+        inner = ivy.execute_with_gradients(lambda x: xp.sum(x**3), x, retain_grads=True)
+        return xp.sum(inner[1])  # sum of 3 x^2
+
+    loss, g = ivy.execute_with_gradients(outer, x)
+    np.testing.assert_allclose(numpy_of(loss), 3 * (1 + 4 + 0.25), **F64)
+    np.testing.assert_allclose(numpy_of(g), [6.0, 12.0, -3.0], **F64)
+
+
+def test_loss_must_be_a_scalar(diff_backend):
+    x = native(np.ones(3), diff_backend)
+    with pytest.raises(ValueError, match="scalar"):
+        ivy.execute_with_gradients(lambda x: x * 2.0, x)
+
+
+def test_stop_gradient(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    x = native(np.array([1.0, 3.0]), diff_backend)
+    _, g = ivy.execute_with_gradients(lambda x: xp.sum(ivy.stop_gradient(x) * x), x)
+    np.testing.assert_allclose(numpy_of(g), [1.0, 3.0], **F64)
+
+
+# ----------------------------------------------------------------------------------------------
+# value_and_grad, grad, jacobian
+# ----------------------------------------------------------------------------------------------
+
+
+def test_value_and_grad_and_grad(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    v = {"a": native(np.array([1.0, 2.0]), diff_backend)}
+
+    def func(v):
+        return xp.sum(v["a"] ** 2)
+
+    loss, grads = ivy.value_and_grad(func)(v)
+    np.testing.assert_allclose(numpy_of(loss), 5.0, **F64)
+    np.testing.assert_allclose(numpy_of(grads["a"]), [2.0, 4.0], **F64)
+    grads = ivy.grad(lambda v: (func(v), "aux dropped"))(v)
+    np.testing.assert_allclose(numpy_of(grads["a"]), [2.0, 4.0], **F64)
+    # the framework from f=, from the namespace, or from the global framework
+    grads = ivy.grad(func, f=diff_backend)(_to_numpy(v))
+    assert is_native(grads["a"], diff_backend)
+    assert is_native(xp.grad(func)(_to_numpy(v))["a"], diff_backend)
+    with ivy.set_framework(diff_backend):
+        assert is_native(ivy.grad(func)(_to_numpy(v))["a"], diff_backend)
+
+
+def planar_arm(q, xp):
+    """End point and orientation of a planar 3-link arm: (..., 3) joint angles -> (..., 3)."""
+    lengths = (1.0, 0.7, 0.4)
+    a1 = q[..., 0]
+    a2 = a1 + q[..., 1]
+    a3 = a2 + q[..., 2]
+    px = lengths[0] * xp.cos(a1) + lengths[1] * xp.cos(a2) + lengths[2] * xp.cos(a3)
+    py = lengths[0] * xp.sin(a1) + lengths[1] * xp.sin(a2) + lengths[2] * xp.sin(a3)
+    return xp.stack([px, py, a3], axis=-1)
+
+
+def rotation(theta, xp):
+    """(..., 1) angle -> (..., 2, 2) rotation matrix scaled by the angle."""
+    c, s = xp.cos(theta[..., 0]), xp.sin(theta[..., 0])
+    r = xp.stack([xp.stack([c, -s], axis=-1), xp.stack([s, c], axis=-1)], axis=-2)
+    return r * theta[..., :1, None]
+
+
+def jacobian_fd(fn, x, batch_dims, h=1e-6):
+    """Per-batch-element Jacobian of the numpy function ``fn`` by central differences."""
+    x = np.asarray(x, dtype=np.float64)
+    event = x.shape[batch_dims:]
+    y = fn(x)
+    jac = np.zeros(y.shape + event)
+    for i in np.ndindex(event):
+        dx = np.zeros(event)
+        dx[i] = h
+        d = (fn(x + dx) - fn(x - dx)) / (2 * h)
+        jac[(..., *i)] = d
+    return y, jac
+
+
+@pytest.mark.parametrize("batch_shape", [(), (4,), (2, 3)])
+def test_jacobian_of_batched_kinematics(diff_backend, batch_shape):
+    xp = getattr(ivy, diff_backend)
+    q = np.random.default_rng(1).uniform(-2, 2, size=(*batch_shape, 3))
+    y, jac = ivy.execute_with_jacobian(lambda q: planar_arm(q, xp), native(q, diff_backend))
+    y_ref, jac_ref = jacobian_fd(lambda q: planar_arm(q, NP), q, len(batch_shape))
+    assert numpy_of(jac).shape == (*batch_shape, 3, 3)
+    np.testing.assert_allclose(numpy_of(y), y_ref, **F64)
+    np.testing.assert_allclose(numpy_of(jac), jac_ref, **FD)
+    jac2 = ivy.jacobian(lambda q: planar_arm(q, xp))(native(q, diff_backend))
+    np.testing.assert_allclose(numpy_of(jac2), numpy_of(jac), **F64)
+
+
+def test_jacobian_with_matrix_outputs_and_full_jacobian(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    theta = np.array([[0.3], [-1.2], [2.0]])
+    jac = ivy.jacobian(lambda t: rotation(t, xp))(native(theta, diff_backend))
+    assert numpy_of(jac).shape == (3, 2, 2, 1)
+    np.testing.assert_allclose(
+        numpy_of(jac), jacobian_fd(lambda t: rotation(t, NP), theta, 1)[1], **FD
+    )
+    # batch_dims=0: the full Jacobian, also across batch elements
+    m = np.array([[1.0, 2.0], [3.0, 4.0]])
+    full = ivy.jacobian(lambda a: xp.matmul(a, a), batch_dims=0)(native(m, diff_backend))
+    assert numpy_of(full).shape == (2, 2, 2, 2)
+    np.testing.assert_allclose(numpy_of(full), jacobian_fd(lambda a: a @ a, m, 0)[1], **FD)
+
+
+def test_jacobian_rejects_outputs_that_lose_the_batch(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    with pytest.raises(ValueError, match="batch"):
+        ivy.jacobian(lambda q: xp.sum(q, axis=0))(native(np.ones((4, 3)), diff_backend))
+
+
+# ----------------------------------------------------------------------------------------------
+# numpy: no autodiff
+# ----------------------------------------------------------------------------------------------
+
+
+def test_numpy_raises_a_clear_error():
+    v = {"w": np.ones(2)}
+    for call in (
+        lambda: ivy.execute_with_gradients(lambda v: np.sum(v["w"]), v),
+        lambda: ivy.value_and_grad(lambda v: np.sum(v["w"]))(v),
+        lambda: ivy.grad(lambda v: np.sum(v["w"]))(v),
+        lambda: ivy.jacobian(lambda x: x)(np.ones(2)),
+    ):
+        with pytest.raises(ivy.UnsupportedError, match="differentiable backend"):
+            call()
+    x = np.ones(2)
+    assert ivy.stop_gradient(x) is x
+    assert ivy.variable(x) is x
