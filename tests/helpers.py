@@ -23,3 +23,157 @@ def assert_close(actual, expected, dtype=None, **overrides):
     tol = {**TOLERANCES.get(name, dict(rtol=0, atol=0)), **overrides}
     assert actual.shape == expected.shape, f"shape {actual.shape} != expected {expected.shape}"
     np.testing.assert_allclose(actual, expected, equal_nan=True, **tol)
+
+
+# ----------------------------------------------------------------------------------------------
+# Native conversion, independent of ivy: inputs are built and outputs are read with each
+# framework's own functions, so that a bug in ivy.asarray or ivy.to_numpy cannot hide another.
+# ----------------------------------------------------------------------------------------------
+
+_TYPE_ROOTS = {
+    "numpy": ("numpy",),
+    "torch": ("torch",),
+    "jax": ("jax", "jaxlib"),
+    "tensorflow": ("tensorflow",),
+}
+
+
+def native(a, backend: str):
+    """A numpy array (or nested list / scalar) as a native array of ``backend``, same dtype."""
+    a = np.array(a)
+    if backend == "numpy":
+        return a
+    if backend == "torch":
+        import torch
+
+        return torch.from_numpy(a)
+    if backend == "jax":
+        import jax.numpy as jnp
+
+        return jnp.asarray(a)
+    if backend == "tensorflow":
+        import tensorflow as tf
+
+        return tf.convert_to_tensor(a)
+    raise ValueError(f"unknown backend {backend!r}")
+
+
+def is_native(x, backend: str) -> bool:
+    """True when ``x`` is an array of ``backend`` (numpy scalars count as numpy arrays)."""
+    roots = _TYPE_ROOTS[backend]
+    return any(k.__module__.partition(".")[0] in roots for k in type(x).__mro__[:-1])
+
+
+def numpy_of(x) -> np.ndarray:
+    """A native array of any backend as a numpy array, read with the framework's own API."""
+    if isinstance(x, (np.ndarray, np.generic)):
+        return np.asarray(x)
+    root = type(x).__module__.partition(".")[0]
+    if root == "torch":
+        return x.detach().cpu().resolve_conj().numpy()
+    if root == "tensorflow":
+        return x.numpy()
+    if root in ("jax", "jaxlib"):
+        return np.asarray(x)
+    raise TypeError(f"not an array of a known framework: {type(x)!r}")
+
+
+def dtype_name(x) -> str:
+    """Name ('float32', 'int64', 'bool', ...) of the dtype of a native array of any backend."""
+    name = str(x.dtype)
+    if name.startswith("torch."):
+        name = name[len("torch.") :]
+    if name.startswith("<dtype: "):  # tf.DType repr
+        name = x.dtype.name
+    return np.dtype(name).name if name != "bool" else "bool"
+
+
+def check(actual, expected, backend: str, *, dtype=None, signed_zeros=False, **overrides):
+    """Assert that ``actual`` is a ``backend`` array with the dtype, shape and values of the
+    numpy reference ``expected``.
+
+    Args:
+        actual: the result under test.
+        expected: numpy reference; its dtype is the expected dtype unless ``dtype`` is given.
+        backend: the backend ``actual`` must belong to.
+        dtype: expected dtype name, when it differs from ``expected.dtype``.
+        signed_zeros: also require the sign of zero results to match the reference.
+        **overrides: tolerance overrides (``rtol``, ``atol``).
+    """
+    expected = np.asarray(expected)
+    want = dtype or expected.dtype.name
+    assert is_native(actual, backend), f"expected a {backend} array, got {type(actual)!r}"
+    assert dtype_name(actual) == want, f"dtype {dtype_name(actual)} != expected {want}"
+    got = numpy_of(actual)
+    assert got.shape == expected.shape, f"shape {got.shape} != expected {expected.shape}"
+    if want in TOLERANCES:
+        tol = {**TOLERANCES[want], **overrides}
+        np.testing.assert_allclose(got, expected.astype(want), equal_nan=True, **tol)
+        if signed_zeros:
+            zeros = expected == 0
+            np.testing.assert_array_equal(
+                np.signbit(got[zeros]), np.signbit(expected[zeros]), err_msg="sign of zero"
+            )
+    else:
+        np.testing.assert_array_equal(got, expected)
+
+
+def tolerance(dtype: str, scale: float = 1.0) -> dict:
+    """The tolerance of ``dtype`` with ``atol`` scaled to the magnitude of the problem."""
+    tol = TOLERANCES[dtype]
+    return dict(rtol=tol["rtol"], atol=tol["atol"] * max(scale, 1.0))
+
+
+def api(backend: str, name: str):
+    """The two ways to call function ``name`` on ``backend``: the framework-agnostic
+    ``ivy.<name>`` (the framework inferred from the arrays) and the namespace's ``xp.<name>``."""
+    return [getattr(ivy, name), getattr(getattr(ivy, backend), name)]
+
+
+def api_f(backend: str, name: str):
+    """Like :func:`api` for functions with no array argument: ``ivy.<name>(..., f=backend)``
+    and ``xp.<name>(...)``."""
+    agnostic = getattr(ivy, name)
+
+    def with_f(*args, **kwargs):
+        return agnostic(*args, f=backend, **kwargs)
+
+    return [with_f, getattr(getattr(ivy, backend), name)]
+
+
+try:
+    from hypothesis import HealthCheck, settings
+
+    # Modest and derandomized: the suite runs in minutes on two cores and does not flake.
+    HYPOTHESIS = settings(
+        max_examples=25,
+        deadline=None,
+        derandomize=True,
+        suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow],
+    )
+except ImportError:  # hypothesis is a test extra; helpers stay importable without it
+    HYPOTHESIS = None
+
+
+def reference(fn, *args, **kwargs):
+    """Call a numpy/scipy reference with floating-point warnings silenced (inf, nan, empty
+    slices are expected inputs here)."""
+    import warnings
+
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore", RuntimeWarning)
+        return fn(*args, **kwargs)
+
+
+def cast(a, dtype: str) -> np.ndarray:
+    """A numpy reference in float64 rounded to ``dtype`` (overflow to inf is expected)."""
+    with np.errstate(all="ignore"):
+        return np.asarray(a).astype(dtype)
+
+
+def check_meta(actual, backend: str, dtype: str, shape: tuple):
+    """Assert that ``actual`` is a ``backend`` array of ``dtype`` and ``shape`` (values free)."""
+    assert is_native(actual, backend), f"expected a {backend} array, got {type(actual)!r}"
+    assert dtype_name(actual) == dtype, f"dtype {dtype_name(actual)} != expected {dtype}"
+    got = tuple(numpy_of(actual).shape)
+    assert got == tuple(shape), f"shape {got} != expected {tuple(shape)}"

@@ -1,0 +1,241 @@
+"""Array creation on every backend: values, shapes, and the default dtypes (float32 for Python
+floats and floating results, int64 for Python ints and integer ranges)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import ivy
+from tests.helpers import api, api_f, cast, check, check_meta, native
+
+# ----------------------------------------------------------------------------------------------
+# asarray and its alias array
+# ----------------------------------------------------------------------------------------------
+
+# object, expected numpy array (its dtype is the expected default dtype)
+FROM_PYTHON = {
+    "nested floats": ([[1.5, -2.0], [0.25, 3.0]], np.array([[1.5, -2.0], [0.25, 3.0]], np.float32)),
+    "nested ints": ([[1, -2, 3]], np.array([[1, -2, 3]], np.int64)),
+    "bools": ([True, False], np.array([True, False])),
+    "float scalar": (2.5, np.float32(2.5)),
+    "int scalar": (7, np.int64(7)),
+    "bool scalar": (True, np.bool_(True)),
+    "ints and floats": ([1, 2.5], np.array([1.0, 2.5], np.float32)),
+    "tuple": ((0.5, 1.0), np.array([0.5, 1.0], np.float32)),
+}
+
+
+@pytest.mark.parametrize("name", ["asarray", "array"])
+@pytest.mark.parametrize("obj, expected", list(FROM_PYTHON.values()), ids=list(FROM_PYTHON))
+def test_asarray_from_python_objects_uses_default_dtypes(backend, name, obj, expected):
+    for fn in api_f(backend, name):
+        check(fn(obj), expected, backend, rtol=0, atol=0)
+
+
+@pytest.mark.parametrize("name", ["asarray", "array"])
+@pytest.mark.parametrize("dtype", ["float64", "float32", "int32", "int64", "bool", "uint8"])
+def test_asarray_keeps_the_dtype_of_numpy_arrays(backend, name, dtype):
+    a = np.array([[0, 1, 2], [3, 4, 5]]).astype(dtype)
+    for fn in api_f(backend, name):
+        check(fn(a), a, backend)
+        check(fn(a[0, 1]), a[0, 1], backend)  # a numpy scalar keeps its dtype too
+
+
+@pytest.mark.parametrize("dtype", ["float64", "float32", "int32"])
+def test_asarray_of_a_native_array_keeps_it(backend, dtype):
+    a = np.array([1.0, 2.0, 3.0], dtype=dtype)
+    for fn in api(backend, "asarray"):
+        check(fn(native(a, backend)), a, backend)
+
+
+@pytest.mark.parametrize("dtype", ["float64", "float32", "int32", "int64", "bool"])
+def test_asarray_with_dtype(backend, dtype):
+    values = [[0.0, 1.0], [2.0, 3.0]]
+    expected = np.array(values).astype(dtype)
+    xp = getattr(ivy, backend)
+    for fn in api_f(backend, "asarray"):
+        check(fn(values, dtype=dtype), expected, backend)
+        check(fn(values, dtype=getattr(xp, dtype)), expected, backend)
+        check(fn(np.array(values, np.float64), dtype=dtype), expected, backend)
+
+
+def test_array_is_the_same_function_as_asarray(backend):
+    assert ivy.array is ivy.asarray
+    xp = getattr(ivy, backend)
+    assert xp.array is xp.asarray
+
+
+# ----------------------------------------------------------------------------------------------
+# zeros, ones, empty, full
+# ----------------------------------------------------------------------------------------------
+
+SHAPES = [3, (2, 3), (), (0, 2), [4, 1]]
+FILLED = {"zeros": 0, "ones": 1}
+
+
+@pytest.mark.parametrize("name", ["zeros", "ones", "empty"])
+@pytest.mark.parametrize("shape", SHAPES, ids=str)
+def test_filled_arrays_are_float32_by_default(backend, name, shape):
+    full_shape = (shape,) if isinstance(shape, int) else tuple(shape)
+    for fn in api_f(backend, name):
+        out = fn(shape)
+        check_meta(out, backend, "float32", full_shape)
+        if name in FILLED:
+            check(out, np.full(full_shape, FILLED[name], np.float32), backend)
+
+
+@pytest.mark.parametrize("name", ["zeros", "ones", "empty"])
+@pytest.mark.parametrize("dtype", ["float64", "int32", "int64", "bool"])
+def test_filled_arrays_with_dtype(backend, name, dtype):
+    xp = getattr(ivy, backend)
+    for fn in api_f(backend, name):
+        for dt in (dtype, getattr(xp, dtype)):
+            out = fn((2, 2), dtype=dt)
+            check_meta(out, backend, dtype, (2, 2))
+            if name in FILLED:
+                check(out, np.full((2, 2), FILLED[name], dtype), backend)
+        check_meta(fn(shape=(1, 3), dtype=dtype, device="cpu"), backend, dtype, (1, 3))
+
+
+# fill value, default dtype that the value implies
+FULL_DEFAULTS = {
+    "bool": (True, "bool"),
+    "int": (7, "int64"),
+    "negative int": (-3, "int64"),
+    "float": (2.5, "float32"),
+    "complex": (1 + 2j, "complex64"),
+    "inf": (float("inf"), "float32"),
+}
+
+
+@pytest.mark.parametrize("value, dtype", list(FULL_DEFAULTS.values()), ids=list(FULL_DEFAULTS))
+def test_full_dtype_follows_the_value(backend, value, dtype):
+    for fn in api_f(backend, "full"):
+        check(fn((2, 3), value), np.full((2, 3), value, dtype), backend)
+        check(fn(4, value), np.full(4, value, dtype), backend)
+
+
+@pytest.mark.parametrize("dtype", ["float64", "float32", "int32"])
+def test_full_with_dtype(backend, dtype):
+    for fn in api_f(backend, "full"):
+        check(fn((3,), 5, dtype=dtype), np.full(3, 5, dtype), backend)
+        check(fn(shape=(1, 2), fill_value=-1.0, dtype=dtype), np.full((1, 2), -1, dtype), backend)
+
+
+# ----------------------------------------------------------------------------------------------
+# arange, linspace, eye
+# ----------------------------------------------------------------------------------------------
+
+# arguments, keyword arguments, default dtype
+ARANGE = [
+    ((5,), {}, "int64"),
+    ((2, 7), {}, "int64"),
+    ((1, 10, 3), {}, "int64"),
+    ((10, 0, -2), {}, "int64"),
+    ((3, 3), {}, "int64"),  # empty
+    ((0.5, 3.0, 0.5), {}, "float32"),
+    ((5.0,), {}, "float32"),
+    ((0, 1, 0.25), {}, "float32"),  # a float step makes it float
+    ((-1.5, 2), {}, "float32"),
+    ((4,), {"dtype": "float64"}, "float64"),
+    ((0, 6, 2), {"dtype": "int32"}, "int32"),
+    ((1,), {"stop": 4, "step": 1}, "int64"),
+]
+
+
+@pytest.mark.parametrize("args, kwargs, dtype", ARANGE, ids=[f"{a}-{k}" for a, k, _ in ARANGE])
+def test_arange(backend, args, kwargs, dtype):
+    np_args = args + tuple(kwargs[k] for k in ("stop", "step") if k in kwargs)
+    expected = cast(np.arange(*(float(v) for v in np_args)), dtype)
+    for fn in api_f(backend, "arange"):
+        check(fn(*args, **kwargs), expected, backend)
+
+
+LINSPACE = [
+    ((0.0, 1.0, 5), {}),
+    ((-2.5, 7.5, 9), {}),
+    ((1, 3, 4), {}),  # int bounds: still float32
+    ((0.0, 1.0, 4), {"endpoint": False}),
+    ((2.0, 3.0, 1), {}),
+    ((5.0, -5.0, 6), {"dtype": "float64"}),
+    ((0.0, 1.0, 0), {}),
+]
+
+
+@pytest.mark.parametrize("args, kwargs", LINSPACE, ids=[f"{a}-{k}" for a, k in LINSPACE])
+def test_linspace(backend, args, kwargs):
+    dtype = kwargs.get("dtype", "float32")
+    np_kwargs = {k: v for k, v in kwargs.items() if k != "dtype"}
+    expected = cast(np.linspace(*args, **np_kwargs), dtype)
+    for fn in api_f(backend, "linspace"):
+        check(fn(*args, **kwargs), expected, backend)
+    check(api_f(backend, "linspace")[0](args[0], args[1], num=args[2], **kwargs), expected, backend)
+
+
+EYE = [
+    ((3,), {}),
+    ((2, 4), {}),
+    ((4, 2), {"k": 1}),
+    ((3,), {"k": -1}),
+    ((3, 3), {"k": 5}),
+    ((0,), {}),
+    ((2, 3), {"dtype": "int64"}),
+    ((3,), {"dtype": "bool", "k": 1}),
+]
+
+
+@pytest.mark.parametrize("args, kwargs", EYE, ids=[f"{a}-{k}" for a, k in EYE])
+def test_eye(backend, args, kwargs):
+    n_rows = args[0]
+    n_cols = args[1] if len(args) > 1 else n_rows
+    k = kwargs.get("k", 0)
+    expected = np.array(
+        [[1 if j - i == k else 0 for j in range(n_cols)] for i in range(n_rows)], dtype=np.float64
+    ).reshape(n_rows, n_cols)
+    expected = expected.astype(kwargs.get("dtype", "float32"))
+    for fn in api_f(backend, "eye"):
+        check(fn(*args, **kwargs), expected, backend)
+
+
+# ----------------------------------------------------------------------------------------------
+# *_like
+# ----------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ["zeros_like", "ones_like", "empty_like", "full_like"])
+@pytest.mark.parametrize("dtype", ["float64", "float32", "int32", "bool"])
+@pytest.mark.parametrize("shape", [(2, 3), (), (0, 4)], ids=str)
+def test_like_functions_keep_shape_and_dtype(backend, name, dtype, shape):
+    a = np.ones(shape, dtype=dtype)
+    value = {"zeros_like": 0, "ones_like": 1, "empty_like": None, "full_like": 1}[name]
+    args = (1,) if name == "full_like" else ()
+    for fn in api(backend, name):
+        out = fn(native(a, backend), *args)
+        check_meta(out, backend, dtype, shape)
+        if value is not None:
+            check(out, np.full(shape, value, dtype), backend)
+
+
+@pytest.mark.parametrize("name", ["zeros_like", "ones_like", "empty_like", "full_like"])
+@pytest.mark.parametrize("dtype", ["float64", "int64", "float32"])
+def test_like_functions_with_dtype(backend, name, dtype):
+    a = np.ones((3, 1), dtype=np.float32 if dtype != "float32" else np.int32)
+    value = {"zeros_like": 0, "ones_like": 1, "empty_like": None, "full_like": 4}[name]
+    args = (4,) if name == "full_like" else ()
+    xp = getattr(ivy, backend)
+    for fn in api(backend, name):
+        for dt in (dtype, getattr(xp, dtype)):
+            out = fn(native(a, backend), *args, dtype=dt, device="cpu")
+            check_meta(out, backend, dtype, (3, 1))
+            if value is not None:
+                check(out, np.full((3, 1), value, dtype), backend)
+
+
+def test_full_like_keeps_the_dtype_of_x_over_the_value(backend):
+    a = np.zeros((2, 2), np.float32)
+    ints = np.zeros(3, np.int32)
+    for fn in api(backend, "full_like"):
+        check(fn(native(a, backend), 3), np.full((2, 2), 3, np.float32), backend)
+        check(fn(native(a, backend), fill_value=-0.5), np.full((2, 2), -0.5, np.float32), backend)
+        check(fn(native(ints, backend), 7), np.full(3, 7, np.int32), backend)

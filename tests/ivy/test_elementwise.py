@@ -1,0 +1,379 @@
+"""Elementwise functions against numpy float64 references, on every backend.
+
+Each function is tried on hypothesis arrays (0-d and empty included) mixed with edge values
+(±0, ±inf, nan, halves), on a fixed grid of edge values, and through both ``ivy.<name>`` (the
+framework inferred from the inputs) and the backend namespace ``xp.<name>``.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+import ivy
+from tests.helpers import HYPOTHESIS, api, cast, check, native, reference
+from tests.ivy.strategies import (
+    FLOAT_DTYPES,
+    INT_DTYPES,
+    SPECIALS,
+    arrays,
+    quarters,
+    reals,
+)
+
+pytestmark = pytest.mark.filterwarnings("ignore::RuntimeWarning")  # numpy on edge values
+
+# Few shapes: jax compiles each function once per shape and dtype. 0-d and empty arrays are among
+# them, and the edge-value arrays have 16 elements.
+SHAPES = st.sampled_from([(), (0,), (2, 3), (16,)])
+BROADCAST_PAIRS = st.sampled_from(
+    [((), ()), ((2, 3), ()), ((), (2, 3)), ((2, 3), (2, 3)), ((2, 1), (1, 3)), ((0,), (1,))]
+)
+
+# ----------------------------------------------------------------------------------------------
+# Unary functions
+# ----------------------------------------------------------------------------------------------
+
+# name, numpy reference, interesting domain [lo, hi] (the edge values are always mixed in).
+# Domains stay where float32 libm implementations are accurate (no huge trig arguments, no
+# arguments within a hair of the float32 overflow threshold); inputs outside the mathematical
+# domain (log of a negative, acos(2)) are included: the result is nan.
+UNARY = [
+    ("abs", np.abs, (-1e3, 1e3)),
+    ("acos", np.arccos, (-1.5, 1.5)),
+    ("acosh", np.arccosh, (0.5, 1e3)),
+    ("asin", np.arcsin, (-1.5, 1.5)),
+    ("asinh", np.arcsinh, (-1e3, 1e3)),
+    ("atan", np.arctan, (-1e3, 1e3)),
+    ("atanh", np.arctanh, (-1.5, 1.5)),
+    ("ceil", np.ceil, (-1e3, 1e3)),
+    ("cos", np.cos, (-100, 100)),
+    ("cosh", np.cosh, (-80, 80)),
+    ("exp", np.exp, (-80, 80)),
+    ("expm1", np.expm1, (-80, 80)),
+    ("floor", np.floor, (-1e3, 1e3)),
+    ("isfinite", np.isfinite, (-1e3, 1e3)),
+    ("isinf", np.isinf, (-1e3, 1e3)),
+    ("isnan", np.isnan, (-1e3, 1e3)),
+    ("log", np.log, (-1, 1e3)),
+    ("log10", np.log10, (-1, 1e3)),
+    ("log1p", np.log1p, (-2, 1e3)),
+    ("log2", np.log2, (-1, 1e3)),
+    ("negative", np.negative, (-1e3, 1e3)),
+    ("positive", np.positive, (-1e3, 1e3)),
+    ("round", np.round, (-1e3, 1e3)),  # numpy rounds halves to even, as the contract says
+    ("sign", np.sign, (-1e3, 1e3)),
+    ("sin", np.sin, (-100, 100)),
+    ("sinh", np.sinh, (-80, 80)),
+    ("sqrt", np.sqrt, (-1, 1e3)),
+    ("square", np.square, (-1e3, 1e3)),
+    ("tan", np.tan, (-10, 10)),
+    ("tanh", np.tanh, (-1e3, 1e3)),
+    ("trunc", np.trunc, (-1e3, 1e3)),
+]
+UNARY_REFERENCE = {name: ref for name, ref, _ in UNARY}
+# The Array API leaves the sign of sign(±0) open; every other zero result must keep its sign
+# (sin(-0) = -0, ceil(-0.5) = -0, abs(-0) = +0, ...).
+UNSIGNED_ZERO = {"sign"}
+# Integer inputs keep their dtype (rounding functions return them unchanged).
+INT_UNARY = ["abs", "ceil", "floor", "negative", "positive", "round", "sign", "square", "trunc"]
+
+
+def _unary_expected(name, a):
+    return cast(reference(UNARY_REFERENCE[name], a.astype(np.float64)), _out_dtype(name, a))
+
+
+def _out_dtype(name, a):
+    return "bool" if name in ("isfinite", "isinf", "isnan") else a.dtype.name
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+@pytest.mark.parametrize("name, ref, domain", UNARY, ids=[u[0] for u in UNARY])
+@HYPOTHESIS
+@given(data=st.data())
+def test_unary_float(backend, name, ref, domain, dtype, data):
+    a = data.draw(arrays(dtype, reals(dtype, *domain), SHAPES), label="x")
+    expected = _unary_expected(name, a)
+    for fn in api(backend, name):
+        check(fn(native(a, backend)), expected, backend, signed_zeros=name not in UNSIGNED_ZERO)
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+@pytest.mark.parametrize("name", [u[0] for u in UNARY])
+def test_unary_edge_values(backend, name, dtype):
+    a = np.array(SPECIALS + (-1e-3, 3.0, -7.25, 1e3), dtype=dtype)
+    expected = _unary_expected(name, a)
+    for fn in api(backend, name):
+        check(fn(native(a, backend)), expected, backend, signed_zeros=name not in UNSIGNED_ZERO)
+
+
+@pytest.mark.parametrize("name", INT_UNARY)
+@HYPOTHESIS
+@given(data=st.data())
+def test_unary_integer(backend, name, data):
+    a = data.draw(arrays("int64", st.integers(-1000, 1000), SHAPES), label="x")
+    expected = UNARY_REFERENCE[name](a)
+    for fn in api(backend, name):
+        check(fn(native(a, backend)), expected, backend)
+
+
+@pytest.mark.parametrize("name", INT_UNARY)
+def test_unary_int32_stays_int32(backend, name):
+    a = np.array([-7, -1, 0, 3, 1000], dtype=np.int32)
+    for fn in api(backend, name):
+        check(fn(native(a, backend)), UNARY_REFERENCE[name](a), backend)
+
+
+@HYPOTHESIS
+@given(a=arrays("bool", st.booleans(), SHAPES))
+def test_logical_not(backend, a):
+    for fn in api(backend, "logical_not"):
+        check(fn(native(a, backend)), np.logical_not(a), backend)
+
+
+@pytest.mark.parametrize("name", ["isfinite", "isinf", "isnan"])
+def test_classification_of_integers_is_all_finite(backend, name):
+    a = np.array([-3, 0, 7], dtype=np.int64)
+    expected = np.array([name == "isfinite"] * 3)
+    for fn in api(backend, name):
+        check(fn(native(a, backend)), expected, backend)
+
+
+# ----------------------------------------------------------------------------------------------
+# Binary functions
+# ----------------------------------------------------------------------------------------------
+
+
+def _wide(dtype):
+    return reals(dtype, -1e3, 1e3)
+
+
+def _ties(dtype):
+    return quarters(-2, 2) | st.sampled_from(SPECIALS)
+
+
+def _exact(dtype):  # finite multiples of 1/4: floor division and remainder are exact
+    return quarters(-10, 10)
+
+
+def _base(dtype):
+    return reals(dtype, -4, 10)
+
+
+def _exponent(dtype):
+    return reals(dtype, -5, 5)
+
+
+COMPARISONS = ["equal", "greater", "greater_equal", "less", "less_equal", "not_equal"]
+
+# name, numpy reference, strategy of x1, strategy of x2, whether zero results keep their sign
+BINARY = [
+    ("add", np.add, _wide, _wide, True),
+    ("atan2", np.arctan2, _wide, _wide, True),
+    ("divide", np.divide, _wide, _wide, True),
+    ("floor_divide", np.floor_divide, _exact, _exact, False),
+    ("maximum", np.maximum, _ties, _ties, False),
+    ("minimum", np.minimum, _ties, _ties, False),
+    ("multiply", np.multiply, _wide, _wide, True),
+    ("pow", np.power, _base, _exponent, False),
+    ("remainder", np.remainder, _exact, _exact, False),
+    ("subtract", np.subtract, _wide, _wide, True),
+] + [(name, getattr(np, name), _ties, _ties, False) for name in COMPARISONS]
+BINARY_REFERENCE = {b[0]: b[1] for b in BINARY}
+SIGNED_ZERO = {b[0] for b in BINARY if b[4]}
+# Integer inputs: name -> (strategy of x1, strategy of x2); results keep the integer dtype.
+INT_BINARY = {
+    **{
+        name: (st.integers(-20, 20), st.integers(-20, 20))
+        for name in ["add", "maximum", "minimum", "multiply", "subtract", *COMPARISONS]
+    },
+    "floor_divide": (st.integers(-20, 20), st.integers(-20, 20).filter(bool)),
+    "remainder": (st.integers(-20, 20), st.integers(-20, 20).filter(bool)),
+    "pow": (st.integers(-5, 5), st.integers(0, 5)),
+}
+LOGICAL = {
+    "logical_and": np.logical_and,
+    "logical_or": np.logical_or,
+    "logical_xor": np.logical_xor,
+}
+
+
+def _binary_expected(name, a, b, dtype):
+    out = reference(BINARY_REFERENCE[name], np.asarray(a, np.float64), np.asarray(b, np.float64))
+    return cast(out, "bool" if name in COMPARISONS else dtype)
+
+
+def _broadcastable_pair(data, dtype, elements1, elements2):
+    shape1, shape2 = data.draw(BROADCAST_PAIRS, label="shapes")
+    a = data.draw(arrays(dtype, elements1, shape1), label="x1")
+    b = data.draw(arrays(dtype, elements2, shape2), label="x2")
+    return a, b
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+@pytest.mark.parametrize(
+    "name, ref, elements1, elements2, signed", BINARY, ids=[b[0] for b in BINARY]
+)
+@HYPOTHESIS
+@given(data=st.data())
+def test_binary_float(backend, name, ref, elements1, elements2, signed, dtype, data):
+    a, b = _broadcastable_pair(data, dtype, elements1(dtype), elements2(dtype))
+    expected = _binary_expected(name, a, b, dtype)
+    for fn in api(backend, name):
+        check(fn(native(a, backend), native(b, backend)), expected, backend, signed_zeros=signed)
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+@pytest.mark.parametrize("name", [b[0] for b in BINARY])
+def test_binary_edge_values(backend, name, dtype):
+    """Every pair of edge values (finite ones for floor_divide and remainder, whose infinite
+    cases the Array API and numpy do not agree on)."""
+    values = SPECIALS + (3.0, -4.0)
+    if name in ("floor_divide", "remainder"):
+        values = [v for v in values if np.isfinite(v)]
+    pairs = np.array(list(itertools.product(values, repeat=2)), dtype=dtype)
+    a, b = pairs[:, 0], pairs[:, 1]
+    expected = _binary_expected(name, a, b, dtype)
+    for fn in api(backend, name):
+        check(
+            fn(native(a, backend), native(b, backend)),
+            expected,
+            backend,
+            signed_zeros=name in SIGNED_ZERO,
+        )
+
+
+@pytest.mark.parametrize("name", sorted(INT_BINARY))
+@HYPOTHESIS
+@given(data=st.data())
+def test_binary_integer(backend, name, data):
+    """int64 here; int32 (which must stay int32) in the tests with Python scalars below."""
+    a, b = _broadcastable_pair(data, "int64", *INT_BINARY[name])
+    expected = BINARY_REFERENCE[name](a, b)
+    for fn in api(backend, name):
+        check(fn(native(a, backend), native(b, backend)), expected, backend)
+
+
+@pytest.mark.parametrize("name", sorted(LOGICAL))
+@HYPOTHESIS
+@given(data=st.data())
+def test_logical_binary(backend, name, data):
+    a, b = _broadcastable_pair(data, "bool", st.booleans(), st.booleans())
+    for fn in api(backend, name):
+        check(fn(native(a, backend), native(b, backend)), LOGICAL[name](a, b), backend)
+
+
+# ----------------------------------------------------------------------------------------------
+# Python scalars and type promotion
+# ----------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+@pytest.mark.parametrize("name", [b[0] for b in BINARY])
+def test_binary_python_float_on_either_side_keeps_array_dtype(backend, name, dtype):
+    a = np.array([[0.5, 1.5], [2.0, 3.25]], dtype=dtype)
+    for fn in api(backend, name):
+        check(fn(native(a, backend), 2.0), _binary_expected(name, a, 2.0, dtype), backend)
+        check(fn(2.0, native(a, backend)), _binary_expected(name, 2.0, a, dtype), backend)
+
+
+@pytest.mark.parametrize("dtype", INT_DTYPES)
+@pytest.mark.parametrize("name", sorted(INT_BINARY))
+def test_binary_python_int_on_either_side_keeps_array_dtype(backend, name, dtype):
+    a = np.array([1, 2, 3, 4], dtype=dtype)
+    ref = BINARY_REFERENCE[name]
+    out_dtype = "bool" if name in COMPARISONS else dtype
+    for fn in api(backend, name):
+        check(fn(native(a, backend), 3), ref(a.astype(np.int64), 3).astype(out_dtype), backend)
+        check(fn(3, native(a, backend)), ref(3, a.astype(np.int64)).astype(out_dtype), backend)
+
+
+@pytest.mark.parametrize("name", ["add", "subtract", "multiply", "divide", "maximum", "pow"])
+def test_float32_with_float64_promotes_to_float64(backend, name):
+    a = np.array([1.5, 2.25, 3.0], dtype=np.float32)
+    b = np.array([0.5, 4.0, 1.0], dtype=np.float64)
+    expected = _binary_expected(name, a, b, "float64")
+    for fn in api(backend, name):
+        check(fn(native(a, backend), native(b, backend)), expected, backend)
+        check(
+            fn(native(b, backend), native(a, backend)),
+            _binary_expected(name, b, a, "float64"),
+            backend,
+        )
+
+
+@pytest.mark.parametrize("name", ["add", "subtract", "multiply", "maximum"])
+def test_int32_with_int64_promotes_to_int64(backend, name):
+    a = np.array([1, -2, 3], dtype=np.int32)
+    b = np.array([5, 6, -7], dtype=np.int64)
+    expected = BINARY_REFERENCE[name](a.astype(np.int64), b)
+    for fn in api(backend, name):
+        check(fn(native(a, backend), native(b, backend)), expected, backend)
+
+
+def test_floor_divide_and_remainder_follow_the_sign_of_the_divisor(backend):
+    a = np.array([7.0, -7.0, 7.0, -7.0])
+    b = np.array([2.0, 2.0, -2.0, -2.0])
+    check(ivy.floor_divide(native(a, backend), native(b, backend)), [3.0, -4.0, -4.0, 3.0], backend)
+    check(ivy.remainder(native(a, backend), native(b, backend)), [1.0, 1.0, -1.0, -1.0], backend)
+
+
+# ----------------------------------------------------------------------------------------------
+# clip
+# ----------------------------------------------------------------------------------------------
+
+
+def _clip_reference(a, lo, hi):
+    out = np.asarray(a, np.float64)
+    if lo is not None:
+        out = np.maximum(out, lo)
+    if hi is not None:
+        out = np.minimum(out, hi)
+    return out
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+@HYPOTHESIS
+@given(data=st.data())
+def test_clip_scalar_bounds(backend, dtype, data):
+    a = data.draw(arrays(dtype, reals(dtype, -10, 10), SHAPES), label="x")
+    lo = data.draw(st.none() | quarters(-5, 0), label="min")
+    hi = data.draw(st.none() | quarters(0, 5), label="max")
+    expected = cast(_clip_reference(a, lo, hi), dtype)
+    for fn in api(backend, "clip"):
+        check(fn(native(a, backend), lo, hi), expected, backend)
+        check(fn(native(a, backend), min=lo, max=hi), expected, backend)
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+def test_clip_array_bounds_broadcast(backend, dtype):
+    a = np.linspace(-3, 3, 12).reshape(3, 4).astype(dtype)
+    lo = np.array([-1.0, -2.0, 0.0, -0.5], dtype=dtype)
+    hi = np.array([[0.5], [1.0], [2.0]], dtype=dtype)
+    expected = cast(_clip_reference(a, lo, hi), dtype)
+    for fn in api(backend, "clip"):
+        check(fn(native(a, backend), native(lo, backend), native(hi, backend)), expected, backend)
+        check(
+            fn(native(a, backend), None, native(hi, backend)),
+            cast(_clip_reference(a, None, hi), dtype),
+            backend,
+        )
+
+
+def test_clip_integers_keep_their_dtype(backend):
+    a = np.array([-5, 0, 3, 9], dtype=np.int64)
+    for fn in api(backend, "clip"):
+        check(fn(native(a, backend), 0, 4), np.array([0, 0, 3, 4]), backend)
+
+
+def test_clip_propagates_nan_and_handles_infinities(backend):
+    a = np.array([np.nan, np.inf, -np.inf, 0.25], dtype=np.float32)
+    check(
+        ivy.clip(native(a, backend), -1.0, 1.0),
+        np.array([np.nan, 1.0, -1.0, 0.25], np.float32),
+        backend,
+    )

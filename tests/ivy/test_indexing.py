@@ -1,0 +1,189 @@
+"""take, gather_nd, scatter_nd and one_hot against references written with Python loops."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import ivy
+from tests.helpers import api, check, native, numpy_of
+
+DTYPES = ("float32", "float64", "int64")
+
+
+def _params(dtype, shape=(3, 4, 5)):
+    return (np.arange(math.prod(shape)).reshape(shape) * 1.5 - 7).astype(dtype)
+
+
+# ----------------------------------------------------------------------------------------------
+# take
+# ----------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("dtype", DTYPES)
+@pytest.mark.parametrize("axis", [None, 0, 1, -1])
+def test_take(backend, dtype, axis):
+    a = _params(dtype, (3, 4))
+    indices = np.array([2, 0, 2, 1], dtype=np.int64)
+    if axis is None:
+        expected = np.array([a.ravel()[i] for i in indices])
+    else:
+        expected = np.stack([np.moveaxis(a, axis, 0)[i] for i in indices], axis=axis % a.ndim)
+    for fn in api(backend, "take"):
+        check(fn(native(a, backend), native(indices, backend), axis=axis), expected, backend)
+
+
+def test_take_with_int32_indices_and_empty_indices(backend):
+    a = _params("float32", (3, 4))
+    for fn in api(backend, "take"):
+        out = fn(native(a, backend), native(np.array([3, 1], np.int32), backend), axis=1)
+        check(out, a[:, [3, 1]], backend)
+        out = fn(native(a, backend), native(np.zeros(0, np.int64), backend), axis=0)
+        check(out, np.zeros((0, 4), np.float32), backend)
+
+
+# ----------------------------------------------------------------------------------------------
+# gather_nd
+# ----------------------------------------------------------------------------------------------
+
+
+def _gather_reference(params, indices):
+    k = indices.shape[-1]
+    rows = [params[tuple(i)] for i in indices.reshape(-1, k)]
+    out_shape = indices.shape[:-1] + params.shape[k:]
+    return np.array(rows, dtype=params.dtype).reshape(out_shape)
+
+
+GATHER_INDICES = {
+    "full index, 1 batch axis": [[0, 1, 2], [2, 3, 4], [1, 0, 0]],
+    "partial index (K=2)": [[0, 1], [2, 0]],
+    "partial index (K=1)": [[2], [0], [2], [1]],
+    "2 batch axes": [[[0, 0], [1, 3]], [[2, 2], [0, 3]], [[1, 1], [1, 1]]],
+    "single tuple": [1, 2],
+}
+
+
+@pytest.mark.parametrize("dtype", DTYPES)
+@pytest.mark.parametrize("indices", list(GATHER_INDICES.values()), ids=list(GATHER_INDICES))
+def test_gather_nd(backend, dtype, indices):
+    params = _params(dtype)
+    idx = np.array(indices, dtype=np.int64)
+    expected = _gather_reference(params, idx)
+    for fn in api(backend, "gather_nd"):
+        check(fn(native(params, backend), native(idx, backend)), expected, backend)
+        check(fn(native(params, backend), native(idx.astype(np.int32), backend)), expected, backend)
+
+
+def test_gather_nd_with_list_indices(backend):
+    """The docstring example: ``gather_nd(x, [[0, 1], [2, 0]])`` -> ``[x[0, 1], x[2, 0]]``."""
+    params = _params("float32", (3, 2))
+    for fn in api(backend, "gather_nd"):
+        check(fn(native(params, backend), [[0, 1], [2, 0]]), params[[0, 2], [1, 0]], backend)
+
+
+# ----------------------------------------------------------------------------------------------
+# scatter_nd
+# ----------------------------------------------------------------------------------------------
+
+
+def _scatter_reference(indices, updates, shape, reduction):
+    """Zeros of ``shape``; each place that receives updates gets their sum / min / max."""
+    k = indices.shape[-1]
+    received: dict[tuple, list] = {}
+    flat_updates = updates.reshape((-1,) + tuple(shape[k:]))
+    for index, update in zip(indices.reshape(-1, k), flat_updates):
+        received.setdefault(tuple(index), []).append(update)
+    out = np.zeros(shape, dtype=updates.dtype)
+    combine = {"sum": np.sum, "min": np.min, "max": np.max, "replace": np.max}[reduction]
+    for index, values in received.items():
+        out[index] = combine(np.stack(values), axis=0)
+    return out, received
+
+
+# indices, updates shape, output shape: duplicates included, and untouched places.
+SCATTER_CASES = {
+    "elements, duplicates": ([[0, 1], [2, 3], [0, 1], [1, 0], [0, 1]], (5,), (3, 4)),
+    "rows (K=1), duplicates": ([[2], [0], [2]], (3, 4), (4, 4)),
+    "batched indices": ([[[0, 0], [1, 1]], [[1, 1], [2, 0]]], (2, 2), (3, 2)),
+}
+
+
+@pytest.mark.parametrize("dtype", DTYPES)
+@pytest.mark.parametrize("reduction", ["sum", "min", "max"])
+@pytest.mark.parametrize("case", list(SCATTER_CASES.values()), ids=list(SCATTER_CASES))
+def test_scatter_nd_reductions(backend, dtype, reduction, case):
+    indices, updates_shape, shape = case
+    idx = np.array(indices, dtype=np.int64)
+    updates = (np.arange(math.prod(updates_shape)).reshape(updates_shape) * 2.5 - 4).astype(dtype)
+    expected, _ = _scatter_reference(idx, updates, shape, reduction)
+    args = native(idx, backend), native(updates, backend)
+    for fn in api(backend, "scatter_nd"):
+        check(fn(*args, shape, reduction=reduction), expected, backend)
+    if reduction == "sum":  # the default
+        check(api(backend, "scatter_nd")[0](*args, shape), expected, backend)
+        check(api(backend, "scatter_nd")[0](*args, shape=list(shape)), expected, backend)
+
+
+@pytest.mark.parametrize("dtype", DTYPES)
+@pytest.mark.parametrize("case", list(SCATTER_CASES.values()), ids=list(SCATTER_CASES))
+def test_scatter_nd_replace(backend, dtype, case):
+    """'replace' writes one of the updates that land on a place (unspecified which)."""
+    indices, updates_shape, shape = case
+    idx = np.array(indices, dtype=np.int64)
+    updates = (np.arange(math.prod(updates_shape)).reshape(updates_shape) * 2.5 - 4).astype(dtype)
+    _, received = _scatter_reference(idx, updates, shape, "replace")
+    for fn in api(backend, "scatter_nd"):
+        out = fn(native(idx, backend), native(updates, backend), shape, reduction="replace")
+        check(out, _replace_expected(out, received, shape, dtype), backend)
+
+
+def _replace_expected(out, received, shape, dtype):
+    """The reference for 'replace', given which of its updates ``out`` chose at each place."""
+    got = numpy_of(out)
+    expected = np.zeros(shape, dtype)
+    for index, values in received.items():
+        chosen = [v for v in values if np.array_equal(v, got[index])]
+        assert chosen, f"scatter_nd 'replace' wrote {got[index]} at {index}, not an update"
+        expected[index] = chosen[0]
+    return expected
+
+
+@pytest.mark.parametrize("reduction", ["mean", "add", "", None])
+def test_scatter_nd_unknown_reduction_raises_value_error(backend, reduction):
+    idx = native(np.array([[0], [1]], np.int64), backend)
+    updates = native(np.array([1.0, 2.0], np.float32), backend)
+    for fn in api(backend, "scatter_nd"):
+        with pytest.raises(ValueError):
+            fn(idx, updates, (3,), reduction=reduction)
+
+
+# ----------------------------------------------------------------------------------------------
+# one_hot
+# ----------------------------------------------------------------------------------------------
+
+
+def _one_hot_reference(indices, depth, dtype):
+    out = np.zeros(indices.shape + (depth,), dtype=dtype)
+    for index in np.ndindex(indices.shape):
+        out[index + (indices[index],)] = 1
+    return out
+
+
+@pytest.mark.parametrize("indices", [[[0, 3, 1], [2, 2, 0]], [1, 0, 4], 2, []], ids=str)
+def test_one_hot_is_float32_by_default(backend, indices):
+    idx = np.array(indices, dtype=np.int64)
+    expected = _one_hot_reference(idx, 5, np.float32)
+    for fn in api(backend, "one_hot"):
+        check(fn(native(idx, backend), 5), expected, backend)
+
+
+@pytest.mark.parametrize("dtype", ["float64", "int32", "int64", "bool"])
+def test_one_hot_with_dtype(backend, dtype):
+    idx = np.array([[1, 0], [2, 1]], dtype=np.int32)
+    expected = _one_hot_reference(idx, 3, dtype)
+    for fn in api(backend, "one_hot"):
+        check(fn(native(idx, backend), 3, dtype=dtype), expected, backend)
+    xp_dtype = getattr(getattr(ivy, backend), dtype)  # the framework's own dtype object
+    check(api(backend, "one_hot")[1](native(idx, backend), 3, dtype=xp_dtype), expected, backend)

@@ -1,0 +1,187 @@
+"""Random numbers on every backend: reproducibility under ``ivy.seed``, bounds, shapes, dtypes,
+and loose statistical checks (seeded, so deterministic; bounds are many standard errors wide)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import ivy
+from tests.helpers import api, api_f, check_meta, native, numpy_of
+
+DRAWS = {
+    "random_uniform": lambda fn: fn(shape=(4, 5)),
+    "random_normal": lambda fn: fn(shape=(4, 5)),
+    "randint": lambda fn: fn(0, 1000, (4, 5)),
+}
+
+
+def _draw(backend, name, which=0):
+    """One draw of ``name`` on ``backend`` through ivy (``which=0``) or the namespace (1)."""
+    if name == "shuffle":
+        fn = api(backend, "shuffle")[which]
+        return numpy_of(fn(native(np.arange(50, dtype=np.float32), backend)))
+    return numpy_of(DRAWS[name](api_f(backend, name)[which]))
+
+
+@pytest.mark.parametrize("name", [*DRAWS, "shuffle"])
+def test_seed_makes_draws_reproducible(backend, name):
+    for which in (0, 1):
+        ivy.seed(3)
+        first = _draw(backend, name, which)
+        second = _draw(backend, name, which)
+        ivy.seed(3)
+        again = _draw(backend, name, which)
+        np.testing.assert_array_equal(first, again)
+        assert not np.array_equal(first, second), "consecutive draws are equal"
+        ivy.seed(4)
+        assert not np.array_equal(first, _draw(backend, name, which)), "seeds 3 and 4 agree"
+
+
+@pytest.mark.parametrize("name", [*DRAWS, "shuffle"])
+def test_seed_of_one_framework(backend, name):
+    ivy.seed(11, f=backend)
+    first = _draw(backend, name)
+    ivy.seed(11, f=backend)
+    np.testing.assert_array_equal(first, _draw(backend, name))
+
+
+# ----------------------------------------------------------------------------------------------
+# random_uniform
+# ----------------------------------------------------------------------------------------------
+
+
+def test_random_uniform_defaults(backend):
+    ivy.seed(0)
+    for fn in api_f(backend, "random_uniform"):
+        x = fn(shape=(2000,))
+        check_meta(x, backend, "float32", (2000,))
+        v = numpy_of(x)
+        assert v.min() >= 0.0 and v.max() < 1.0
+        assert abs(v.mean() - 0.5) < 0.05 and abs(v.std() - 12**-0.5) < 0.03
+        check_meta(fn(), backend, "float32", ())
+
+
+@pytest.mark.parametrize("dtype", ["float32", "float64"])
+def test_random_uniform_bounds_shape_and_dtype(backend, dtype):
+    ivy.seed(1)
+    for fn in api_f(backend, "random_uniform"):
+        x = fn(-2.0, 3.0, (50, 40), dtype=dtype)
+        check_meta(x, backend, dtype, (50, 40))
+        v = numpy_of(x)
+        assert v.min() >= -2.0 and v.max() < 3.0
+        assert abs(v.mean() - 0.5) < 0.25
+        assert v.min() < -1.9 and v.max() > 2.9  # the whole interval is covered
+        x = fn(low=1.0, high=1.5, shape=(3,), dtype=dtype, device="cpu")
+        assert np.all((numpy_of(x) >= 1.0) & (numpy_of(x) < 1.5))
+
+
+def test_random_uniform_with_array_bounds_broadcasts(backend):
+    """The framework comes from the bounds; the shape defaults to their broadcast shape."""
+    low = np.array([[0.0], [10.0], [-5.0]], np.float32)
+    high = np.array([10.5, 12.0], np.float32)  # broadcast: (3, 2)
+    ivy.seed(2)
+    for fn in api(backend, "random_uniform"):
+        x = fn(native(low, backend), native(high, backend))
+        check_meta(x, backend, "float32", (3, 2))
+        v = numpy_of(x)
+        lo, hi = np.broadcast_arrays(low, high)
+        assert np.all((v >= lo) & (v < hi)), v
+        x = fn(native(low, backend), 20.0, (4, 3, 1))
+        check_meta(x, backend, "float32", (4, 3, 1))
+        assert np.all((numpy_of(x) >= low) & (numpy_of(x) < 20.0))
+
+
+# ----------------------------------------------------------------------------------------------
+# random_normal
+# ----------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("dtype", ["float32", "float64"])
+def test_random_normal_moments(backend, dtype):
+    ivy.seed(5)
+    n = 20000
+    for fn in api_f(backend, "random_normal"):
+        x = fn(shape=(n,)) if dtype == "float32" else fn(shape=(n,), dtype=dtype)
+        check_meta(x, backend, dtype, (n,))
+        v = numpy_of(x).astype(np.float64)
+        assert abs(v.mean()) < 5 / n**0.5 and abs(v.std() - 1) < 0.05
+        x = fn(3.0, 0.5, (n,), dtype=dtype)
+        v = numpy_of(x).astype(np.float64)
+        assert abs(v.mean() - 3) < 5 * 0.5 / n**0.5 and abs(v.std() - 0.5) < 0.025
+        assert not np.array_equal(v[: n // 2], v[n // 2 :])
+
+
+def test_random_normal_with_array_parameters(backend):
+    mean = np.array([0.0, 100.0, -50.0], np.float32)
+    std = np.array([[1.0], [0.01]], np.float32)  # broadcast: (2, 3)
+    ivy.seed(6)
+    for fn in api(backend, "random_normal"):
+        x = fn(native(mean, backend), native(std, backend))
+        check_meta(x, backend, "float32", (2, 3))
+        assert np.all(np.abs(numpy_of(x) - mean) < 6 * std)
+        x = fn(native(mean, backend), 1.0, (1000, 3))
+        check_meta(x, backend, "float32", (1000, 3))
+        assert np.all(np.abs(numpy_of(x).mean(axis=0) - mean) < 0.2)
+
+
+# ----------------------------------------------------------------------------------------------
+# randint
+# ----------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("low, high", [(0, 5), (-3, 4), (10, 11)])
+def test_randint_bounds_and_default_int64(backend, low, high):
+    ivy.seed(7)
+    for fn in api_f(backend, "randint"):
+        x = fn(low, high, (500,))
+        check_meta(x, backend, "int64", (500,))
+        assert set(np.unique(numpy_of(x)).tolist()) == set(range(low, high))
+
+
+@pytest.mark.parametrize("dtype", ["int32", "int64"])
+def test_randint_dtype_and_shape(backend, dtype):
+    ivy.seed(8)
+    for fn in api_f(backend, "randint"):
+        x = fn(low=-100, high=100, shape=(3, 4, 2), dtype=dtype, device="cpu")
+        check_meta(x, backend, dtype, (3, 4, 2))
+        assert numpy_of(x).min() >= -100 and numpy_of(x).max() < 100
+
+
+def test_randint_with_array_bounds(backend):
+    low = np.array([0, 100, -10], np.int64)
+    high = np.array([2, 105, -9], np.int64)
+    ivy.seed(9)
+    for fn in api(backend, "randint"):
+        x = fn(native(low, backend), native(high, backend), (200, 3))
+        check_meta(x, backend, "int64", (200, 3))
+        v = numpy_of(x)
+        assert np.all((v >= low) & (v < high))
+
+
+# ----------------------------------------------------------------------------------------------
+# shuffle
+# ----------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("dtype", ["float32", "float64", "int64"])
+def test_shuffle_permutes_the_first_axis(backend, dtype):
+    ivy.seed(10)
+    a = np.arange(40).reshape(20, 2).astype(dtype)
+    for fn in api(backend, "shuffle"):
+        x = fn(native(a, backend))
+        check_meta(x, backend, dtype, (20, 2))
+        v = numpy_of(x)
+        assert not np.array_equal(v, a), "shuffle returned the rows in their order"
+        order = np.argsort(v[:, 0])
+        np.testing.assert_array_equal(v[order], a)  # rows are intact, each exactly once
+        v1 = numpy_of(fn(native(a[:, 0], backend)))
+        np.testing.assert_array_equal(np.sort(v1), a[:, 0])
+
+
+def test_shuffle_of_tiny_arrays(backend):
+    for fn in api(backend, "shuffle"):
+        for a in (np.zeros((0, 3), np.float32), np.array([4.5], np.float32)):
+            x = fn(native(a, backend))
+            check_meta(x, backend, "float32", a.shape)
+            np.testing.assert_array_equal(numpy_of(x), a)
