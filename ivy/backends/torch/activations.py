@@ -1,0 +1,23 @@
+"""torch backend: the activations with a kernel of their own (the rest are compositions)."""
+
+from __future__ import annotations
+
+import torch
+import torch.nn.functional as F
+
+__all__ = ["relu", "gelu", "sigmoid", "softmax", "log_softmax"]
+
+relu = torch.relu
+sigmoid = torch.sigmoid
+
+
+def gelu(x, /, approximate=False):
+    return F.gelu(x, approximate="tanh" if approximate else "none")
+
+
+def softmax(x, /, axis=-1):
+    return torch.softmax(x, axis)
+
+
+def log_softmax(x, /, axis=-1):
+    return torch.log_softmax(x, axis)
