@@ -2,11 +2,28 @@
 
 from __future__ import annotations
 
+from ivy import framework_handler as _fh
+from ivy.core._by_hand import by_hand
 from ivy.core._dispatch import alias, dispatch
 
 __all__ = [
-    "asarray", "array", "zeros", "ones", "empty", "full", "arange", "linspace", "eye",
-    "zeros_like", "ones_like", "empty_like", "full_like",
+    "asarray",
+    "array",
+    "zeros",
+    "ones",
+    "empty",
+    "full",
+    "arange",
+    "linspace",
+    "eye",
+    "zeros_like",
+    "ones_like",
+    "empty_like",
+    "full_like",
+    "from_dlpack",
+    "meshgrid",
+    "tril",
+    "triu",
 ]
 
 
@@ -77,3 +94,33 @@ def empty_like(x, /, *, dtype=None, device=None, f=None):
 @dispatch
 def full_like(x, /, fill_value, *, dtype=None, device=None, f=None):
     """Array shaped like ``x`` filled with ``fill_value``, with the dtype of ``x`` by default."""
+
+
+@dispatch
+def from_dlpack(x, /, *, device=None, copy=None, f=None):
+    """An array of the chosen framework sharing the memory of ``x``, any object with
+    ``__dlpack__`` (torch, jax, numpy, tensorflow arrays...): choose the framework with ``f``.
+
+    ``copy=True`` always copies, ``copy=False`` never does (raising if it would have to), ``None``
+    copies only if needed. Example: ``ivy.from_dlpack(torch_tensor, f='jax')``.
+    """
+
+
+@by_hand
+def meshgrid(*arrays, indexing="xy", f=None):
+    """List of coordinate arrays from 1-D ``arrays``: with ``indexing='xy'`` (Cartesian) the first
+    two output axes are swapped, with ``'ij'`` (matrix) output axis i follows ``arrays[i]``.
+
+    Example: ``[a.shape for a in ivy.meshgrid(np.ones(3), np.ones(2))]`` -> ``[(2, 3), (2, 3)]``.
+    """
+    return _fh.get_framework(*arrays, f=f).meshgrid(*arrays, indexing=indexing)
+
+
+@dispatch
+def tril(x, /, *, k=0, f=None):
+    """``x`` (a matrix or a stack of them) with the elements above diagonal ``k`` zeroed."""
+
+
+@dispatch
+def triu(x, /, *, k=0, f=None):
+    """``x`` (a matrix or a stack of them) with the elements below diagonal ``k`` zeroed."""

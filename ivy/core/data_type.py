@@ -1,15 +1,106 @@
-"""Data types. Dtypes may be given as strings ('float32') or as the framework's objects."""
+"""Data types. Dtypes may be given as strings ('float32') or as the framework's objects.
+
+``can_cast``, ``finfo``, ``iinfo``, ``isdtype`` and ``result_type`` take dtypes rather than
+arrays. The framework comes from ``f``, else the global framework, else the arrays and native
+dtype objects among the arguments (``torch.float32`` picks torch, ``np.float32`` numpy); with none
+of these (dtype names, Python scalars) they answer without any framework, by ivy's own rules
+(``ivy.core._dtype_rules``): ``ivy.finfo('float32').eps`` needs no framework installed.
+
+Type promotion follows the Array API's table within a kind. Across kinds, which the standard
+leaves open, each backend answers as its own functions compute (numpy: int64 with float32 gives
+float64; torch, jax and tensorflow: float32), and the framework-independent rules as torch does.
+"""
 
 from __future__ import annotations
 
+from ivy.core import _dtype_rules as _rules
+from ivy.core._by_hand import by_hand, framework_or_none
 from ivy.core._dispatch import alias, dispatch
 
-__all__ = ["astype", "cast"]
+__all__ = ["astype", "can_cast", "cast", "finfo", "iinfo", "isdtype", "result_type"]
+
+_SCALARS = (bool, int, float, complex)
 
 
 @dispatch
-def astype(x, dtype, /, *, copy=True, f=None):
-    """``x`` converted to ``dtype``. Example: ``ivy.astype(x, 'float64')``."""
+def astype(x, dtype, /, *, copy=True, device=None, f=None):
+    """``x`` converted to ``dtype`` (and moved to ``device`` if given). Example:
+    ``ivy.astype(x, 'float64')``."""
 
 
 cast = alias("cast", astype)
+
+
+@by_hand
+def can_cast(from_, to, /, *, f=None):
+    """Whether ``from_`` (a dtype or an array) promotes with dtype ``to`` to ``to``, i.e. casts
+    to it by the type promotion rules.
+
+    Example: ``ivy.can_cast('int8', 'int16')`` -> True; ``ivy.can_cast('float64', 'float32')``
+    -> False.
+    """
+    ns = framework_or_none(from_, to, f=f)
+    if ns is None:
+        return _rules.can_cast(_rules.name_of(from_), _rules.name_of(to))
+    return ns.can_cast(from_, to)
+
+
+@by_hand
+def finfo(type, /, *, f=None):  # noqa: A002 - the Array API name
+    """Machine limits of a floating dtype (or of an array's dtype; complex: of its real part).
+
+    Returns:
+        An object with ``bits``, ``eps``, ``max``, ``min``, ``smallest_normal`` (Python numbers)
+        and ``dtype``: the framework's dtype, or the dtype's name when no framework is involved.
+
+    Example: ``ivy.finfo('float32').eps`` -> 1.1920928955078125e-07.
+    """
+    ns = framework_or_none(type, f=f)
+    if ns is None:
+        return _rules.finfo(_rules.name_of(type))
+    return ns.finfo(type)
+
+
+@by_hand
+def iinfo(type, /, *, f=None):  # noqa: A002 - the Array API name
+    """Machine limits of an integer dtype (or of an array's dtype).
+
+    Returns:
+        An object with ``bits``, ``max``, ``min`` (Python ints) and ``dtype``: the framework's
+        dtype, or the dtype's name when no framework is involved.
+
+    Example: ``ivy.iinfo('int8').min`` -> -128.
+    """
+    ns = framework_or_none(type, f=f)
+    if ns is None:
+        return _rules.iinfo(_rules.name_of(type))
+    return ns.iinfo(type)
+
+
+@by_hand
+def isdtype(dtype, kind, *, f=None):
+    """Whether ``dtype`` is of ``kind``: a dtype, one of ``'bool'``, ``'signed integer'``,
+    ``'unsigned integer'``, ``'integral'``, ``'real floating'``, ``'complex floating'``,
+    ``'numeric'``, or a tuple of these (any of them).
+
+    Example: ``ivy.isdtype('float32', ('integral', 'real floating'))`` -> True.
+    """
+    ns = framework_or_none(dtype, kind, f=f)
+    if ns is None:
+        return _rules.isdtype(_rules.name_of(dtype), kind)
+    return ns.isdtype(dtype, kind)
+
+
+@by_hand
+def result_type(*arrays_and_dtypes, f=None):
+    """The dtype that an operation on ``arrays_and_dtypes`` (arrays, dtypes and Python scalars;
+    at least one array or dtype) gives by the type promotion rules.
+
+    Example: ``ivy.result_type('int8', 'uint8')`` -> ``'int16'``; with a framework, its dtype.
+    """
+    ns = framework_or_none(*arrays_and_dtypes, f=f)
+    if ns is None:
+        names = [_rules.name_of(a) for a in arrays_and_dtypes if not isinstance(a, _SCALARS)]
+        scalars = [a for a in arrays_and_dtypes if isinstance(a, _SCALARS)]
+        return _rules.result_type(names, scalars)
+    return ns.result_type(*arrays_and_dtypes)

@@ -17,8 +17,16 @@ __all__ = [
     "atan",
     "atan2",
     "atanh",
+    "bitwise_and",
+    "bitwise_invert",
+    "bitwise_left_shift",
+    "bitwise_or",
+    "bitwise_right_shift",
+    "bitwise_xor",
     "ceil",
     "clip",
+    "conj",
+    "copysign",
     "cos",
     "cosh",
     "divide",
@@ -29,6 +37,8 @@ __all__ = [
     "floor_divide",
     "greater",
     "greater_equal",
+    "hypot",
+    "imag",
     "isfinite",
     "isinf",
     "isnan",
@@ -38,6 +48,7 @@ __all__ = [
     "log10",
     "log1p",
     "log2",
+    "logaddexp",
     "logical_and",
     "logical_not",
     "logical_or",
@@ -46,12 +57,16 @@ __all__ = [
     "minimum",
     "multiply",
     "negative",
+    "nextafter",
     "not_equal",
     "positive",
     "pow",
+    "real",
+    "reciprocal",
     "remainder",
     "round",
     "sign",
+    "signbit",
     "sin",
     "sinh",
     "sqrt",
@@ -324,3 +339,78 @@ def clip(x, /, min=None, max=None, *, f=None):
 
     Example: ``ivy.clip(np.array([-1., 2.]), 0, 1, f='torch')`` -> tensor([0., 1.]).
     """
+
+
+@dispatch
+def bitwise_invert(x, /, *, f=None):
+    """Bitwise NOT of an integer or bool ``x`` (for bools: logical NOT)."""
+
+
+@dispatch
+def conj(x, /, *, f=None):
+    """Complex conjugate (real inputs are returned unchanged)."""
+
+
+@dispatch
+def imag(x, /, *, f=None):
+    """Imaginary part of a complex ``x``, as a real array of the same precision."""
+
+
+@dispatch
+def real(x, /, *, f=None):
+    """Real part of a complex ``x``, as a real array of the same precision (real ``x``: itself)."""
+
+
+@dispatch
+def reciprocal(x, /, *, f=None):
+    """1 / x, for floating ``x`` (Array API 2024.12)."""
+
+
+@dispatch
+def signbit(x, /, *, f=None):
+    """True where the sign bit of a floating ``x`` is set: -0.0 and negative NaNs included."""
+
+
+@dispatch("x1", "x2")
+def bitwise_and(x1, x2, /, *, f=None):
+    """Bitwise AND of integers or bools."""
+
+
+@dispatch("x1", "x2")
+def bitwise_left_shift(x1, x2, /, *, f=None):
+    """Integers ``x1`` shifted left by ``x2`` bits (``x2`` nonnegative)."""
+
+
+@dispatch("x1", "x2")
+def bitwise_or(x1, x2, /, *, f=None):
+    """Bitwise OR of integers or bools."""
+
+
+@dispatch("x1", "x2")
+def bitwise_right_shift(x1, x2, /, *, f=None):
+    """Integers ``x1`` shifted right by ``x2`` bits (arithmetic: the sign is kept)."""
+
+
+@dispatch("x1", "x2")
+def bitwise_xor(x1, x2, /, *, f=None):
+    """Bitwise XOR of integers or bools."""
+
+
+@dispatch("x1", "x2")
+def copysign(x1, x2, /, *, f=None):
+    """The magnitude of ``x1`` with the sign of ``x2`` (the sign bit: -0.0 counts as negative)."""
+
+
+@dispatch("x1", "x2")
+def hypot(x1, x2, /, *, f=None):
+    """sqrt(x1**2 + x2**2), without overflow or underflow; inf if either is infinite."""
+
+
+@dispatch("x1", "x2")
+def logaddexp(x1, x2, /, *, f=None):
+    """log(exp(x1) + exp(x2)), without overflow."""
+
+
+@dispatch("x1", "x2")
+def nextafter(x1, x2, /, *, f=None):
+    """The next representable floating value after ``x1`` toward ``x2`` (Array API 2024.12)."""

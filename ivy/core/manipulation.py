@@ -2,11 +2,29 @@
 
 from __future__ import annotations
 
+from ivy import framework_handler as _fh
+from ivy.core._by_hand import by_hand
 from ivy.core._dispatch import alias, dispatch
 
 __all__ = [
-    "reshape", "permute_dims", "transpose", "concat", "concatenate", "stack", "unstack", "split",
-    "squeeze", "expand_dims", "flip", "tile", "repeat", "roll", "swapaxes", "broadcast_to",
+    "reshape",
+    "permute_dims",
+    "transpose",
+    "concat",
+    "concatenate",
+    "stack",
+    "unstack",
+    "split",
+    "squeeze",
+    "expand_dims",
+    "flip",
+    "tile",
+    "repeat",
+    "roll",
+    "swapaxes",
+    "broadcast_to",
+    "broadcast_arrays",
+    "moveaxis",
 ]
 
 
@@ -90,3 +108,19 @@ def swapaxes(x, axis0, axis1, /, *, f=None):
 @dispatch
 def broadcast_to(x, /, shape, *, f=None):
     """Broadcast ``x`` to ``shape``."""
+
+
+@by_hand
+def broadcast_arrays(*arrays, f=None):
+    """List of ``arrays`` broadcast against each other to one shape.
+
+    Example: ``[a.shape for a in ivy.broadcast_arrays(np.ones((2, 1)), np.ones(3))]`` ->
+    ``[(2, 3), (2, 3)]``.
+    """
+    return _fh.get_framework(*arrays, f=f).broadcast_arrays(*arrays)
+
+
+@dispatch
+def moveaxis(x, source, destination, /, *, f=None):
+    """``x`` with axes ``source`` (an int or tuple) moved to positions ``destination``, the other
+    axes keeping their order."""

@@ -7,7 +7,17 @@ from __future__ import annotations
 
 from ivy.core._dispatch import dispatch
 
-__all__ = ["sum", "prod", "mean", "min", "max", "var", "std"]
+__all__ = [
+    "sum",
+    "prod",
+    "mean",
+    "min",
+    "max",
+    "var",
+    "std",
+    "cumulative_sum",
+    "cumulative_prod",
+]
 
 
 @dispatch
@@ -43,3 +53,18 @@ def var(x, /, *, axis=None, correction=0.0, keepdims=False, f=None):
 @dispatch
 def std(x, /, *, axis=None, correction=0.0, keepdims=False, f=None):
     """Standard deviation over ``axis``, dividing by ``N - correction``."""
+
+
+@dispatch
+def cumulative_sum(x, /, *, axis=None, dtype=None, include_initial=False, f=None):
+    """Running sums along ``axis`` (None only for 1-D ``x``), starting with 0 when
+    ``include_initial``. Bools and signed integers accumulate in int64, unsigned ones in uint64.
+
+    Example: ``ivy.cumulative_sum(np.array([1, 2, 3]))`` -> ``[1, 3, 6]``.
+    """
+
+
+@dispatch
+def cumulative_prod(x, /, *, axis=None, dtype=None, include_initial=False, f=None):
+    """Running products along ``axis`` (None only for 1-D ``x``), starting with 1 when
+    ``include_initial``; dtypes as :func:`cumulative_sum` (Array API 2024.12)."""

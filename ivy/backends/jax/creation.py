@@ -28,6 +28,10 @@ __all__ = [
     "ones_like",
     "empty_like",
     "full_like",
+    "from_dlpack",
+    "meshgrid",
+    "tril",
+    "triu",
 ]
 
 # Python floats and complexes are float32 / complex64 by default, whatever jax's x64 setting.
@@ -122,3 +126,14 @@ def empty_like(x, /, *, dtype=None, device=None):
 
 def full_like(x, /, fill_value, *, dtype=None, device=None):
     return jnp.full_like(x, fill_value, native_dtype(dtype), device=native_device(device))
+
+
+meshgrid = jnp.meshgrid  # a list, as the Array API (2023.12) says
+tril = jnp.tril
+triu = jnp.triu
+
+
+def from_dlpack(x, /, *, device=None, copy=None):
+    out = jax.dlpack.from_dlpack(x, device=native_device(device), copy=copy)
+    # jax 0.10 shares a torch tensor's memory even with copy=True: copy it here.
+    return jnp.array(out, copy=True) if copy else out

@@ -1,13 +1,48 @@
-"""jax backend: dtype conversion."""
+"""jax backend: data types. ``result_type`` is jax's own (its promotion lattice: int64 with
+float32 gives float32, Python scalars are weak); ``can_cast`` follows that same promotion (jax's
+own ``can_cast`` uses numpy's rules instead). ``finfo`` and ``iinfo`` return Python numbers and
+jax's dtype objects, as the Array API asks."""
 
 from __future__ import annotations
 
 import jax.numpy as jnp
+import numpy as np
 
-from ivy.backends.jax._helpers import native_dtype
+from ivy.backends.jax._helpers import NATIVE_DTYPES, native_device, native_dtype
+from ivy.core import _dtype_rules as rules
 
-__all__ = ["astype"]
+__all__ = ["astype", "can_cast", "finfo", "iinfo", "isdtype", "result_type"]
+
+result_type = jnp.result_type
 
 
-def astype(x, dtype, /, *, copy=True):
-    return jnp.astype(x, native_dtype(dtype), copy=copy)
+def astype(x, dtype, /, *, copy=True, device=None):
+    return jnp.astype(x, native_dtype(dtype), copy=copy, device=native_device(device))
+
+
+def _dtype(dtype_or_array) -> np.dtype:
+    dt = getattr(dtype_or_array, "dtype", None)
+    if isinstance(dt, np.dtype):  # an array (jax's dtypes are classes with a dtype attribute)
+        return dt
+    return np.dtype(native_dtype(dtype_or_array))
+
+
+def _name(dtype_or_array) -> str:
+    return rules.name_of(_dtype(dtype_or_array))
+
+
+def can_cast(from_, to, /):
+    to = _dtype(to)
+    return jnp.promote_types(_dtype(from_), to) == to
+
+
+def finfo(type, /):
+    return rules.finfo(_name(type), NATIVE_DTYPES.__getitem__)
+
+
+def iinfo(type, /):
+    return rules.iinfo(_name(type), NATIVE_DTYPES.__getitem__)
+
+
+def isdtype(dtype, kind):
+    return rules.isdtype(_name(dtype), kind, _name)

@@ -17,8 +17,16 @@ __all__ = [
     "atan",
     "atan2",
     "atanh",
+    "bitwise_and",
+    "bitwise_invert",
+    "bitwise_left_shift",
+    "bitwise_or",
+    "bitwise_right_shift",
+    "bitwise_xor",
     "ceil",
     "clip",
+    "conj",
+    "copysign",
     "cos",
     "cosh",
     "divide",
@@ -29,6 +37,8 @@ __all__ = [
     "floor_divide",
     "greater",
     "greater_equal",
+    "hypot",
+    "imag",
     "isfinite",
     "isinf",
     "isnan",
@@ -38,6 +48,7 @@ __all__ = [
     "log10",
     "log1p",
     "log2",
+    "logaddexp",
     "logical_and",
     "logical_not",
     "logical_or",
@@ -46,12 +57,16 @@ __all__ = [
     "minimum",
     "multiply",
     "negative",
+    "nextafter",
     "not_equal",
     "positive",
     "pow",
+    "real",
+    "reciprocal",
     "remainder",
     "round",
     "sign",
+    "signbit",
     "sin",
     "sinh",
     "sqrt",
@@ -71,8 +86,16 @@ asinh = jnp.asinh
 atan = jnp.atan
 atan2 = jnp.atan2
 atanh = jnp.atanh
+bitwise_and = jnp.bitwise_and
+bitwise_invert = jnp.bitwise_invert
+bitwise_left_shift = jnp.bitwise_left_shift
+bitwise_or = jnp.bitwise_or
+bitwise_right_shift = jnp.bitwise_right_shift
+bitwise_xor = jnp.bitwise_xor
 ceil = jnp.ceil
 clip = jnp.clip  # with no bounds it returns x itself: jax arrays are immutable
+conj = jnp.conj
+copysign = jnp.copysign
 cos = jnp.cos
 cosh = jnp.cosh
 divide = jnp.divide
@@ -83,6 +106,8 @@ floor = jnp.floor
 floor_divide = jnp.floor_divide
 greater = jnp.greater
 greater_equal = jnp.greater_equal
+hypot = jnp.hypot
+imag = jnp.imag
 isfinite = jnp.isfinite
 isinf = jnp.isinf
 isnan = jnp.isnan
@@ -92,6 +117,7 @@ log = jnp.log
 log10 = jnp.log10
 log1p = jnp.log1p
 log2 = jnp.log2
+logaddexp = jnp.logaddexp
 logical_and = jnp.logical_and
 logical_not = jnp.logical_not
 logical_or = jnp.logical_or
@@ -100,12 +126,16 @@ maximum = jnp.maximum
 minimum = jnp.minimum
 multiply = jnp.multiply
 negative = jnp.negative
+nextafter = jnp.nextafter
 not_equal = jnp.not_equal
 positive = jnp.positive
 pow = jnp.pow
+real = jnp.real
+reciprocal = jnp.reciprocal
 remainder = jnp.remainder
 round = jnp.round
 sign = jnp.sign
+signbit = jnp.signbit
 sin = jnp.sin
 sinh = jnp.sinh
 sqrt = jnp.sqrt

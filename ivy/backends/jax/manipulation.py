@@ -23,6 +23,8 @@ __all__ = [
     "roll",
     "swapaxes",
     "broadcast_to",
+    "broadcast_arrays",
+    "moveaxis",
 ]
 
 reshape = jnp.reshape
@@ -62,3 +64,7 @@ def split(x, /, num_or_size_splits=None, *, axis=0):
 
 def expand_dims(x, /, *, axis=0):
     return jnp.expand_dims(x, axis)
+
+
+broadcast_arrays = jnp.broadcast_arrays  # a list, as the Array API (2023.12) says
+moveaxis = jnp.moveaxis

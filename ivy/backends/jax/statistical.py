@@ -4,9 +4,19 @@ from __future__ import annotations
 
 import jax.numpy as jnp
 
-from ivy.backends.jax._helpers import native_dtype
+from ivy.backends.jax._helpers import default_int, native_dtype
 
-__all__ = ["sum", "prod", "mean", "min", "max", "var", "std"]
+__all__ = [
+    "sum",
+    "prod",
+    "mean",
+    "min",
+    "max",
+    "var",
+    "std",
+    "cumulative_sum",
+    "cumulative_prod",
+]
 
 mean = jnp.mean
 min = jnp.min
@@ -21,3 +31,19 @@ def sum(x, /, *, axis=None, dtype=None, keepdims=False):
 
 def prod(x, /, *, axis=None, dtype=None, keepdims=False):
     return jnp.prod(x, axis=axis, dtype=native_dtype(dtype), keepdims=keepdims)
+
+
+cumulative_sum = jnp.cumulative_sum
+
+
+def cumulative_prod(x, /, *, axis=None, dtype=None, include_initial=False):
+    """jax.numpy's own, with integers and bools accumulated in the default (unsigned) integer as
+    ``cumulative_sum`` does (jax keeps int8 products in int8)."""
+    x = jnp.asarray(x)
+    if dtype is None and (x.dtype == jnp.bool_ or jnp.issubdtype(x.dtype, jnp.integer)):
+        dtype = default_int()
+        if jnp.issubdtype(x.dtype, jnp.unsignedinteger):
+            dtype = jnp.uint64 if dtype == jnp.int64 else jnp.uint32
+    return jnp.cumulative_prod(
+        x, axis=axis, dtype=native_dtype(dtype), include_initial=include_initial
+    )

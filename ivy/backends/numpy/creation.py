@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ivy.backends._dlpack import exportable
 from ivy.backends.numpy._helpers import (
     check_device,
     default_dtype_of_value,
@@ -24,6 +25,10 @@ __all__ = [
     "ones_like",
     "empty_like",
     "full_like",
+    "from_dlpack",
+    "meshgrid",
+    "tril",
+    "triu",
 ]
 
 _DOWNCAST = {np.dtype(np.float64): np.float32, np.dtype(np.complex128): np.complex64}
@@ -108,3 +113,20 @@ def empty_like(x, /, *, dtype=None, device=None):
 def full_like(x, /, fill_value, *, dtype=None, device=None):
     check_device(device)
     return np.full_like(x, fill_value, dtype=native_dtype(dtype))
+
+
+tril = np.tril
+triu = np.triu
+
+
+def from_dlpack(x, /, *, device=None, copy=None):
+    check_device(device)
+    x, copy_after = exportable(x)
+    if copy_after:
+        out = np.from_dlpack(x)
+        return out.copy() if copy else out
+    return np.from_dlpack(x, copy=copy)
+
+
+def meshgrid(*arrays, indexing="xy"):
+    return list(np.meshgrid(*arrays, indexing=indexing))

@@ -1,11 +1,39 @@
-"""numpy backend: dtype conversion."""
+"""numpy backend: data types. ``can_cast`` and ``result_type`` are numpy's own (mixed kinds promote
+as numpy does: int64 with float32 gives float64); ``finfo``, ``iinfo`` and ``isdtype`` accept
+dtype names too and return Python numbers, as the Array API asks."""
 
 from __future__ import annotations
 
-from ivy.backends.numpy._helpers import native_dtype
+import numpy as np
 
-__all__ = ["astype"]
+from ivy.backends.numpy._helpers import NATIVE_DTYPES, check_device, dtype_name, native_dtype
+from ivy.core import _dtype_rules as rules
+
+__all__ = ["astype", "can_cast", "finfo", "iinfo", "isdtype", "result_type"]
+
+can_cast = np.can_cast
+result_type = np.result_type
 
 
-def astype(x, dtype, /, *, copy=True):
+def astype(x, dtype, /, *, copy=True, device=None):
+    check_device(device)
     return x.astype(native_dtype(dtype), copy=copy)
+
+
+def _name(dtype_or_array) -> str:
+    dt = getattr(dtype_or_array, "dtype", None)
+    if dt is not None and not isinstance(dtype_or_array, type):
+        return dtype_name(dt)
+    return dtype_name(native_dtype(dtype_or_array))
+
+
+def finfo(type, /):
+    return rules.finfo(_name(type), NATIVE_DTYPES.__getitem__)
+
+
+def iinfo(type, /):
+    return rules.iinfo(_name(type), NATIVE_DTYPES.__getitem__)
+
+
+def isdtype(dtype, kind):
+    return rules.isdtype(_name(dtype), kind, _name)

@@ -14,8 +14,16 @@ __all__ = [
     "atan",
     "atan2",
     "atanh",
+    "bitwise_and",
+    "bitwise_invert",
+    "bitwise_left_shift",
+    "bitwise_or",
+    "bitwise_right_shift",
+    "bitwise_xor",
     "ceil",
     "clip",
+    "conj",
+    "copysign",
     "cos",
     "cosh",
     "divide",
@@ -26,6 +34,8 @@ __all__ = [
     "floor_divide",
     "greater",
     "greater_equal",
+    "hypot",
+    "imag",
     "isfinite",
     "isinf",
     "isnan",
@@ -35,6 +45,7 @@ __all__ = [
     "log10",
     "log1p",
     "log2",
+    "logaddexp",
     "logical_and",
     "logical_not",
     "logical_or",
@@ -43,12 +54,16 @@ __all__ = [
     "minimum",
     "multiply",
     "negative",
+    "nextafter",
     "not_equal",
     "positive",
     "pow",
+    "real",
+    "reciprocal",
     "remainder",
     "round",
     "sign",
+    "signbit",
     "sin",
     "sinh",
     "sqrt",
@@ -68,7 +83,15 @@ asinh = np.asinh
 atan = np.atan
 atan2 = np.atan2
 atanh = np.atanh
+bitwise_and = np.bitwise_and
+bitwise_invert = np.bitwise_invert
+bitwise_left_shift = np.bitwise_left_shift
+bitwise_or = np.bitwise_or
+bitwise_right_shift = np.bitwise_right_shift
+bitwise_xor = np.bitwise_xor
 ceil = np.ceil
+conj = np.conj
+copysign = np.copysign
 cos = np.cos
 cosh = np.cosh
 divide = np.divide
@@ -79,6 +102,8 @@ floor = np.floor
 floor_divide = np.floor_divide
 greater = np.greater
 greater_equal = np.greater_equal
+hypot = np.hypot
+imag = np.imag
 isfinite = np.isfinite
 isinf = np.isinf
 isnan = np.isnan
@@ -88,6 +113,7 @@ log = np.log
 log10 = np.log10
 log1p = np.log1p
 log2 = np.log2
+logaddexp = np.logaddexp
 logical_and = np.logical_and
 logical_not = np.logical_not
 logical_or = np.logical_or
@@ -96,12 +122,16 @@ maximum = np.maximum
 minimum = np.minimum
 multiply = np.multiply
 negative = np.negative
+nextafter = np.nextafter
 not_equal = np.not_equal
 positive = np.positive
 pow = np.pow
+real = np.real
+reciprocal = np.reciprocal
 remainder = np.remainder
 round = np.round
 sign = np.sign
+signbit = np.signbit
 sin = np.sin
 sinh = np.sinh
 sqrt = np.sqrt

@@ -20,6 +20,8 @@ __all__ = [
     "roll",
     "swapaxes",
     "broadcast_to",
+    "broadcast_arrays",
+    "moveaxis",
 ]
 
 
@@ -97,3 +99,10 @@ def swapaxes(x, axis0, axis1, /):
 
 def broadcast_to(x, /, shape):
     return np.broadcast_to(x, shape)
+
+
+moveaxis = np.moveaxis
+
+
+def broadcast_arrays(*arrays):
+    return list(np.broadcast_arrays(*arrays))

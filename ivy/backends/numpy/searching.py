@@ -4,7 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["argmax", "argmin", "where"]
+__all__ = [
+    "argmax",
+    "argmin",
+    "where",
+    "count_nonzero",
+    "nonzero",
+    "searchsorted",
+]
 
 
 def argmax(x, /, *, axis=None, keepdims=False):
@@ -16,3 +23,6 @@ def argmin(x, /, *, axis=None, keepdims=False):
 
 
 where = np.where
+count_nonzero = np.count_nonzero  # int64 (numpy's intp)
+nonzero = np.nonzero  # a tuple of int64 index arrays; 0-d input raises
+searchsorted = np.searchsorted

@@ -6,7 +6,17 @@ import numpy as np
 
 from ivy.backends.numpy._helpers import native_dtype
 
-__all__ = ["sum", "prod", "mean", "min", "max", "var", "std"]
+__all__ = [
+    "sum",
+    "prod",
+    "mean",
+    "min",
+    "max",
+    "var",
+    "std",
+    "cumulative_sum",
+    "cumulative_prod",
+]
 
 
 def sum(x, /, *, axis=None, dtype=None, keepdims=False):
@@ -35,3 +45,7 @@ def var(x, /, *, axis=None, correction=0.0, keepdims=False):
 
 def std(x, /, *, axis=None, correction=0.0, keepdims=False):
     return np.std(x, axis=axis, ddof=correction, keepdims=keepdims)
+
+
+cumulative_sum = np.cumulative_sum
+cumulative_prod = np.cumulative_prod

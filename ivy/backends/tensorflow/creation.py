@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import numpy as np
 import tensorflow as tf
 
 from ivy.backends.tensorflow._helpers import (
+    TENSOR_TYPES,
     default_dtype_of_value,
     native_dtype,
     placed,
@@ -14,9 +16,23 @@ from ivy.backends.tensorflow._helpers import (
 )
 
 __all__ = [
-    "asarray", "zeros", "ones", "empty", "full", "arange", "linspace", "eye",
-    "zeros_like", "ones_like", "empty_like", "full_like",
-]  # fmt: skip
+    "asarray",
+    "zeros",
+    "ones",
+    "empty",
+    "full",
+    "arange",
+    "linspace",
+    "eye",
+    "zeros_like",
+    "ones_like",
+    "empty_like",
+    "full_like",
+    "from_dlpack",
+    "meshgrid",
+    "tril",
+    "triu",
+]
 
 
 def asarray(obj, /, *, dtype=None, device=None, copy=None):
@@ -108,3 +124,57 @@ def full_like(x, /, fill_value, *, dtype=None, device=None):
     x = tensor(x)
     with placed(device):
         return tf.fill(tf.shape(x), tensor_of(fill_value, native_dtype(dtype) or x.dtype))
+
+
+meshgrid = tf.meshgrid  # a list, as the Array API (2023.12) says
+
+
+def from_dlpack(x, /, *, device=None, copy=None):
+    """tf tensors are immutable. ``copy=None`` shares the producer's memory where tf can (then a
+    later in-place change of, say, a torch tensor shows through); ``copy=True`` never shares.
+    CPU memory that is not 64-byte aligned is copied (tf's kernels abort the process on it), and
+    so refused with ``copy=False``."""
+    if isinstance(x, TENSOR_TYPES):
+        out = tf.identity(x) if copy else tf.convert_to_tensor(x)
+    elif x.__dlpack_device__()[0] == _DLPACK_CPU:
+        view = np.from_dlpack(x)
+        if copy:
+            out = tf.constant(np.array(view))
+        elif view.ctypes.data % 64:
+            if copy is False:
+                raise BufferError(
+                    "from_dlpack: copy=False, but tensorflow needs 64-byte aligned memory and "
+                    "this buffer is not: pass copy=None to allow a copy."
+                )
+            out = tf.constant(view)  # tf copies unaligned data into a buffer of its own
+        else:
+            out = tf.experimental.dlpack.from_dlpack(x.__dlpack__())
+    else:
+        out = tf.experimental.dlpack.from_dlpack(x.__dlpack__())
+        if copy:
+            out = tf.raw_ops.DeepCopy(x=out)
+    if device is None:
+        return out
+    with placed(device):
+        return tf.identity(out)
+
+
+_DLPACK_CPU = 1  # DLDeviceType kDLCPU
+
+
+def _triangle_mask(x, k, lower: bool):
+    """True on and below (``lower``) or above diagonal ``k`` of the last two axes of ``x``."""
+    shape = tf.shape(x, out_type=tf.int64)
+    rows = tf.range(shape[-2])[:, None]
+    cols = tf.range(shape[-1])[None, :]
+    return cols - rows <= k if lower else cols - rows >= k
+
+
+def tril(x, /, *, k=0):
+    x = tensor(x)
+    return tf.where(_triangle_mask(x, k, True), x, tf.zeros((), x.dtype))
+
+
+def triu(x, /, *, k=0):
+    x = tensor(x)
+    return tf.where(_triangle_mask(x, k, False), x, tf.zeros((), x.dtype))

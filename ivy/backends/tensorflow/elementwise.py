@@ -7,6 +7,10 @@ Binary functions call tf's own function directly when the inputs are tensors or 
 that tf converts correctly, and promote dtypes by Array API rules only when tf refuses them (tf
 never promotes, and inside tf.function it refuses a Python scalar on the left unless it has the
 scalar's default dtype).
+
+Bitwise functions promote first and treat bools as the logical functions do. copysign, hypot,
+logaddexp, signbit (and nextafter in float16), which tf lacks, are built from its primitives: signs
+are read from the bits, so -0.0 and negative NaNs count as negative.
 """
 
 from __future__ import annotations
@@ -15,7 +19,7 @@ import math
 
 import tensorflow as tf
 
-from ivy.backends.tensorflow._helpers import FAST_TYPES, REFUSED, promote, tensor
+from ivy.backends.tensorflow._helpers import FAST_TYPES, REFUSED, promote, tensor, tensor_of
 
 __all__ = [
     "abs",
@@ -27,8 +31,16 @@ __all__ = [
     "atan",
     "atan2",
     "atanh",
+    "bitwise_and",
+    "bitwise_invert",
+    "bitwise_left_shift",
+    "bitwise_or",
+    "bitwise_right_shift",
+    "bitwise_xor",
     "ceil",
     "clip",
+    "conj",
+    "copysign",
     "cos",
     "cosh",
     "divide",
@@ -39,6 +51,8 @@ __all__ = [
     "floor_divide",
     "greater",
     "greater_equal",
+    "hypot",
+    "imag",
     "isfinite",
     "isinf",
     "isnan",
@@ -48,6 +62,7 @@ __all__ = [
     "log10",
     "log1p",
     "log2",
+    "logaddexp",
     "logical_and",
     "logical_not",
     "logical_or",
@@ -56,12 +71,16 @@ __all__ = [
     "minimum",
     "multiply",
     "negative",
+    "nextafter",
     "not_equal",
     "positive",
     "pow",
+    "real",
+    "reciprocal",
     "remainder",
     "round",
     "sign",
+    "signbit",
     "sin",
     "sinh",
     "sqrt",
@@ -80,14 +99,18 @@ asin = tf.math.asin
 asinh = tf.math.asinh
 atan = tf.math.atan
 atanh = tf.math.atanh
+conj = tf.math.conj
 cos = tf.math.cos
 cosh = tf.math.cosh
 exp = tf.math.exp
 expm1 = tf.math.expm1
+imag = tf.math.imag
 log = tf.math.log
 log1p = tf.math.log1p
 negative = tf.math.negative
 positive = tf.identity
+real = tf.math.real
+reciprocal = tf.math.reciprocal
 round = tf.math.round
 sign = tf.math.sign
 sin = tf.math.sin
@@ -217,3 +240,109 @@ def clip(x, /, min=None, max=None):
     if max is not None:
         x = minimum(x, max)
     return tensor(x)
+
+
+# ----------------------------------------------------------------------------------------------
+# Bitwise functions: tf's refuse bools (the logical functions do the same there) and never promote.
+# ----------------------------------------------------------------------------------------------
+
+
+def _bitwise(native, logical, name: str):
+    """ivy function ``name``: tf's ``native`` on promoted integers, ``logical`` on bools."""
+
+    def fn(x1, x2, /):
+        a, b = promote(x1, x2)
+        if a.dtype is tf.bool:
+            if logical is None:
+                raise TypeError(f"{name} needs integer inputs, got bool.")
+            return logical(a, b)
+        return native(a, b)
+
+    fn.__name__ = fn.__qualname__ = name
+    return fn
+
+
+bitwise_and = _bitwise(tf.bitwise.bitwise_and, tf.math.logical_and, "bitwise_and")
+bitwise_or = _bitwise(tf.bitwise.bitwise_or, tf.math.logical_or, "bitwise_or")
+bitwise_xor = _bitwise(tf.bitwise.bitwise_xor, tf.math.logical_xor, "bitwise_xor")
+bitwise_left_shift = _bitwise(tf.bitwise.left_shift, None, "bitwise_left_shift")
+bitwise_right_shift = _bitwise(tf.bitwise.right_shift, None, "bitwise_right_shift")
+
+
+def bitwise_invert(x, /):
+    x = tensor(x)
+    return tf.math.logical_not(x) if x.dtype is tf.bool else tf.bitwise.invert(x)
+
+
+# ----------------------------------------------------------------------------------------------
+# Floating-point functions tf lacks, from its own primitives (the sign bit read from the bits).
+# ----------------------------------------------------------------------------------------------
+
+_BITS = {tf.float16: tf.int16, tf.bfloat16: tf.int16, tf.float32: tf.int32, tf.float64: tf.int64}
+
+
+def signbit(x, /):
+    x = tensor(x)
+    bits = _BITS.get(x.dtype)
+    if bits is None:  # integers (numpy's answer); bools are never negative
+        return x < 0 if x.dtype.is_integer else tf.zeros_like(x, tf.bool)
+    return tf.bitcast(x, bits) < 0
+
+
+def copysign(x1, x2, /):
+    """The magnitude of ``x1`` with the sign bit of ``x2`` (-0.0 and -nan count as negative)."""
+    a, b = promote(x1, x2)
+    if a.dtype not in _BITS:
+        a, b = tf.cast(a, tf.float32), tf.cast(b, tf.float32)
+    bits = _BITS[a.dtype]
+    magnitude = tf.bitwise.bitwise_and(tf.bitcast(a, bits), tf.bitwise.invert(_sign_mask(bits)))
+    sign = tf.bitwise.bitwise_and(tf.bitcast(b, bits), _sign_mask(bits))
+    return tf.bitcast(tf.bitwise.bitwise_or(magnitude, sign), a.dtype)
+
+
+def _sign_mask(bits):
+    """The sign bit alone, as an integer of dtype ``bits`` (the most negative value)."""
+    return tf.constant(bits.min, bits)
+
+
+def hypot(x1, x2, /):
+    """sqrt(x1**2 + x2**2) without overflow or underflow; inf wherever an input is infinite."""
+    a, b = (tf.math.abs(v) for v in _floating(*promote(x1, x2)))
+    hi, lo = tf.math.maximum(a, b), tf.math.minimum(a, b)
+    ratio = tf.math.divide_no_nan(lo, hi)
+    out = hi * tf.math.sqrt(1 + ratio * ratio)
+    return tf.where(tf.math.is_inf(a) | tf.math.is_inf(b), tf.constant(math.inf, out.dtype), out)
+
+
+def logaddexp(x1, x2, /):
+    """log(exp(x1) + exp(x2)) without overflow."""
+    a, b = _floating(*promote(x1, x2))
+    out = tf.math.maximum(a, b) + tf.math.log1p(tf.math.exp(-tf.math.abs(a - b)))
+    return tf.where(a == b, a + math.log(2.0), out)  # equal infinities: a - b would be nan
+
+
+def nextafter(x1, x2, /):
+    """tf's nextafter (float32 and float64); float16 steps its bits as IEEE 754 says."""
+    a, b = _floating(*promote(x1, x2))
+    if a.dtype is tf.float32 or a.dtype is tf.float64:
+        return tf.math.nextafter(a, b)
+    bits = _BITS[a.dtype]
+    ia = tf.bitcast(a, bits)
+    step = tf.where((b > a) == (a > 0), tensor_of(1, bits), tensor_of(-1, bits))
+    out = tf.bitcast(ia + step, a.dtype)
+    tiniest = tf.bitcast(
+        tf.bitwise.bitwise_or(
+            tensor_of(1, bits), tf.bitwise.bitwise_and(tf.bitcast(b, bits), _sign_mask(bits))
+        ),
+        a.dtype,
+    )
+    out = tf.where(a == 0, tiniest, out)
+    out = tf.where(a == b, b, out)
+    return tf.where(tf.math.is_nan(a) | tf.math.is_nan(b), tf.constant(math.nan, a.dtype), out)
+
+
+def _floating(*tensors):
+    """``tensors`` (of one dtype) cast to float32 unless floating."""
+    if tensors[0].dtype.is_floating:
+        return tensors
+    return [tf.cast(t, tf.float32) for t in tensors]

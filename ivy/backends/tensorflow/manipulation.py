@@ -15,9 +15,24 @@ from ivy.backends.tensorflow._helpers import (
 )
 
 __all__ = [
-    "reshape", "permute_dims", "transpose", "concat", "stack", "unstack", "split",
-    "squeeze", "expand_dims", "flip", "tile", "repeat", "roll", "swapaxes", "broadcast_to",
-]  # fmt: skip
+    "reshape",
+    "permute_dims",
+    "transpose",
+    "concat",
+    "stack",
+    "unstack",
+    "split",
+    "squeeze",
+    "expand_dims",
+    "flip",
+    "tile",
+    "repeat",
+    "roll",
+    "swapaxes",
+    "broadcast_to",
+    "broadcast_arrays",
+    "moveaxis",
+]
 
 stack = tf.stack
 squeeze = tf.squeeze
@@ -119,3 +134,37 @@ def swapaxes(x, axis0, axis1, /):
     a, b = normalize_axis(axis0, rank), normalize_axis(axis1, rank)
     perm[a], perm[b] = b, a
     return tf.transpose(x, perm)
+
+
+def broadcast_arrays(*arrays):
+    arrays = [tensor(a) for a in arrays]
+    if not arrays:
+        return []
+    shape = arrays[0].shape
+    for a in arrays[1:]:
+        shape = tf.broadcast_static_shape(shape, a.shape)
+    if not shape.is_fully_defined():  # inside tf.function, with sizes known only when run
+        shape = tf.shape(arrays[0])
+        for a in arrays[1:]:
+            shape = tf.broadcast_dynamic_shape(shape, tf.shape(a))
+    return [tf.broadcast_to(a, shape) for a in arrays]
+
+
+def moveaxis(x, source, destination, /):
+    x = tensor(x)
+    rank = static_rank(x, "moveaxis")
+    source = [source] if isinstance(source, int) else list(source)
+    destination = [destination] if isinstance(destination, int) else list(destination)
+    if len(source) != len(destination):
+        raise ValueError(
+            f"moveaxis: {len(source)} source axes but {len(destination)} destination axes; "
+            f"give as many of each."
+        )
+    source = [normalize_axis(a, rank) for a in source]
+    destination = [normalize_axis(a, rank) for a in destination]
+    if len(set(source)) != len(source) or len(set(destination)) != len(destination):
+        raise ValueError("moveaxis: repeated axes in source or destination.")
+    order = [a for a in range(rank) if a not in source]
+    for dest, src in sorted(zip(destination, source)):
+        order.insert(dest, src)
+    return tf.transpose(x, order)

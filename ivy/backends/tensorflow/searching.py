@@ -6,7 +6,14 @@ import tensorflow as tf
 
 from ivy.backends.tensorflow._helpers import FAST_TYPES, REFUSED, fast, promote, static_rank, tensor
 
-__all__ = ["argmax", "argmin", "where"]
+__all__ = [
+    "argmax",
+    "argmin",
+    "where",
+    "count_nonzero",
+    "nonzero",
+    "searchsorted",
+]
 
 
 def _arg_reduce(native, x, axis, keepdims, name):
@@ -41,3 +48,24 @@ def where(condition, x1, x2, /):
     if condition.dtype is not tf.bool:
         condition = tf.cast(condition, tf.bool)
     return tf.where(condition, *promote(x1, x2))
+
+
+def count_nonzero(x, /, *, axis=None, keepdims=False):
+    return tf.math.count_nonzero(x, axis=axis, keepdims=keepdims, dtype=tf.int64)
+
+
+def nonzero(x, /):
+    x = tensor(x)
+    rank = static_rank(x, "nonzero")
+    if rank == 0:
+        raise ValueError("nonzero needs an array of one or more dimensions, got a 0-d array.")
+    found = tf.where(x if x.dtype is tf.bool else tf.not_equal(x, tf.zeros((), x.dtype)))
+    return tuple(found[:, i] for i in range(rank))
+
+
+def searchsorted(x1, x2, /, *, side="left", sorter=None):
+    x1, x2 = promote(x1, x2)
+    if sorter is not None:
+        x1 = tf.gather(x1, sorter)
+    out = tf.searchsorted(x1[None], tf.reshape(x2, [1, -1]), side=side, out_type=tf.int64)
+    return tf.reshape(out, tf.shape(x2))

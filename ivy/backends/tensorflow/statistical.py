@@ -4,9 +4,25 @@ from __future__ import annotations
 
 import tensorflow as tf
 
-from ivy.backends.tensorflow._helpers import floating, native_dtype, tensor
+from ivy.backends.tensorflow._helpers import (
+    floating,
+    native_dtype,
+    normalize_axis,
+    static_rank,
+    tensor,
+)
 
-__all__ = ["sum", "prod", "mean", "min", "max", "var", "std"]
+__all__ = [
+    "sum",
+    "prod",
+    "mean",
+    "min",
+    "max",
+    "var",
+    "std",
+    "cumulative_sum",
+    "cumulative_prod",
+]
 
 min = tf.math.reduce_min
 max = tf.math.reduce_max
@@ -52,3 +68,30 @@ def var(x, /, *, axis=None, correction=0.0, keepdims=False):
 
 def std(x, /, *, axis=None, correction=0.0, keepdims=False):
     return tf.math.sqrt(var(x, axis=axis, correction=correction, keepdims=keepdims))
+
+
+def _cumulative(native, initial, x, axis, dtype, include_initial, name):
+    """``native`` (cumsum, cumprod) along ``axis``, accumulating as :func:`sum` does."""
+    x = _accumulator(x, dtype)
+    rank = static_rank(x, name)
+    if axis is None:
+        if rank != 1:
+            raise ValueError(
+                f"{name}: axis is required for arrays of {rank} dimensions (None is allowed "
+                f"for one-dimensional arrays only)."
+            )
+        axis = 0
+    axis = normalize_axis(axis, rank)
+    out = native(x, axis=axis)
+    if include_initial:
+        shape = tf.tensor_scatter_nd_update(tf.shape(out), [[axis]], [1])
+        out = tf.concat([tf.fill(shape, tf.constant(initial, out.dtype)), out], axis)
+    return out
+
+
+def cumulative_sum(x, /, *, axis=None, dtype=None, include_initial=False):
+    return _cumulative(tf.math.cumsum, 0, x, axis, dtype, include_initial, "cumulative_sum")
+
+
+def cumulative_prod(x, /, *, axis=None, dtype=None, include_initial=False):
+    return _cumulative(tf.math.cumprod, 1, x, axis, dtype, include_initial, "cumulative_prod")

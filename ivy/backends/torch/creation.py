@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import torch
 
+from ivy.backends._dlpack import exportable
 from ivy.backends.torch._helpers import (
     default_dtype_of_value,
     has_own_dtype,
@@ -25,6 +26,10 @@ __all__ = [
     "ones_like",
     "empty_like",
     "full_like",
+    "from_dlpack",
+    "meshgrid",
+    "tril",
+    "triu",
 ]
 
 # torch's default dtypes can be changed by the user; ivy's cannot.
@@ -122,3 +127,26 @@ def empty_like(x, /, *, dtype=None, device=None):
 
 def full_like(x, /, fill_value, *, dtype=None, device=None):
     return torch.full_like(x, fill_value, dtype=native_dtype(dtype), device=native_device(device))
+
+
+def from_dlpack(x, /, *, device=None, copy=None):
+    x, copy_after = exportable(x)
+    if copy_after:
+        out = torch.from_dlpack(x, device=native_device(device))
+        return out.clone() if copy else out
+    return torch.from_dlpack(x, device=native_device(device), copy=copy)
+
+
+def meshgrid(*arrays, indexing="xy"):
+    if not arrays:
+        return []  # torch refuses no arrays
+    arrays = [a if isinstance(a, torch.Tensor) else asarray(a) for a in arrays]
+    return list(torch.meshgrid(*arrays, indexing=indexing))
+
+
+def tril(x, /, *, k=0):
+    return torch.tril(x, k)
+
+
+def triu(x, /, *, k=0):
+    return torch.triu(x, k)

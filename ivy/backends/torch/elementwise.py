@@ -25,8 +25,16 @@ __all__ = [
     "atan",
     "atan2",
     "atanh",
+    "bitwise_and",
+    "bitwise_invert",
+    "bitwise_left_shift",
+    "bitwise_or",
+    "bitwise_right_shift",
+    "bitwise_xor",
     "ceil",
     "clip",
+    "conj",
+    "copysign",
     "cos",
     "cosh",
     "divide",
@@ -37,6 +45,8 @@ __all__ = [
     "floor_divide",
     "greater",
     "greater_equal",
+    "hypot",
+    "imag",
     "isfinite",
     "isinf",
     "isnan",
@@ -46,6 +56,7 @@ __all__ = [
     "log10",
     "log1p",
     "log2",
+    "logaddexp",
     "logical_and",
     "logical_not",
     "logical_or",
@@ -54,12 +65,16 @@ __all__ = [
     "minimum",
     "multiply",
     "negative",
+    "nextafter",
     "not_equal",
     "positive",
     "pow",
+    "real",
+    "reciprocal",
     "remainder",
     "round",
     "sign",
+    "signbit",
     "sin",
     "sinh",
     "sqrt",
@@ -78,7 +93,14 @@ asin = torch.asin
 asinh = torch.asinh
 atan = torch.atan
 atanh = torch.atanh
+bitwise_and = torch.bitwise_and
+bitwise_invert = torch.bitwise_not
+bitwise_left_shift = torch.bitwise_left_shift
+bitwise_or = torch.bitwise_or
+bitwise_right_shift = torch.bitwise_right_shift
+bitwise_xor = torch.bitwise_xor
 ceil = torch.ceil
+conj = torch.conj_physical  # a new tensor, not a lazily conjugated view
 cos = torch.cos
 cosh = torch.cosh
 divide = torch.divide
@@ -89,6 +111,7 @@ floor = torch.floor
 floor_divide = torch.floor_divide
 greater = operator.gt
 greater_equal = operator.ge
+imag = torch.imag
 isfinite = torch.isfinite
 isinf = torch.isinf
 isnan = torch.isnan
@@ -104,8 +127,11 @@ negative = torch.negative
 not_equal = operator.ne
 positive = torch.positive
 pow = torch.pow
+real = torch.real
+reciprocal = torch.reciprocal
 remainder = torch.remainder
 round = torch.round
+signbit = torch.signbit
 sin = torch.sin
 sinh = torch.sinh
 sqrt = torch.sqrt
@@ -118,6 +144,22 @@ trunc = torch.trunc
 
 def atan2(x1, x2, /):
     return torch.atan2(*with_tensor_operands(x1, x2))
+
+
+def copysign(x1, x2, /):
+    return torch.copysign(*with_tensor_operands(x1, x2))
+
+
+def hypot(x1, x2, /):
+    return torch.hypot(*with_tensor_operands(x1, x2))
+
+
+def logaddexp(x1, x2, /):
+    return torch.logaddexp(*with_tensor_operands(x1, x2))
+
+
+def nextafter(x1, x2, /):
+    return torch.nextafter(*with_tensor_operands(x1, x2))
 
 
 def logical_and(x1, x2, /):

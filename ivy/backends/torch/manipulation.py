@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import torch
 
+from ivy.backends.torch.creation import asarray
+
 __all__ = [
     "reshape",
     "permute_dims",
@@ -20,6 +22,8 @@ __all__ = [
     "roll",
     "swapaxes",
     "broadcast_to",
+    "broadcast_arrays",
+    "moveaxis",
 ]
 
 # torch accepts ``axis`` for ``dim``: stack(arrays, axis=1), unbind(x, axis=1) (a tuple),
@@ -30,7 +34,6 @@ unstack = torch.unbind
 tile = torch.tile
 repeat = torch.repeat_interleave
 swapaxes = torch.swapaxes
-broadcast_to = torch.broadcast_to
 
 
 def reshape(x, /, shape, *, copy=None):
@@ -98,3 +101,16 @@ def roll(x, /, shift, *, axis=None):
     if isinstance(axis, (tuple, list)) and isinstance(shift, int):
         shift = (shift,) * len(axis)  # numpy shifts every axis by a lone shift
     return torch.roll(x, shift, () if axis is None else axis)
+
+
+moveaxis = torch.moveaxis
+
+
+def broadcast_arrays(*arrays):
+    arrays = [a if isinstance(a, torch.Tensor) else asarray(a) for a in arrays]
+    return list(torch.broadcast_tensors(*arrays))
+
+
+def broadcast_to(x, /, shape):
+    # torch names the shape argument `size`; the Array API names it `shape`.
+    return torch.broadcast_to(x, shape)

@@ -6,7 +6,17 @@ import torch
 
 from ivy.backends.torch._helpers import native_dtype, reduction_args
 
-__all__ = ["sum", "prod", "mean", "min", "max", "var", "std"]
+__all__ = [
+    "sum",
+    "prod",
+    "mean",
+    "min",
+    "max",
+    "var",
+    "std",
+    "cumulative_sum",
+    "cumulative_prod",
+]
 
 
 def sum(x, /, *, axis=None, dtype=None, keepdims=False):
@@ -50,3 +60,44 @@ def var(x, /, *, axis=None, correction=0.0, keepdims=False):
 def std(x, /, *, axis=None, correction=0.0, keepdims=False):
     x, dim, keepdim = reduction_args(x, axis, keepdims)
     return torch.std(x, dim=dim, correction=correction, keepdim=keepdim)
+
+
+_UNSIGNED = (torch.uint8, torch.uint16, torch.uint32, torch.uint64)
+
+
+def _cumulative(native, initial, x, axis, dtype, include_initial, name):
+    """``native`` (cumsum, cumprod) along ``axis``. Bools and signed integers accumulate in int64,
+    unsigned integers in uint64 (computed in int64, whose wrap-around is the same, since torch
+    has no uint64 kernels)."""
+    if axis is None:
+        if x.ndim != 1:
+            raise ValueError(
+                f"{name}: axis is required for arrays of {x.ndim} dimensions (None is allowed "
+                f"for one-dimensional arrays only)."
+            )
+        axis = 0
+    out_dtype = native_dtype(dtype)
+    if out_dtype is None:
+        if x.dtype in _UNSIGNED:
+            out_dtype = torch.uint64
+        elif x.dtype is torch.bool or not (x.is_floating_point() or x.is_complex()):
+            out_dtype = torch.int64
+        else:
+            out_dtype = x.dtype
+    work = torch.int64 if out_dtype in _UNSIGNED else out_dtype
+    if x.dtype in _UNSIGNED[1:]:
+        x = x.to(torch.int64)  # torch casts from uint16+ but computes nothing else with them
+    out = native(x, axis, dtype=work)
+    if include_initial:
+        shape = list(out.shape)
+        shape[axis] = 1
+        out = torch.cat([torch.full(shape, initial, dtype=work, device=out.device), out], axis)
+    return out if work is out_dtype else out.to(out_dtype)
+
+
+def cumulative_sum(x, /, *, axis=None, dtype=None, include_initial=False):
+    return _cumulative(torch.cumsum, 0, x, axis, dtype, include_initial, "cumulative_sum")
+
+
+def cumulative_prod(x, /, *, axis=None, dtype=None, include_initial=False):
+    return _cumulative(torch.cumprod, 1, x, axis, dtype, include_initial, "cumulative_prod")

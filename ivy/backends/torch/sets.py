@@ -1,0 +1,35 @@
+"""torch backend: unique values from ``torch.unique`` (sorted; each NaN a distinct value, -0.0 and
+0.0 one value), as the Array API's named tuples; the indices of first occurrences, which torch
+does not return, come from its inverse indices."""
+
+from __future__ import annotations
+
+import torch
+
+from ivy.core._results import UniqueAllResult, UniqueCountsResult, UniqueInverseResult
+
+__all__ = ["unique_all", "unique_counts", "unique_inverse", "unique_values"]
+
+
+def unique_all(x, /):
+    values, inverse, counts = torch.unique(x, return_inverse=True, return_counts=True)
+    flat = inverse.reshape(-1)
+    n = flat.numel()
+    positions = torch.arange(n, device=flat.device)
+    first = torch.full((values.shape[0],), n, dtype=torch.int64, device=flat.device)
+    first = first.scatter_reduce(0, flat, positions, reduce="amin")
+    return UniqueAllResult(values, first, inverse.reshape(x.shape), counts)
+
+
+def unique_counts(x, /):
+    values, counts = torch.unique(x, return_counts=True)
+    return UniqueCountsResult(values, counts)
+
+
+def unique_inverse(x, /):
+    values, inverse = torch.unique(x, return_inverse=True)
+    return UniqueInverseResult(values, inverse.reshape(x.shape))
+
+
+def unique_values(x, /):
+    return torch.unique(x)

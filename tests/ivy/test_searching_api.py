@@ -1,0 +1,135 @@
+"""nonzero, searchsorted and count_nonzero on every backend, against references written in
+Python loops; jax's compiled code cannot give data-dependent shapes (UnsupportedError)."""
+
+from __future__ import annotations
+
+import bisect
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import ivy
+from tests.helpers import HYPOTHESIS, api, check, native
+from tests.ivy.strategies import arrays, axis_arguments, normalize_axis
+
+FEW = settings(HYPOTHESIS, max_examples=20)
+SHAPES = st.sampled_from([(5,), (0,), (2, 3), (2, 1, 3), (3, 0)])
+DTYPES = ["float32", "float64", "int64", "bool"]
+
+
+def _elements(dtype):
+    if dtype == "bool":
+        return st.booleans()
+    if dtype == "int64":
+        return st.integers(-2, 2)
+    return st.sampled_from([0.0, -0.0, 1.5, -2.0, math.inf, math.nan])
+
+
+# ----------------------------------------------------------------------------------------------
+# nonzero
+# ----------------------------------------------------------------------------------------------
+
+
+@FEW
+@given(data=st.data())
+def test_nonzero(backend, data):
+    dtype = data.draw(st.sampled_from(DTYPES), label="dtype")
+    a = data.draw(arrays(dtype, _elements(dtype), SHAPES), label="x")
+    found = [index for index in np.ndindex(a.shape) if a[index] != 0]  # NaN is nonzero
+    expected = [np.array([f[k] for f in found], np.int64) for k in range(a.ndim)]
+    for fn in api(backend, "nonzero"):
+        out = fn(native(a, backend))
+        assert isinstance(out, tuple) and len(out) == a.ndim
+        for o, e in zip(out, expected):
+            check(o, e, backend)
+
+
+def test_nonzero_refuses_0d_arrays(backend):
+    for fn in api(backend, "nonzero"):
+        with pytest.raises(ValueError):
+            fn(native(np.float32(1.0), backend))
+
+
+def test_nonzero_inside_jax_jit_is_unsupported():
+    jax = pytest.importorskip("jax")
+    with pytest.raises(ivy.UnsupportedError, match="size"):
+        jax.jit(ivy.jax.nonzero)(jax.numpy.ones(3))
+
+
+def test_nonzero_inside_tf_function():
+    tf = pytest.importorskip("tensorflow")
+    fn = tf.function(ivy.tensorflow.nonzero)
+    out = fn(tf.constant([[0.0, 2.0], [3.0, 0.0]]))
+    check(out[0], np.array([0, 1]), "tensorflow")
+    check(out[1], np.array([1, 0]), "tensorflow")
+
+
+# ----------------------------------------------------------------------------------------------
+# searchsorted
+# ----------------------------------------------------------------------------------------------
+
+
+@FEW
+@given(data=st.data())
+def test_searchsorted(backend, data):
+    dtype = data.draw(st.sampled_from(["float32", "float64", "int64"]), label="dtype")
+    values = (
+        st.integers(-5, 5)
+        if dtype == "int64"
+        else st.sampled_from([-2.5, -1.0, 0.0, 1.0, 3.0, math.inf, -math.inf])
+    )
+    seq = data.draw(arrays(dtype, values, st.sampled_from([(0,), (1,), (6,)])), label="x1")
+    v = data.draw(arrays(dtype, values, st.sampled_from([(), (4,), (2, 3), (0,)])), label="x2")
+    side = data.draw(st.sampled_from(["left", "right"]), label="side")
+    use_sorter = data.draw(st.booleans(), label="sorter")
+    if use_sorter:  # x1 unsorted, with the permutation that sorts it
+        sorter = np.array(sorted(range(len(seq)), key=lambda i: seq[i]), np.int64)
+        ordered = [seq[i] for i in sorter]
+    else:
+        seq = np.sort(seq)
+        sorter, ordered = None, list(seq)
+    search = bisect.bisect_left if side == "left" else bisect.bisect_right
+    expected = np.array([search(ordered, x) for x in v.ravel()], np.int64).reshape(v.shape)
+    kwargs = {"side": side}
+    for fn in api(backend, "searchsorted"):
+        if use_sorter:
+            kwargs["sorter"] = native(sorter, backend)
+        check(fn(native(seq, backend), native(v, backend), **kwargs), expected, backend)
+
+
+def test_searchsorted_with_a_python_scalar_and_mixed_dtypes(backend):
+    seq = np.array([1.0, 2.0, 3.0], np.float32)
+    for fn in api(backend, "searchsorted"):
+        check(fn(native(seq, backend), 2.5), np.int64(2), backend)
+        v = native(np.array([2, 3], np.int64), backend)
+        check(fn(native(seq, backend), v, side="right"), np.array([2, 3]), backend)
+
+
+# ----------------------------------------------------------------------------------------------
+# count_nonzero
+# ----------------------------------------------------------------------------------------------
+
+
+@FEW
+@given(data=st.data())
+def test_count_nonzero(backend, data):
+    dtype = data.draw(st.sampled_from(DTYPES), label="dtype")
+    a = data.draw(arrays(dtype, _elements(dtype), SHAPES), label="x")
+    axis = data.draw(axis_arguments(a.ndim) | st.just(()), label="axis")
+    keepdims = data.draw(st.booleans(), label="keepdims")
+    reduced = normalize_axis(axis, a.ndim)
+    out_shape = tuple(
+        1 if ax in reduced else n for ax, n in enumerate(a.shape) if keepdims or ax not in reduced
+    )
+    expected = np.zeros(out_shape, np.int64)
+    for index in np.ndindex(a.shape):
+        if a[index] != 0:
+            target = tuple(0 if ax in reduced else i for ax, i in enumerate(index))
+            if not keepdims:
+                target = tuple(i for ax, i in enumerate(target) if ax not in reduced)
+            expected[target] += 1
+    for fn in api(backend, "count_nonzero"):
+        check(fn(native(a, backend), axis=axis, keepdims=keepdims), expected, backend)

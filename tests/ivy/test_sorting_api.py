@@ -1,0 +1,95 @@
+"""argsort and sort on every backend, against a stable sort written with Python's ``sorted``:
+NaN is the largest value (last ascending, first descending), -0.0 equals 0.0, and equal elements
+keep their order in both directions."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tests.helpers import HYPOTHESIS, api, check, native
+from tests.ivy.strategies import arrays
+
+FEW = settings(HYPOTHESIS, max_examples=20)
+SHAPES = st.sampled_from([(6,), (0,), (2, 5), (3, 1, 4), (2, 0)])
+TIES = [0.0, -0.0, 1.0, -1.0, 2.5, math.inf, -math.inf, math.nan]
+
+
+def _elements(dtype):
+    if dtype == "bool":
+        return st.booleans()
+    if dtype.startswith(("int", "uint")):
+        info = np.iinfo(dtype)
+        return st.sampled_from([int(info.min), int(info.max), 0, 1, 2])
+    return st.sampled_from(TIES)
+
+
+def _argsort_reference(a, axis, descending):
+    moved = np.moveaxis(a, axis, -1)
+    out = np.empty(moved.shape, np.int64)
+    for index in np.ndindex(moved.shape[:-1]):
+        row = [x.item() for x in moved[index]]
+
+        def key(i, row=row):
+            v = row[i]
+            nan = isinstance(v, float) and math.isnan(v)
+            if descending:  # sorted() is stable: negating keeps ties in their order
+                return (not nan, -v if not nan else 0)
+            return (nan, v if not nan else 0)
+
+        out[index] = sorted(range(len(row)), key=key)
+    return np.moveaxis(out, -1, axis)
+
+
+@FEW
+@given(data=st.data())
+def test_argsort_and_sort(backend, data):
+    dtype = data.draw(
+        st.sampled_from(["float32", "float64", "int8", "int64", "uint8", "bool"]), label="dtype"
+    )
+    a = data.draw(arrays(dtype, _elements(dtype), SHAPES), label="x")
+    axis = data.draw(st.integers(-a.ndim, a.ndim - 1), label="axis")
+    descending = data.draw(st.booleans(), label="descending")
+    order = _argsort_reference(a, axis, descending)
+    x = native(a, backend)
+    for fn in api(backend, "argsort"):
+        check(fn(x, axis=axis, descending=descending), order, backend)
+        check(fn(x, axis=axis, descending=descending, stable=True), order, backend)
+    values = np.take_along_axis(a, order, axis)
+    for fn in api(backend, "sort"):
+        check(fn(x, axis=axis, descending=descending), values, backend, rtol=0, atol=0)
+        # unstable: any order of equal elements, so only the values are compared
+        unstable = fn(x, axis=axis, descending=descending, stable=False)
+        check(unstable, values, backend, rtol=0, atol=0)
+
+
+def test_defaults_sort_the_last_axis_ascending(backend):
+    a = np.array([[3.0, 1.0, 2.0], [0.0, -5.0, 5.0]], np.float32)
+    for fn in api(backend, "sort"):
+        check(
+            fn(native(a, backend)),
+            np.array([[1.0, 2.0, 3.0], [-5.0, 0.0, 5.0]], np.float32),
+            backend,
+        )
+    for fn in api(backend, "argsort"):
+        check(fn(native(a, backend)), np.array([[1, 2, 0], [1, 0, 2]]), backend)
+
+
+def test_stable_descending_keeps_equal_elements_in_order(backend):
+    a = np.array([1, 2, 1, 2, 0, 2], np.int64)
+    for fn in api(backend, "argsort"):
+        check(fn(native(a, backend), descending=True), np.array([1, 3, 5, 0, 2, 4]), backend)
+
+
+@pytest.mark.parametrize("dtype", ["uint16", "uint32", "uint64", "int16", "float16"])
+def test_other_dtypes(backend, dtype):
+    a = np.array([5, 0, 3, 3, 1], dtype)
+    for fn in api(backend, "argsort"):
+        check(fn(native(a, backend)), np.array([1, 4, 2, 3, 0]), backend)
+        check(fn(native(a, backend), descending=True), np.array([0, 2, 3, 4, 1]), backend)
+    for fn in api(backend, "sort"):
+        check(fn(native(a, backend)), np.array([0, 1, 3, 3, 5], dtype), backend)
