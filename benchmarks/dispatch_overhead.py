@@ -22,6 +22,7 @@ import statistics
 import timeit
 
 import numpy as np
+from _timing import calls_per_sample, interleaved_samples
 
 import ivy
 
@@ -47,13 +48,6 @@ def _statements(backend: str, fn: str) -> dict[str, str]:
     }
 
 
-def _calls_per_sample(stmt: str, env: dict) -> int:
-    """Enough calls for about 20 ms per sample."""
-    timer = timeit.Timer(stmt, globals=env)
-    number, _ = timer.autorange()
-    return max(1, number * 20 // 200)
-
-
 def measure(backend: str, fn: str, size: int, repeats: int) -> dict[str, float]:
     """(min, median) seconds per call of each variant, repeats interleaved to share drift."""
     ns = getattr(ivy, backend)
@@ -62,18 +56,11 @@ def measure(backend: str, fn: str, size: int, repeats: int) -> dict[str, float]:
     env["x"] = ns.asarray(np.linspace(-1, 1, size, dtype=np.float32))
     env["y"] = ns.asarray(np.linspace(1, 2, size, dtype=np.float32))
     stmts = _statements(backend, fn)
-    number = _calls_per_sample(stmts["native"], env)
-    samples: dict[str, list[float]] = {v: [] for v in VARIANTS}
-    for _ in range(repeats):
-        for variant, stmt in stmts.items():
-            if variant == "set":
-                ivy.set_framework(backend)
-            try:
-                t = timeit.Timer(stmt, globals=env).timeit(number)
-            finally:
-                if variant == "set":
-                    ivy.unset_framework()
-            samples[variant].append(t / number)
+    timers = {v: timeit.Timer(stmt, globals=env) for v, stmt in stmts.items()}
+    number = calls_per_sample(timers["native"], target_s=0.02)
+    samples = interleaved_samples(
+        timers, number, repeats, around={"set": lambda: ivy.set_framework(backend)}
+    )
     return {v: (min(s), statistics.median(s)) for v, s in samples.items()}
 
 
