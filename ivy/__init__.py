@@ -11,8 +11,16 @@ Example:
     tensor([0., 1.], dtype=torch.float64)
 """
 
-from ivy import core, dtypes, errors, framework_handler
+from ivy import (
+    core,
+    dtypes,
+    errors,
+    framework_handler,
+    nest,  # noqa: F401 - ivy.nest: map, flatten, unflatten nests
+    stateful,  # noqa: F401 - ivy.stateful: modules, layers, optimizers, checkpoints
+)
 from ivy.core import *  # noqa: F403 - the public API is listed in ivy.core.__all__
+from ivy.core._extensions import agnostic_extensions
 from ivy.dtypes import *  # noqa: F403
 from ivy.errors import *  # noqa: F403
 from ivy.framework_handler import (
@@ -24,8 +32,13 @@ from ivy.framework_handler import (
     set_framework,
     unset_framework,
 )
+from ivy.stateful import *  # noqa: F403 - Module, Linear, MLP, ..., Adam, save_weights ...
 
 __version__ = "0.1.0"
+
+# The Array API extensions as namespaces, ivy.linalg and ivy.fft (their functions are flat too).
+_EXTENSIONS = agnostic_extensions()
+globals().update(_EXTENSIONS)
 
 e = 2.718281828459045
 pi = 3.141592653589793
@@ -40,6 +53,7 @@ __all__ = sorted(
     | set(dtypes.__all__)
     | set(errors.__all__)
     | set(framework_handler.__all__)
+    | set(_EXTENSIONS)
     | {"e", "pi", "inf", "nan", "newaxis"}
 )
 

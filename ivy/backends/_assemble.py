@@ -1,4 +1,8 @@
-"""Assemble a backend namespace from its modules, one per core group (same file names)."""
+"""Assemble a backend namespace from its modules, one per core group (same file names).
+
+Array API extension groups (``linalg``, ``fft``) are also exposed as sub-namespaces of the backend
+namespace (``ivy.torch.linalg.svd is ivy.torch.svd``); see ``ivy/core/_extensions.py``.
+"""
 
 from __future__ import annotations
 
@@ -7,6 +11,7 @@ import importlib.util
 from typing import Any
 
 from ivy import core
+from ivy.core._extensions import ExtensionNamespace, extension_groups
 from ivy.dtypes import DTYPE_NAMES
 
 
@@ -15,7 +20,7 @@ def assemble(package: str, namespace: dict[str, Any], native_dtypes: dict[str, A
 
     Each backend package has one module per core group that has dispatched functions, with the
     same name as the group; those functions must all be defined there. Dtype names map to
-    native dtype objects.
+    native dtype objects. Each Array API extension becomes a sub-namespace (``ivy.torch.fft``).
     """
     exported: set[str] = set()
     for group_name, group in zip(core.GROUP_NAMES, core.GROUPS):
@@ -33,6 +38,13 @@ def assemble(package: str, namespace: dict[str, Any], native_dtypes: dict[str, A
         raise ImportError(f"{package} defines no native dtype for {sorted(missing)}")
     namespace.update(native_dtypes)
     exported.update(DTYPE_NAMES)
+    backend = package.rpartition(".")[2]
+    for ext, group in extension_groups(core.GROUPS):
+        call = namespace[ext] if ext in group.__all__ else None  # fft: callable namespace
+        namespace[ext] = ExtensionNamespace(
+            f"ivy.{backend}.{ext}", group.__all__, namespace.__getitem__, call
+        )
+        exported.add(ext)
     namespace["__all__"] = sorted(exported)
 
 

@@ -1,10 +1,19 @@
-"""Indexing: gathering and scattering."""
+"""Indexing: gathering and scattering, by index tuples (``_nd``) or into flattened arrays
+(``_flat``), and the coordinates of true elements."""
 
 from __future__ import annotations
 
 from ivy.core._dispatch import dispatch
 
-__all__ = ["take", "gather_nd", "scatter_nd", "one_hot"]
+__all__ = [
+    "take",
+    "gather_nd",
+    "scatter_nd",
+    "one_hot",
+    "gather_flat",
+    "scatter_flat",
+    "indices_where",
+]
 
 
 @dispatch
@@ -35,3 +44,51 @@ def scatter_nd(indices, updates, /, shape, *, reduction="sum", f=None):
 def one_hot(indices, depth, /, *, dtype=None, f=None):
     """One-hot encoding of integer ``indices`` along a new last axis of size ``depth``;
     float32 by default."""
+
+
+@dispatch
+def gather_flat(params, indices, /, *, f=None):
+    """Elements of the flattened ``params`` at integer ``indices`` of any shape.
+
+    Args:
+        params: array of any shape, read in row-major order.
+        indices: integer array; negative indices count from the end.
+
+    Returns:
+        An array of ``indices``' shape and ``params``' dtype.
+
+    Example: ``ivy.gather_flat(np.array([[1, 2], [3, 4]]), np.array([3, 0]))`` -> ``[4, 1]``.
+    """
+
+
+@dispatch("indices", "updates")
+def scatter_flat(indices, updates, /, size, *, reduction="sum", f=None):
+    """Scatter ``updates`` into a 1-D array of zeros of length ``size`` at flat ``indices``.
+
+    Args:
+        indices: integer array, of ``updates``' shape.
+        updates: values.
+        size: length of the result.
+        reduction: how updates that land on the same place combine: ``'sum'``, ``'replace'``
+            (one of them, unspecified which), ``'min'`` or ``'max'``; places that receive no
+            update stay 0.
+
+    Returns:
+        ``[size]`` of ``updates``' dtype.
+
+    Example: ``ivy.scatter_flat(np.array([0, 2, 0]), np.array([1., 2., 3.]), 4)`` ->
+    ``[4., 0., 2., 0.]``.
+    """
+
+
+@dispatch
+def indices_where(x, /, *, f=None):
+    """Coordinates of the true (non-zero) elements of ``x``, in row-major order.
+
+    Returns:
+        int64 ``[num_true, x.ndim]``, ready for :func:`gather_nd`. The shape depends on the
+        values, so this does not compile under ``jax.jit``.
+
+    Example: ``ivy.indices_where(np.array([[True, False], [False, True]]))`` ->
+    ``[[0, 0], [1, 1]]``.
+    """

@@ -1,25 +1,129 @@
-"""Linear algebra."""
+"""Linear algebra: the Array API (2023.12) ``linalg`` extension.
+
+Every function here is reachable flat (``ivy.svd``, ``ivy.torch.svd``) and in the extension
+namespace (``ivy.linalg.svd``, ``ivy.torch.linalg.svd``), the very same object. ``matmul``,
+``matrix_transpose``, ``tensordot`` and ``vecdot`` are also main-namespace functions of the
+standard. ``norm`` is the paper's spelling of ``vector_norm``.
+
+Matrix functions act on the last two axes and broadcast over any leading batch axes. The
+floating-point functions (all but ``diagonal``, ``matmul``, ``matrix_power`` with ``n >= 0``,
+``matrix_transpose``, ``outer``, ``tensordot``, ``trace``, ``vecdot``, ``cross``) compute bool and
+integer inputs in float32, the default float dtype, on every backend.
+"""
 
 from __future__ import annotations
 
+from typing import Any, NamedTuple
+
 from ivy.core._dispatch import alias, dispatch
 
-__all__ = ["matmul", "cross", "svd", "inv", "pinv", "vector_norm", "norm"]
+__extension__ = "linalg"
+
+__all__ = [
+    "cholesky",
+    "cross",
+    "det",
+    "diagonal",
+    "eigh",
+    "eigvalsh",
+    "inv",
+    "matmul",
+    "matrix_norm",
+    "matrix_power",
+    "matrix_rank",
+    "matrix_transpose",
+    "outer",
+    "pinv",
+    "qr",
+    "slogdet",
+    "solve",
+    "svd",
+    "svdvals",
+    "tensordot",
+    "trace",
+    "vecdot",
+    "vector_norm",
+    "norm",
+]
 
 
-@dispatch("x1", "x2")
-def matmul(x1, x2, /, *, f=None):
-    """Matrix product with batch broadcasting (1-D operands as in numpy)."""
+# Results with named fields (the backends whose framework returns plain tuples use these; numpy,
+# torch and jax return their own named results, with the same field names).
+class EighResult(NamedTuple):
+    eigenvalues: Any
+    eigenvectors: Any
+
+
+class QRResult(NamedTuple):
+    Q: Any
+    R: Any
+
+
+class SlogdetResult(NamedTuple):
+    sign: Any
+    logabsdet: Any
+
+
+class SVDResult(NamedTuple):
+    U: Any
+    S: Any
+    Vh: Any
+
+
+@dispatch
+def cholesky(x, /, *, upper=False, f=None):
+    """Cholesky factor of symmetric (Hermitian) positive-definite matrices.
+
+    Args:
+        x: matrices ``[..., M, M]``.
+        upper: return the upper factor ``U`` (``x = U^H U``) instead of the lower ``L``
+            (``x = L L^H``).
+
+    Returns:
+        The triangular factors, ``[..., M, M]``.
+
+    Example: ``ivy.cholesky(np.array([[4., 2.], [2., 2.]]))`` -> ``[[2., 0.], [1., 1.]]``.
+    """
 
 
 @dispatch("x1", "x2")
 def cross(x1, x2, /, *, axis=-1, f=None):
-    """Cross product of 3-vectors along ``axis``."""
+    """Cross product of 3-vectors along ``axis`` (the other axes broadcast)."""
 
 
 @dispatch
-def svd(x, /, *, full_matrices=True, f=None):
-    """Singular value decomposition ``(U, S, Vh)`` with ``x = U @ diag(S) @ Vh``; S descending."""
+def det(x, /, *, f=None):
+    """Determinants of the matrices ``x`` (``[..., M, M]`` -> ``[...]``)."""
+
+
+@dispatch
+def diagonal(x, /, *, offset=0, f=None):
+    """Diagonal of the last two axes: ``offset > 0`` above the main diagonal, ``< 0`` below.
+
+    Args:
+        x: ``[..., M, N]``, any dtype.
+        offset: which diagonal; one beyond the matrix gives an empty result.
+
+    Returns:
+        ``[..., K]`` with ``K`` the length of that diagonal.
+
+    Example: ``ivy.diagonal(np.arange(6).reshape(2, 3), offset=1)`` -> ``[1, 5]``.
+    """
+
+
+@dispatch
+def eigh(x, /, *, f=None):
+    """Eigen-decomposition of symmetric (Hermitian) matrices.
+
+    Returns:
+        A namedtuple ``(eigenvalues, eigenvectors)``: eigenvalues ``[..., M]`` ascending, and
+        the orthonormal eigenvectors as the columns of ``[..., M, M]``.
+    """
+
+
+@dispatch
+def eigvalsh(x, /, *, f=None):
+    """Eigenvalues of symmetric (Hermitian) matrices, ascending (``[..., M]``)."""
 
 
 @dispatch
@@ -27,9 +131,137 @@ def inv(x, /, *, f=None):
     """Inverse of square matrices (batched)."""
 
 
+@dispatch("x1", "x2")
+def matmul(x1, x2, /, *, f=None):
+    """Matrix product with batch broadcasting (1-D operands as in numpy)."""
+
+
+@dispatch
+def matrix_norm(x, /, *, keepdims=False, ord="fro", f=None):
+    """Matrix norm over the last two axes.
+
+    Args:
+        x: ``[..., M, N]``.
+        keepdims: keep the two reduced axes with size 1.
+        ord: ``'fro'`` (Frobenius), ``'nuc'`` (sum of singular values), ``2`` / ``-2`` (largest
+            / smallest singular value), ``1`` / ``-1`` (max / min absolute column sum), ``inf``
+            / ``-inf`` (max / min absolute row sum).
+
+    Returns:
+        Real norms ``[...]``.
+    """
+
+
+@dispatch
+def matrix_power(x, n, /, *, f=None):
+    """``x`` raised to the integer power ``n`` (``n = 0``: identity; ``n < 0``: powers of the
+    inverse). Integer matrices stay integer for ``n >= 0``."""
+
+
+@dispatch
+def matrix_rank(x, /, *, rtol=None, f=None):
+    """Rank: the number of singular values above ``rtol`` times the largest one.
+
+    Args:
+        x: ``[..., M, N]``.
+        rtol: relative tolerance, a float or one per matrix; default ``max(M, N) * eps``.
+
+    Returns:
+        int64 ranks ``[...]``.
+    """
+
+
+@dispatch
+def matrix_transpose(x, /, *, f=None):
+    """Swap the last two axes (``[..., M, N]`` -> ``[..., N, M]``), not conjugating."""
+
+
+@dispatch("x1", "x2")
+def outer(x1, x2, /, *, f=None):
+    """Outer product of two 1-D arrays: ``out[i, j] = x1[i] * x2[j]``."""
+
+
 @dispatch
 def pinv(x, /, *, rtol=None, f=None):
     """Moore-Penrose pseudo-inverse; singular values below ``rtol * max(S)`` are dropped."""
+
+
+@dispatch
+def qr(x, /, *, mode="reduced", f=None):
+    """QR decomposition ``x = Q @ R``.
+
+    Args:
+        x: ``[..., M, N]``.
+        mode: ``'reduced'`` (``Q`` is ``[..., M, K]``, ``R`` ``[..., K, N]``, ``K = min(M, N)``) or
+            ``'complete'`` (``Q`` is ``[..., M, M]``, ``R`` ``[..., M, N]``).
+
+    Returns:
+        A namedtuple ``(Q, R)``: orthonormal columns and upper-triangular ``R``.
+    """
+
+
+@dispatch
+def slogdet(x, /, *, f=None):
+    """Sign and log of the absolute value of determinants, a namedtuple ``(sign, logabsdet)``.
+
+    A singular matrix gives ``sign = 0`` and ``logabsdet = -inf``.
+    """
+
+
+@dispatch("x1", "x2")
+def solve(x1, x2, /, *, f=None):
+    """Solution ``X`` of ``x1 @ X = x2`` for square, non-singular ``x1``.
+
+    Args:
+        x1: coefficients ``[..., M, M]``.
+        x2: a vector ``[M]`` (solved against every matrix of ``x1``), else a stack of matrices
+            ``[..., M, K]`` whose batch axes broadcast with those of ``x1``.
+
+    Returns:
+        ``[..., M]`` for a vector ``x2``, else ``[..., M, K]``.
+    """
+
+
+@dispatch
+def svd(x, /, *, full_matrices=True, f=None):
+    """Singular value decomposition, a namedtuple ``(U, S, Vh)`` with
+    ``x = U @ diag(S) @ Vh``; S descending."""
+
+
+@dispatch
+def svdvals(x, /, *, f=None):
+    """Singular values, descending (``[..., M, N]`` -> ``[..., min(M, N)]``)."""
+
+
+@dispatch("x1", "x2")
+def tensordot(x1, x2, /, *, axes=2, f=None):
+    """Tensor contraction.
+
+    Args:
+        x1, x2: arrays.
+        axes: an int ``N`` (the last ``N`` axes of ``x1`` with the first ``N`` of ``x2``) or a
+            pair of sequences of axes to contract, of equal lengths.
+
+    Returns:
+        The non-contracted axes of ``x1`` followed by those of ``x2``.
+
+    Example: ``ivy.tensordot(a, b, axes=([1], [0]))`` is ``a @ b`` for matrices.
+    """
+
+
+@dispatch
+def trace(x, /, *, offset=0, dtype=None, f=None):
+    """Sum along a diagonal of the last two axes (``offset`` as in :func:`diagonal`).
+
+    With ``dtype=None``, floating inputs keep their dtype, bool and integers narrower than 64
+    bits accumulate in int64 (unsigned ones in uint64).
+    """
+
+
+@dispatch("x1", "x2")
+def vecdot(x1, x2, /, *, axis=-1, f=None):
+    """Dot product of vectors along ``axis``, ``sum(conj(x1) * x2, axis)``; other axes
+    broadcast."""
 
 
 @dispatch

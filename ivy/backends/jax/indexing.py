@@ -1,8 +1,9 @@
 """jax backend: gathering and scattering.
 
 As everywhere in jax, out-of-bounds indices do not raise (they cannot under ``jax.jit``):
-``take`` and ``gather_nd`` return a fill value there (NaN for floats, the smallest integer for
-ints; jax's ``mode='fill'``), and ``scatter_nd`` drops those updates.
+``take``, ``gather_nd`` and ``gather_flat`` return a fill value there (NaN for floats, the smallest integer for
+ints; jax's ``mode='fill'``), and ``scatter_nd`` and ``scatter_flat`` drop those updates. ``indices_where`` has a result shape
+that depends on the values, so it cannot run under ``jax.jit``.
 """
 
 from __future__ import annotations
@@ -12,7 +13,17 @@ import jax.numpy as jnp
 
 from ivy.backends.jax._helpers import native_dtype
 
-__all__ = ["take", "gather_nd", "scatter_nd", "one_hot"]
+__all__ = [
+    "take",
+    "gather_nd",
+    "scatter_nd",
+    "one_hot",
+    "gather_flat",
+    "scatter_flat",
+    "indices_where",
+]
+
+indices_where = jnp.argwhere
 
 _SCATTER_METHODS = {"sum": "add", "replace": "set", "min": "min", "max": "max"}
 
@@ -47,3 +58,11 @@ def scatter_nd(indices, updates, /, shape, *, reduction="sum"):
 
 def one_hot(indices, depth, /, *, dtype=None):
     return jax.nn.one_hot(indices, depth, dtype=native_dtype(dtype) or jnp.float32)
+
+
+def gather_flat(params, indices, /):
+    return jnp.take(params, jnp.asarray(indices))  # flattened; jnp.take refuses Python lists
+
+
+def scatter_flat(indices, updates, /, size, *, reduction="sum"):
+    return scatter_nd(jnp.asarray(indices)[..., None], updates, (size,), reduction=reduction)

@@ -1,4 +1,5 @@
-"""numpy backend: gathering and scattering."""
+"""numpy backend: gathering and scattering (``gather_flat`` and ``indices_where`` are numpy's
+``take`` and ``argwhere``)."""
 
 from __future__ import annotations
 
@@ -6,7 +7,18 @@ import numpy as np
 
 from ivy.backends.numpy._helpers import native_dtype
 
-__all__ = ["take", "gather_nd", "scatter_nd", "one_hot"]
+__all__ = [
+    "take",
+    "gather_nd",
+    "scatter_nd",
+    "one_hot",
+    "gather_flat",
+    "scatter_flat",
+    "indices_where",
+]
+
+gather_flat = np.take  # (params, indices): flattened, any index shape, negative from the end
+indices_where = np.argwhere
 
 _REDUCERS = {"sum": np.add, "min": np.minimum, "max": np.maximum}
 
@@ -57,3 +69,7 @@ def _extreme(dtype, largest):
 def one_hot(indices, depth, /, *, dtype=None):
     indices = np.asarray(indices)
     return (indices[..., None] == np.arange(depth)).astype(native_dtype(dtype) or np.float32)
+
+
+def scatter_flat(indices, updates, /, size, *, reduction="sum"):
+    return scatter_nd(np.asarray(indices)[..., None], updates, (size,), reduction=reduction)

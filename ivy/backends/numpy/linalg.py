@@ -1,26 +1,116 @@
-"""numpy backend: linear algebra."""
+"""numpy backend: linear algebra, the Array API ``linalg`` extension.
+
+numpy 2's ``np.linalg`` has the Array API signatures and returns namedtuples (``EighResult``,
+``QRResult``, ``SlogdetResult``, ``SVDResult``); it is exported as is where it agrees with ivy.
+The shims only compute bool and integer inputs of the floating-point functions in float32, the
+default float dtype (numpy would use float64).
+"""
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["matmul", "cross", "svd", "inv", "pinv", "vector_norm"]
+__all__ = [
+    "cholesky",
+    "cross",
+    "det",
+    "diagonal",
+    "eigh",
+    "eigvalsh",
+    "inv",
+    "matmul",
+    "matrix_norm",
+    "matrix_power",
+    "matrix_rank",
+    "matrix_transpose",
+    "outer",
+    "pinv",
+    "qr",
+    "slogdet",
+    "solve",
+    "svd",
+    "svdvals",
+    "tensordot",
+    "trace",
+    "vecdot",
+    "vector_norm",
+]
 
 matmul = np.matmul
-inv = np.linalg.inv
+diagonal = np.linalg.diagonal
+matrix_transpose = np.linalg.matrix_transpose
+outer = np.linalg.outer
+tensordot = np.linalg.tensordot
+trace = np.linalg.trace  # bool and small integers accumulate in int64 (unsigned: uint64)
+vecdot = np.linalg.vecdot
+
+
+def _floating(x):
+    """``x`` as an array of a floating dtype: bool and integers become float32."""
+    x = np.asarray(x)
+    return x if x.dtype.kind in "fc" else x.astype(np.float32)
+
+
+def cholesky(x, /, *, upper=False):
+    return np.linalg.cholesky(_floating(x), upper=upper)
 
 
 def cross(x1, x2, /, *, axis=-1):
     return np.cross(x1, x2, axis=axis)
 
 
-def svd(x, /, *, full_matrices=True):
-    return np.linalg.svd(x, full_matrices=full_matrices)
+def det(x, /):
+    return np.linalg.det(_floating(x))
+
+
+def eigh(x, /):
+    return np.linalg.eigh(_floating(x))
+
+
+def eigvalsh(x, /):
+    return np.linalg.eigvalsh(_floating(x))
+
+
+def inv(x, /):
+    return np.linalg.inv(_floating(x))
+
+
+def matrix_norm(x, /, *, keepdims=False, ord="fro"):
+    return np.linalg.matrix_norm(_floating(x), keepdims=keepdims, ord=ord)
+
+
+def matrix_power(x, n, /):
+    """Integer matrices stay integer for ``n >= 0``; a negative ``n`` inverts in float32."""
+    return np.linalg.matrix_power(x if n >= 0 else _floating(x), n)
+
+
+def matrix_rank(x, /, *, rtol=None):
+    return np.linalg.matrix_rank(_floating(x), rtol=rtol)
 
 
 def pinv(x, /, *, rtol=None):
-    return np.linalg.pinv(x, rtol=rtol)
+    return np.linalg.pinv(_floating(x), rtol=rtol)
+
+
+def qr(x, /, *, mode="reduced"):
+    return np.linalg.qr(_floating(x), mode=mode)
+
+
+def slogdet(x, /):
+    return np.linalg.slogdet(_floating(x))
+
+
+def solve(x1, x2, /):
+    return np.linalg.solve(_floating(x1), _floating(x2))
+
+
+def svd(x, /, *, full_matrices=True):
+    return np.linalg.svd(_floating(x), full_matrices=full_matrices)
+
+
+def svdvals(x, /):
+    return np.linalg.svdvals(_floating(x))
 
 
 def vector_norm(x, /, *, axis=None, keepdims=False, ord=2):
-    return np.linalg.vector_norm(x, axis=axis, keepdims=keepdims, ord=ord)
+    return np.linalg.vector_norm(_floating(x), axis=axis, keepdims=keepdims, ord=ord)

@@ -6,7 +6,15 @@ import tensorflow as tf
 
 from ivy.backends.tensorflow._helpers import native_dtype, tensor
 
-__all__ = ["take", "gather_nd", "scatter_nd", "one_hot"]
+__all__ = [
+    "take",
+    "gather_nd",
+    "scatter_nd",
+    "one_hot",
+    "gather_flat",
+    "scatter_flat",
+    "indices_where",
+]
 
 gather_nd = tf.gather_nd
 
@@ -54,3 +62,19 @@ def one_hot(indices, depth, /, *, dtype=None):
     if dt is tf.bool:  # tf's default on and off values are the numbers 1 and 0
         return tf.one_hot(indices, depth, on_value=True, off_value=False, dtype=dt)
     return tf.one_hot(indices, depth, dtype=dt)
+
+
+def gather_flat(params, indices, /):
+    return take(params, indices)  # take with axis=None: the flattened params, any index shape
+
+
+def scatter_flat(indices, updates, /, size, *, reduction="sum"):
+    indices = tf.convert_to_tensor(indices)[..., None]
+    return scatter_nd(indices, updates, (size,), reduction=reduction)
+
+
+def indices_where(x, /):
+    x = tensor(x)
+    if x.shape.rank == 0:  # tf.where refuses 0-d input: one row of no coordinates, or none
+        return tf.where(tf.reshape(x, [1]))[:, :0]
+    return tf.where(x)

@@ -1,4 +1,9 @@
-"""tensorflow backend: linear algebra."""
+"""tensorflow backend: linear algebra, the Array API ``linalg`` extension.
+
+Shims over ``tf.linalg``: dtype promotion (tf requires equal dtypes), bool and integer inputs of
+the floating-point functions computed in float32, namedtuple results, batch broadcasting where tf
+requires equal batch shapes, and the matrix norms, powers and ranks tf does not have.
+"""
 
 from __future__ import annotations
 
@@ -7,11 +12,43 @@ import math
 import numpy as np
 import tensorflow as tf
 
-from ivy.backends.tensorflow._helpers import FAST_TYPES, REFUSED, floating, promote
+from ivy.backends.tensorflow._helpers import (
+    FAST_TYPES,
+    REFUSED,
+    floating,
+    native_dtype,
+    promote,
+    tensor,
+)
+from ivy.core.linalg import EighResult, QRResult, SlogdetResult, SVDResult
 
-__all__ = ["matmul", "cross", "svd", "inv", "pinv", "vector_norm"]
+__all__ = [
+    "cholesky",
+    "cross",
+    "det",
+    "diagonal",
+    "eigh",
+    "eigvalsh",
+    "inv",
+    "matmul",
+    "matrix_norm",
+    "matrix_power",
+    "matrix_rank",
+    "matrix_transpose",
+    "outer",
+    "pinv",
+    "qr",
+    "slogdet",
+    "solve",
+    "svd",
+    "svdvals",
+    "tensordot",
+    "trace",
+    "vecdot",
+    "vector_norm",
+]
 
-inv = tf.linalg.inv
+matrix_transpose = tf.linalg.matrix_transpose
 
 
 def matmul(x1, x2, /):
@@ -31,6 +68,11 @@ def matmul(x1, x2, /):
     return out
 
 
+def cholesky(x, /, *, upper=False):
+    lower = tf.linalg.cholesky(floating(x))
+    return tf.linalg.adjoint(lower) if upper else lower
+
+
 def cross(x1, x2, /, *, axis=-1):
     x1, x2 = promote(x1, x2)
     a0, a1, a2 = tf.unstack(x1, 3, axis=axis)
@@ -38,9 +80,84 @@ def cross(x1, x2, /, *, axis=-1):
     return tf.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=axis)
 
 
-def svd(x, /, *, full_matrices=True):
-    s, u, v = tf.linalg.svd(x, full_matrices=full_matrices)
-    return u, s, tf.linalg.adjoint(v)
+def det(x, /):
+    return tf.linalg.det(floating(x))
+
+
+def diagonal(x, /, *, offset=0):
+    x = tensor(x)
+    rows, cols = x.shape[-2], x.shape[-1]
+    if rows is not None and cols is not None and not -rows < offset < cols:
+        return tf.zeros(tf.concat([tf.shape(x)[:-2], [0]], 0), x.dtype)  # beyond the matrix
+    return tf.linalg.diag_part(x, k=offset)
+
+
+def eigh(x, /):
+    return EighResult(*tf.linalg.eigh(floating(x)))
+
+
+def eigvalsh(x, /):
+    return tf.linalg.eigvalsh(floating(x))
+
+
+def inv(x, /):
+    return tf.linalg.inv(floating(x))
+
+
+def matrix_norm(x, /, *, keepdims=False, ord="fro"):
+    x = floating(x)
+    if ord == "fro":
+        out = tf.math.sqrt(tf.math.reduce_sum(tf.math.square(tf.math.abs(x)), axis=[-2, -1]))
+    elif ord == "nuc":
+        out = tf.math.reduce_sum(svdvals(x), axis=-1)
+    elif ord in (2, -2):
+        extreme = tf.math.reduce_max if ord == 2 else tf.math.reduce_min
+        out = extreme(svdvals(x), axis=-1)
+    elif ord in (1, -1, math.inf, -math.inf):
+        summed = -2 if ord in (1, -1) else -1  # column sums for 1, row sums for inf
+        extreme = tf.math.reduce_max if ord > 0 else tf.math.reduce_min
+        out = extreme(tf.math.reduce_sum(tf.math.abs(x), axis=summed), axis=-1)
+    else:
+        raise ValueError(
+            f"matrix_norm: unknown ord {ord!r}; use 'fro', 'nuc', 1, -1, 2, -2, inf or -inf."
+        )
+    return out[..., None, None] if keepdims else out
+
+
+def matrix_power(x, n, /):
+    """Repeated squaring; integer matrices stay integer for ``n >= 0``, a negative ``n`` inverts
+    (in float32 for integers)."""
+    x = tensor(x)
+    if n < 0:
+        x, n = inv(x), -n
+    if n == 0:
+        shape = tf.shape(x)
+        return tf.eye(shape[-1], batch_shape=shape[:-2], dtype=x.dtype)
+    result = None
+    while True:
+        if n & 1:
+            result = x if result is None else matmul(result, x)
+        n >>= 1
+        if not n:
+            return result
+        x = matmul(x, x)
+
+
+def matrix_rank(x, /, *, rtol=None):
+    x = floating(x)
+    s = svdvals(x)
+    if rtol is None:
+        rows, cols = x.shape[-2:]
+        rtol = max(rows, cols) * np.finfo(s.dtype.as_numpy_dtype).eps
+    else:
+        rtol = tf.cast(rtol, s.dtype)[..., None]  # a scalar, or one per matrix of the stack
+    tol = rtol * tf.math.reduce_max(s, axis=-1, keepdims=True)
+    return tf.math.count_nonzero(s > tol, axis=-1, dtype=tf.int64)
+
+
+def outer(x1, x2, /):
+    x1, x2 = promote(x1, x2)
+    return x1[:, None] * x2[None, :]
 
 
 def pinv(x, /, *, rtol=None):
@@ -53,6 +170,66 @@ def pinv(x, /, *, rtol=None):
             size = max(rows, cols)
         rtol = size * np.finfo(x.dtype.real_dtype.as_numpy_dtype).eps
     return tf.linalg.pinv(x, rcond=rtol)
+
+
+def qr(x, /, *, mode="reduced"):
+    if mode not in ("reduced", "complete"):
+        raise ValueError(f"qr: unknown mode {mode!r}; use 'reduced' or 'complete'.")
+    return QRResult(*tf.linalg.qr(floating(x), full_matrices=mode == "complete"))
+
+
+def slogdet(x, /):
+    return SlogdetResult(*tf.linalg.slogdet(floating(x)))
+
+
+def solve(x1, x2, /):
+    """``x2`` is a vector when 1-D, else a stack of matrices; batch shapes broadcast."""
+    x1, x2 = promote(floating(x1), floating(x2))
+    vector = x2.shape.rank == 1
+    if vector:
+        x2 = x2[:, None]
+    s1, s2 = tf.shape(x1), tf.shape(x2)
+    batch = tf.broadcast_dynamic_shape(s1[:-2], s2[:-2])
+    x1 = tf.broadcast_to(x1, tf.concat([batch, s1[-2:]], 0))
+    x2 = tf.broadcast_to(x2, tf.concat([batch, s2[-2:]], 0))
+    out = tf.linalg.solve(x1, x2)
+    return out[..., 0] if vector else out
+
+
+def svd(x, /, *, full_matrices=True):
+    s, u, v = tf.linalg.svd(floating(x), full_matrices=full_matrices)
+    return SVDResult(u, s, tf.linalg.adjoint(v))
+
+
+def svdvals(x, /):
+    return tf.linalg.svd(floating(x), compute_uv=False)
+
+
+def tensordot(x1, x2, /, *, axes=2):
+    x1, x2 = promote(x1, x2)
+    if not isinstance(axes, int):  # tf.tensordot wants non-negative axes
+        a1, a2 = axes
+        r1, r2 = x1.shape.rank, x2.shape.rank
+        axes = ([a % r1 for a in a1], [a % r2 for a in a2])
+    return tf.tensordot(x1, x2, axes)
+
+
+def trace(x, /, *, offset=0, dtype=None):
+    """Bool and small integers accumulate in int64 (unsigned ones in uint64)."""
+    diag = diagonal(x, offset=offset)
+    dt = native_dtype(dtype)
+    if dt is None:
+        dt = diag.dtype
+        if dt == tf.bool or (dt.is_integer and dt.size < 8):
+            dt = tf.uint64 if dt.is_unsigned else tf.int64
+    return tf.math.reduce_sum(tf.cast(diag, dt), axis=-1)
+
+
+def vecdot(x1, x2, /, *, axis=-1):
+    x1, x2 = promote(x1, x2)
+    if x1.dtype.is_complex:
+        x1 = tf.math.conj(x1)
+    return tf.math.reduce_sum(x1 * x2, axis=axis)
 
 
 def vector_norm(x, /, *, axis=None, keepdims=False, ord=2):

@@ -8,7 +8,17 @@ import torch
 
 from ivy.backends.torch._helpers import native_dtype
 
-__all__ = ["take", "gather_nd", "scatter_nd", "one_hot"]
+__all__ = [
+    "take",
+    "gather_nd",
+    "scatter_nd",
+    "one_hot",
+    "gather_flat",
+    "scatter_flat",
+    "indices_where",
+]
+
+indices_where = torch.argwhere
 
 _REDUCE = {"min": "amin", "max": "amax"}
 
@@ -54,3 +64,13 @@ def one_hot(indices, depth, /, *, dtype=None):
     indices = torch.as_tensor(indices)
     hot = indices[..., None] == torch.arange(depth, device=indices.device)
     return hot.to(native_dtype(dtype) or torch.float32)
+
+
+def gather_flat(params, indices, /):
+    indices = torch.as_tensor(indices, device=params.device)
+    return torch.take(params, indices.long())  # torch.take wants int64 indices
+
+
+def scatter_flat(indices, updates, /, size, *, reduction="sum"):
+    indices = torch.as_tensor(indices)[..., None]
+    return scatter_nd(indices, updates, (size,), reduction=reduction)

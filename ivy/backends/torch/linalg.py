@@ -1,18 +1,67 @@
-"""torch backend: linear algebra (torch.linalg, whose defaults are the Array API's: ``pinv``'s
-rtol defaults to ``max(M, N) * eps``)."""
+"""torch backend: linear algebra, the Array API ``linalg`` extension (torch.linalg).
+
+torch.linalg's defaults are the Array API's (``pinv``'s and ``matrix_rank``'s rtol defaults to
+``max(M, N) * eps``), and its results are named (``eigh(x).eigenvalues``, ``svd(x).Vh``). The
+shims compute bool and integer inputs of the floating-point functions in float32, promote mixed
+dtypes where torch requires equal ones, and rename ``axis`` to ``dim``.
+"""
 
 from __future__ import annotations
 
 import torch
 
-from ivy.backends.torch._helpers import reduction_args
+from ivy.backends.torch._helpers import native_dtype, reduction_args
 
-__all__ = ["matmul", "cross", "svd", "inv", "pinv", "vector_norm"]
+__all__ = [
+    "cholesky",
+    "cross",
+    "det",
+    "diagonal",
+    "eigh",
+    "eigvalsh",
+    "inv",
+    "matmul",
+    "matrix_norm",
+    "matrix_power",
+    "matrix_rank",
+    "matrix_transpose",
+    "outer",
+    "pinv",
+    "qr",
+    "slogdet",
+    "solve",
+    "svd",
+    "svdvals",
+    "tensordot",
+    "trace",
+    "vecdot",
+    "vector_norm",
+]
 
 matmul = torch.matmul
-svd = torch.linalg.svd
-inv = torch.linalg.inv
-pinv = torch.linalg.pinv
+diagonal = torch.linalg.diagonal  # (x, *, offset=0) over the last two axes
+outer = torch.outer  # promotes mixed dtypes itself
+
+_WIDE = {torch.bool: torch.int64, torch.uint8: torch.uint64, torch.uint16: torch.uint64}
+_WIDE.update({torch.uint32: torch.uint64, torch.int8: torch.int64, torch.int16: torch.int64})
+_WIDE[torch.int32] = torch.int64
+
+
+def _floating(x):
+    """``x`` as a tensor of a floating dtype: bool and integers become float32."""
+    return x if x.is_floating_point() or x.is_complex() else x.to(torch.float32)
+
+
+def _promoted(x1, x2):
+    """Both tensors in their common dtype (torch's tensordot and vecdot require one)."""
+    if x1.dtype == x2.dtype:
+        return x1, x2
+    dtype = torch.result_type(x1, x2)
+    return x1.to(dtype), x2.to(dtype)
+
+
+def cholesky(x, /, *, upper=False):
+    return torch.linalg.cholesky(_floating(x), upper=upper)
 
 
 def cross(x1, x2, /, *, axis=-1):
@@ -21,6 +70,92 @@ def cross(x1, x2, /, *, axis=-1):
     return torch.linalg.cross(x1, x2, dim=axis)
 
 
+def det(x, /):
+    return torch.linalg.det(_floating(x))
+
+
+def eigh(x, /):
+    return torch.linalg.eigh(_floating(x))
+
+
+def eigvalsh(x, /):
+    return torch.linalg.eigvalsh(_floating(x))
+
+
+def inv(x, /):
+    return torch.linalg.inv(_floating(x))
+
+
+def matrix_norm(x, /, *, keepdims=False, ord="fro"):
+    return torch.linalg.matrix_norm(_floating(x), ord=ord, dim=(-2, -1), keepdim=keepdims)
+
+
+def matrix_power(x, n, /):
+    """Integer matrices stay integer for ``n >= 0``; a negative ``n`` inverts in float32."""
+    return torch.linalg.matrix_power(x if n >= 0 else _floating(x), n)
+
+
+def matrix_rank(x, /, *, rtol=None):
+    return torch.linalg.matrix_rank(_floating(x), rtol=rtol)
+
+
+def matrix_transpose(x, /):
+    return x.mT
+
+
+def pinv(x, /, *, rtol=None):
+    return torch.linalg.pinv(_floating(x), rtol=rtol)
+
+
+def qr(x, /, *, mode="reduced"):
+    return torch.linalg.qr(_floating(x), mode=mode)
+
+
+def slogdet(x, /):
+    return torch.linalg.slogdet(_floating(x))
+
+
+def solve(x1, x2, /):
+    """``x2`` is a vector only when 1-D (torch would also read ``(..., M)`` as vectors)."""
+    x1, x2 = _promoted(_floating(x1), _floating(x2))
+    if x2.ndim == 1:
+        return torch.linalg.solve(x1, x2)
+    batch = torch.broadcast_shapes(x1.shape[:-2], x2.shape[:-2])
+    x1 = x1.expand(*batch, *x1.shape[-2:])
+    x2 = x2.expand(*batch, *x2.shape[-2:])
+    return torch.linalg.solve(x1, x2)
+
+
+def svd(x, /, *, full_matrices=True):
+    return torch.linalg.svd(_floating(x), full_matrices=full_matrices)
+
+
+def svdvals(x, /):
+    return torch.linalg.svdvals(_floating(x))
+
+
+def tensordot(x1, x2, /, *, axes=2):
+    x1, x2 = _promoted(x1, x2)
+    return torch.tensordot(x1, x2, dims=axes)
+
+
+def trace(x, /, *, offset=0, dtype=None):
+    """Bool and small integers accumulate in int64 (unsigned ones in uint64, computed in int64:
+    the bits are the same modulo 2**64)."""
+    diag = torch.diagonal(x, offset, -2, -1)
+    dtype = native_dtype(dtype) or _WIDE.get(diag.dtype, diag.dtype)
+    if dtype in (torch.uint64, torch.uint32, torch.uint16):
+        return diag.sum(-1, dtype=torch.int64).to(dtype)
+    return diag.sum(-1, dtype=dtype)
+
+
+def vecdot(x1, x2, /, *, axis=-1):
+    x1, x2 = _promoted(x1, x2)
+    if not (x1.is_floating_point() or x1.is_complex()):  # torch.linalg.vecdot refuses integers
+        return torch.sum(x1 * x2, dim=axis)
+    return torch.linalg.vecdot(x1, x2, dim=axis)
+
+
 def vector_norm(x, /, *, axis=None, keepdims=False, ord=2):
-    x, dim, keepdim = reduction_args(x, axis, keepdims)
+    x, dim, keepdim = reduction_args(_floating(x), axis, keepdims)
     return torch.linalg.vector_norm(x, ord=ord, dim=dim, keepdim=keepdim)

@@ -1,0 +1,14 @@
+"""tensorflow backend: linear algebra beyond the Array API extension (``einsum`` promotes mixed
+dtypes, which tf.einsum refuses)."""
+
+from __future__ import annotations
+
+import tensorflow as tf
+
+from ivy.backends.tensorflow._helpers import promote
+
+__all__ = ["einsum"]
+
+
+def einsum(equation, /, *operands):
+    return tf.einsum(equation, *promote(*operands))
