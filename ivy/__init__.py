@@ -19,6 +19,7 @@ from ivy import (
     nest,  # noqa: F401 - ivy.nest: map, flatten, unflatten nests
     stateful,  # noqa: F401 - ivy.stateful: modules, layers, optimizers, checkpoints
 )
+from ivy.backends._assemble import ARRAY_API_CONSTANTS, ARRAY_API_VERSION
 from ivy.core import *  # noqa: F403 - the public API is listed in ivy.core.__all__
 from ivy.core._extensions import agnostic_extensions
 from ivy.dtypes import *  # noqa: F403
@@ -40,11 +41,8 @@ __version__ = "0.1.0"
 _EXTENSIONS = agnostic_extensions()
 globals().update(_EXTENSIONS)
 
-e = 2.718281828459045
-pi = 3.141592653589793
-inf = float("inf")
-nan = float("nan")
-newaxis = None
+globals().update(ARRAY_API_CONSTANTS)
+__array_api_version__ = ARRAY_API_VERSION
 
 _NAMESPACES = framework_handler.available_frameworks()
 

@@ -14,6 +14,15 @@ from ivy import core
 from ivy.core._extensions import ExtensionNamespace, extension_groups
 from ivy.dtypes import DTYPE_NAMES
 
+ARRAY_API_VERSION = "2023.12"
+ARRAY_API_CONSTANTS = {
+    "e": 2.718281828459045,
+    "pi": 3.141592653589793,
+    "inf": float("inf"),
+    "nan": float("nan"),
+    "newaxis": None,
+}
+
 
 def assemble(package: str, namespace: dict[str, Any], native_dtypes: dict[str, Any]) -> None:
     """Fill ``namespace`` (a backend package's globals) with the public names of its modules.
@@ -38,6 +47,10 @@ def assemble(package: str, namespace: dict[str, Any], native_dtypes: dict[str, A
         raise ImportError(f"{package} defines no native dtype for {sorted(missing)}")
     namespace.update(native_dtypes)
     exported.update(DTYPE_NAMES)
+    # What makes a backend namespace usable as an Array API namespace.
+    namespace.update(ARRAY_API_CONSTANTS)
+    exported.update(ARRAY_API_CONSTANTS)
+    namespace["__array_api_version__"] = ARRAY_API_VERSION
     backend = package.rpartition(".")[2]
     for ext, group in extension_groups(core.GROUPS):
         call = namespace[ext] if ext in group.__all__ else None  # fft: callable namespace
