@@ -61,6 +61,7 @@ class Recorder:
         self.refusals: dict[tuple[str, str], str] = {}
         self.active: list[str] = []  # agnostic compositions being run
         self.outcomes = {"passed": 0, "failed": 0, "skipped": 0}
+        self.failures: list[str] = []  # tests that failed under the recorder
 
     # -- wrapping ------------------------------------------------------------------------------
 
@@ -159,6 +160,8 @@ class Recorder:
         if report.when == "call" or (report.when == "setup" and not report.passed):
             key = "passed" if report.passed else "skipped" if report.skipped else "failed"
             self.outcomes[key] += 1
+            if key == "failed":
+                self.failures.append(report.nodeid)
         if report.when != "call":
             return
         if report.passed:
@@ -171,7 +174,7 @@ class Recorder:
 
     def dump(self, path):
         data = {"exercised": self.exercised, "unsupported": self.unsupported}
-        data["outcomes"] = self.outcomes
+        data["outcomes"], data["failures"] = self.outcomes, self.failures
         Path(path).write_text(json.dumps(data))
 
 
@@ -193,6 +196,7 @@ def _merge(paths):
     exercised = defaultdict(dict)
     unsupported = defaultdict(dict)
     outcomes = defaultdict(int)
+    outcomes["failures"] = []
     for path in paths:
         data = json.loads(Path(path).read_text())
         for name, per_backend in data["exercised"].items():
@@ -203,6 +207,7 @@ def _merge(paths):
             unsupported[name].update(per_backend)
         for key, n in data["outcomes"].items():
             outcomes[key] += n
+        outcomes["failures"] += data["failures"]
     return exercised, unsupported, outcomes
 
 
@@ -262,6 +267,9 @@ def render(exercised, unsupported, outcomes, backends, test_paths, seconds) -> t
         lines.append("")
     lines += ["## Summary", "", "| backend | tested functions |", "|---|---|"]
     lines += [f"| {b} | {totals[b]} / {count} |" for b in backends]
+    if outcomes["failures"]:
+        lines += ["", "Tests that failed under the recorder (their calls are not counted):", ""]
+        lines += [f"- `{nodeid}`" for nodeid in outcomes["failures"]]
     lines += ["", "## Gaps and their reasons", ""]
     if gaps:
         lines += ["| function | backend | reason |", "|---|---|---|"]
