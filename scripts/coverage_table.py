@@ -9,9 +9,12 @@ How it is measured (nothing is guessed from names):
    ``(function, backend)`` when called. The framework-agnostic dispatchers look their backend
    function up in the namespace at call time, so ``ivy.svd(x)`` is seen as well as
    ``ivy.torch.svd(x)``. A framework-agnostic composition (``ivy.zero_pad(x)``) is wrapped too: it
-   is counted on the backends whose functions it calls.
-2. The calls made while a test runs are kept only when the test passes; a call that raises
-   ``ivy.UnsupportedError`` in a passing test is recorded as a tested refusal.
+   is counted on the backends whose functions it calls, itself or through the function it
+   returns (``ivy.grad(loss)(xs)``).
+2. The calls made while a test runs are kept only when the test passes (a call that raises, in
+   a passing test, checked an error path and counts). A call that raises
+   ``ivy.UnsupportedError`` is recorded as a tested refusal; a cell is ✓ as soon as one call
+   succeeded. Tests that fail under the recorder are listed in the output.
 3. Every public function of ``ivy.core`` (``ivy.core.__all__``, by group) gets one row and every
    backend one column. A cell with no passing call is a gap and must have a reason in
    :data:`KNOWN_GAPS`; ``--check`` fails when one has none.
@@ -108,8 +111,9 @@ class Recorder:
                 out = fn(*args, **kwargs)
             finally:
                 recorder.active.pop()
-            if callable(out) and not hasattr(out, "shape"):
-                return recorder._composition(out, name)
+            given = (*args, *kwargs.values())
+            if callable(out) and not hasattr(out, "shape") and all(out is not a for a in given):
+                return recorder._composition(out, name)  # a new function (not one passed in)
             return out
 
         return wrapper
