@@ -1,13 +1,21 @@
-"""Hypothesis strategies shared by the core tests: numpy arrays that the tests then convert to
-each backend with the framework's own functions."""
+"""Hypothesis strategies shared by the core tests.
+
+Arrays are drawn with ``hypothesis.extra.array_api`` strategies built from ``ivy.numpy`` (an
+Array API namespace), so the draws carry numpy arrays the tests use directly as float64
+references and convert to each backend with the framework's own functions. Strategies built from
+every other backend namespace are exercised in ``test_array_api_strategies.py``.
+"""
 
 from __future__ import annotations
 
 import math
+import warnings
+from functools import cache
 
-import hypothesis.extra.numpy as hnp
-import numpy as np
 from hypothesis import strategies as st
+from hypothesis.extra.array_api import make_strategies_namespace
+
+import ivy
 
 FLOAT_DTYPES = ("float32", "float64")
 INT_DTYPES = ("int32", "int64")
@@ -48,9 +56,18 @@ def quarters(lo: int, hi: int) -> st.SearchStrategy:
     return st.integers(4 * lo, 4 * hi).map(lambda i: i / 4)
 
 
+@cache
+def array_api_strategies():
+    """``hypothesis.extra.array_api`` strategies over the ``ivy.numpy`` namespace."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # hypothesis notes the namespace is not one it knows
+        return make_strategies_namespace(ivy.numpy, api_version="2023.12")
+
+
 def arrays(dtype: str, elements: st.SearchStrategy, shape=SHAPES) -> st.SearchStrategy:
-    """numpy arrays of ``dtype`` with ``elements``, of a shape drawn from ``shape``."""
-    return hnp.arrays(np.dtype(dtype), shape, elements=elements)
+    """numpy arrays of ``dtype`` with ``elements``, of a shape drawn from ``shape`` (a shape or a
+    strategy of shapes), drawn by the Array API ``arrays`` strategy."""
+    return array_api_strategies().arrays(dtype, shape, elements=elements)
 
 
 def axis_arguments(ndim: int, tuples: bool = True) -> st.SearchStrategy:
