@@ -185,6 +185,10 @@ def test_compiled_training_step_equals_eager(request, compiled_backend):
     compiled = opt.training_step(loss_fn, compile=True)
     v_e = v_c = model.v
     s_e = s_c = opt.init(model.v)
+    if compiled_backend == "torch":
+        import torch._dynamo
+
+        torch._dynamo.utils.counters.clear()
     for _ in range(3):
         loss_e, v_e, s_e = eager(v_e, s_e, x, y)
         loss_c, v_c, s_c = compiled(v_c, s_c, x, y)
@@ -192,6 +196,10 @@ def test_compiled_training_step_equals_eager(request, compiled_backend):
     tol = dict(rtol=1e-4, atol=1e-6)
     nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), compiled_backend, **tol), v_c, v_e)
     nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), compiled_backend, **tol), s_c, s_e)
+    if compiled_backend == "torch":
+        # forward, autograd.grad and the update form one graph, with no break around the grads
+        assert dict(torch._dynamo.utils.counters["graph_break"]) == {}
+        assert torch._dynamo.utils.counters["stats"]["unique_graphs"] == 1
 
 
 def test_stateful_forms_equal_the_functional_step(diff_backend):
