@@ -173,3 +173,58 @@ def test_torch_falls_back_to_eager_when_compile_cannot_run(request, monkeypatch)
     with pytest.warns(RuntimeWarning, match="does not support"):
         fn = ivy.torch.compile_fn(torch.sin)
     assert fn is torch.sin
+
+
+def test_tensorflow_calls_after_the_first_skip_argument_matching_and_stay_correct(request):
+    """tensorflow's compile_fn calls a known trace's flat entry point directly from the second
+    call of a signature on (see ivy/backends/tensorflow/compilation.py). Every kind of call
+    must still give tf.function's results: new shapes and dtypes, changed static values,
+    variables, a gradient tape outside, and a call from inside another graph."""
+    if "tensorflow" not in request.config.ivy_backends:
+        pytest.skip("tensorflow not selected")
+    import tensorflow as tf
+
+    traces = []
+
+    def affine(v, x, *, scale):
+        traces.append(1)
+        return {"y": ivy.matmul(x, v["w"]) * scale + v["b"], "n": ivy.sum(x)}, scale
+
+    compiled = ivy.compile_fn(affine, f="tensorflow")
+    w, b = rng.normal(size=(3, 2)), rng.normal(size=2)
+
+    def expected(x, scale):
+        return {"y": x @ w * scale + b, "n": x.sum()}, scale
+
+    def check(out, x, scale):
+        exp = expected(x, scale)
+        assert out[1] == exp[1]
+        for key in ("y", "n"):
+            np.testing.assert_allclose(numpy_of(out[0][key]), exp[0][key], **COMPILED_TOL)
+
+    v = _on("tensorflow", {"w": w, "b": b})
+    for x_np in (rng.normal(size=(4, 3)), rng.normal(size=(4, 3)), rng.normal(size=(6, 3))):
+        for scale in (2.0, 2.0, 3.0):
+            check(compiled(v, _on("tensorflow", x_np), scale=scale), x_np, scale)
+    assert len(traces) == 4  # one per (batch size, scale): repeated signatures reuse a trace
+    assert len(compiled._traces) == 4  # and take the fast path
+
+    x_np = rng.normal(size=(4, 3))
+    x = _on("tensorflow", x_np)
+    variables = {"w": tf.Variable(w), "b": tf.Variable(b)}  # variables: tf.function's path
+    for _ in range(2):
+        check(compiled(variables, x, scale=2.0), x_np, 2.0)
+    with tf.GradientTape() as tape:  # a tape outside records through the fast path
+        tape.watch(v["w"])
+        loss = tf.reduce_sum(compiled(v, x, scale=2.0)[0]["y"])
+    np.testing.assert_allclose(
+        numpy_of(tape.gradient(loss, v["w"])), 2.0 * x_np.sum(0)[:, None].repeat(2, 1), 1e-12
+    )
+    inside = tf.function(lambda v, x: compiled(v, x, scale=2.0)[0]["y"], autograph=False)
+    np.testing.assert_allclose(numpy_of(inside(v, x)), expected(x_np, 2.0)[0]["y"], 1e-12)
+    x32 = tf.cast(x, tf.float32)
+    v32 = nest.map_nest(lambda a: tf.cast(a, tf.float32), v)
+    for _ in range(2):
+        out = compiled(v32, x32, scale=2.0)[0]["y"]
+        assert out.dtype == tf.float32
+        np.testing.assert_allclose(numpy_of(out), expected(x_np, 2.0)[0]["y"], rtol=1e-5)
