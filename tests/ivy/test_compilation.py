@@ -228,3 +228,31 @@ def test_tensorflow_calls_after_the_first_skip_argument_matching_and_stay_correc
         out = compiled(v32, x32, scale=2.0)[0]["y"]
         assert out.dtype == tf.float32
         np.testing.assert_allclose(numpy_of(out), expected(x_np, 2.0)[0]["y"], rtol=1e-5)
+
+
+@pytest.mark.parametrize("committed", [False, True])
+def test_jax_compiles_once_whether_or_not_arrays_are_placed(request, committed):
+    """The PRNG key that compile_fn threads through follows its neighbours' placement, so a
+    step whose outputs feed its next call compiles once (not again at the second call)."""
+    if "jax" not in request.config.ivy_backends:
+        pytest.skip("jax not selected")
+    import jax
+
+    ivy.seed(0)
+    v = _on("jax", PARAMS)
+    if committed:
+        v = jax.device_put(v, jax.devices("cpu")[0])
+    x, y = _on("jax", BATCH)
+
+    def noisy_step(v, x, y):
+        loss, v = train_step(v, x + 0.01 * ivy.random_normal(shape=(8, 3), f="jax"), y)
+        return loss, v
+
+    compiled = ivy.compile_fn(noisy_step, f="jax")
+    losses = []
+    for _ in range(3):
+        loss, v = compiled(v, x, y)
+        losses.append(float(loss))
+    assert compiled.jitted._cache_size() == 1
+    assert len(set(losses)) == 3  # the noise is drawn anew on every call
+    assert all(leaf.committed == committed for leaf in jax.tree_util.tree_leaves(v))

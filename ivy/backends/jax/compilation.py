@@ -54,6 +54,21 @@ def _static_args(sig, static_argnums, static_argnames):
     return shifted or None, tuple(names) or None
 
 
+def _committed_like(key, arguments):
+    """``key`` placed where the first committed array among ``arguments`` lives.
+
+    jax.jit compiles once per committed/uncommitted pattern of its inputs, and its outputs are
+    committed when any input is. A fresh key (``ivy.seed``) is uncommitted; passed next to
+    committed arrays (parameters placed with ``device=``), it would come back committed and the
+    second call would compile the function again. Committing it up front, like its neighbours,
+    gives one compilation; next to uncommitted arrays only, it stays uncommitted, as they do.
+    """
+    for leaf in jax.tree_util.tree_leaves(arguments):
+        if isinstance(leaf, jax.Array) and not isinstance(leaf, _Tracer) and leaf.committed:
+            return jax.device_put(key, leaf.sharding)
+    return key
+
+
 def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
     state = _random._state
 
@@ -81,6 +96,8 @@ def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
         key = state.key
         if key is None:  # never seeded: next_key seeds from the OS's entropy
             key = state.next_key()
+        if not isinstance(key, _Tracer) and not key.committed:
+            key = _committed_like(key, (args, kwargs))
         out, new_key = jitted(key, *args, **kwargs)
         if isinstance(new_key, _Tracer) and not isinstance(key, _Tracer):
             state.next_key()  # under an outer trace: advance the key concretely (and warn)
