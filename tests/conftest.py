@@ -1,4 +1,11 @@
-"""Shared fixtures: a ``backend`` fixture over the frameworks that import here.
+"""Shared fixtures: a ``backend`` fixture over the frameworks that import here, and fixtures
+over subsets of them that have a property a test needs:
+
+- ``diff_backend``: automatic differentiation (every backend but numpy; also the backends that
+  are compared with numpy as the reference);
+- ``graph_backend``: graph compilers that start quickly (``jax.jit``, ``tf.function``);
+  ``torch.compile`` takes about 17 s to start, so a few tests compile with it on purpose;
+- ``mutable_backend``: arrays written in place (numpy, torch), where shared memory shows.
 
 Narrow it with ``--backends numpy,torch`` or the environment variable ``IVY_BACKENDS``.
 jax runs with 64-bit types enabled so that float64 works on every backend.
@@ -15,6 +22,11 @@ import ivy
 
 ALL_BACKENDS = ("numpy", "torch", "jax", "tensorflow")
 DIFFERENTIABLE = ("torch", "jax", "tensorflow")
+SUBSETS = {
+    "diff_backend": DIFFERENTIABLE,
+    "graph_backend": ("jax", "tensorflow"),
+    "mutable_backend": ("numpy", "torch"),
+}
 
 
 def pytest_addoption(parser):
@@ -46,8 +58,9 @@ def pytest_generate_tests(metafunc):
     backends = metafunc.config.ivy_backends
     if "backend" in metafunc.fixturenames:
         metafunc.parametrize("backend", backends)
-    if "diff_backend" in metafunc.fixturenames:
-        metafunc.parametrize("diff_backend", [b for b in backends if b in DIFFERENTIABLE])
+    for fixture, subset in SUBSETS.items():
+        if fixture in metafunc.fixturenames:
+            metafunc.parametrize(fixture, [b for b in backends if b in subset])
 
 
 @pytest.fixture

@@ -222,25 +222,31 @@ def test_stateful_forms_equal_the_functional_step(diff_backend):
     check(opt.state["step"], np.float32(1), diff_backend)
 
 
-@pytest.mark.parametrize("compile", [False, True])
-def test_module_step_equals_the_functional_step(diff_backend, compile):
-    if compile and diff_backend == "torch":
-        pytest.skip("one torch.compile case is enough (test_compiled_training_step_equals_eager)")
-    model, opt, loss_fn, x, y = _step_case(diff_backend)
+def test_module_step_equals_the_functional_step(diff_backend):
+    _check_module_step(diff_backend, compile=False)
+
+
+def test_compiled_module_step_equals_the_functional_step(graph_backend):
+    # torch compiles a training step in test_compiled_training_step_equals_eager
+    _check_module_step(graph_backend, compile=True)
+
+
+def _check_module_step(backend, compile):
+    model, opt, loss_fn, x, y = _step_case(backend)
     step = opt.training_step(loss_fn)
     v, state = model.v, opt.init(model.v)
     train = opt.module_step(model, loss_fn, compile=compile)
     tol = dict(rtol=1e-4, atol=1e-6) if compile else {}
     for i in range(3):
         loss, v, state = step(v, state, x, y)
-        check(train(x, y), numpy_of(loss), diff_backend, **tol)
-        nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), diff_backend, **tol), model.v, v)
+        check(train(x, y), numpy_of(loss), backend, **tol)
+        nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), backend, **tol), model.v, v)
         if i == 1:  # an eager update in between: the bound step continues from it
             loss, v, state = step(v, state, x, y)
             opt.minimize(model, lambda w: loss_fn(w, x, y))
-    nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), diff_backend, **tol), opt.state, state)
-    check(opt.state["step"], np.float32(4), diff_backend)
-    check(model(x), numpy_of(model(x, v=v)), diff_backend, **tol)
+    nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), backend, **tol), opt.state, state)
+    check(opt.state["step"], np.float32(4), backend)
+    check(model(x), numpy_of(model(x, v=v)), backend, **tol)
 
 
 def test_minimize_returns_aux(diff_backend):
