@@ -118,6 +118,69 @@ def check(actual, expected, backend: str, *, dtype=None, signed_zeros=False, **o
         np.testing.assert_array_equal(got, expected)
 
 
+# ----------------------------------------------------------------------------------------------
+# Gradients against finite differences, in float64, on the differentiable backends
+# ----------------------------------------------------------------------------------------------
+
+FD_STEP = 1e-5  # central differences of float64 functions
+
+
+def native_value_and_grads(backend, fn, arrays, weights):
+    """``sum(fn(*arrays) * weights)`` and its gradients, by the framework's own autodiff."""
+    if backend == "torch":
+        import torch
+
+        inputs = [torch.tensor(a, requires_grad=True) for a in arrays]
+        loss = (fn(*inputs) * torch.as_tensor(np.asarray(weights))).sum()
+        return loss.item(), [g.numpy() for g in torch.autograd.grad(loss, inputs)]
+    if backend == "jax":
+        import jax
+        import jax.numpy as jnp
+
+        def loss(*inputs):
+            return jnp.sum(fn(*inputs) * weights)
+
+        # jitted: one compilation instead of one per primitive (the eager path is tested too,
+        # by the forward passes of the finite differences)
+        value_and_grad = jax.jit(jax.value_and_grad(loss, argnums=tuple(range(len(arrays)))))
+        value, grads = value_and_grad(*[jnp.asarray(a) for a in arrays])
+        return float(value), [np.asarray(g) for g in grads]
+    if backend == "tensorflow":
+        import tensorflow as tf
+
+        inputs = [tf.convert_to_tensor(a) for a in arrays]
+        with tf.GradientTape() as tape:
+            for t in inputs:
+                tape.watch(t)
+            loss = tf.reduce_sum(fn(*inputs) * weights)
+        return float(loss), [g.numpy() for g in tape.gradient(loss, inputs)]
+    raise ValueError(backend)
+
+
+def check_gradients(backend, fn, arrays, n_directions=1, rtol=1e-6):
+    """Check the gradients of ``fn`` (native arrays in, one native array out) at the float64
+    ``arrays`` on the differentiable ``backend``: the framework's own gradients of
+    ``sum(fn(*arrays) * weights)`` (random weights) along random directions, against central
+    finite differences of ``fn`` run on the same backend."""
+    arrays = [np.asarray(a, np.float64) for a in arrays]
+    out = numpy_of(fn(*[native(a, backend) for a in arrays]))
+    weights = np.random.default_rng(159).standard_normal(out.shape)
+    value, grads = native_value_and_grads(backend, fn, arrays, weights)
+    assert np.isclose(value, np.sum(out * weights), rtol=1e-12)
+
+    def loss(inputs):
+        return np.sum(numpy_of(fn(*[native(a, backend) for a in inputs])) * weights)
+
+    rng = np.random.default_rng(7)
+    for _ in range(n_directions):
+        v = [rng.standard_normal(a.shape) for a in arrays]
+        plus = loss([a + FD_STEP * d for a, d in zip(arrays, v)])
+        minus = loss([a - FD_STEP * d for a, d in zip(arrays, v)])
+        numeric = (plus - minus) / (2 * FD_STEP)
+        analytic = sum(np.sum(g * d) for g, d in zip(grads, v))
+        np.testing.assert_allclose(analytic, numeric, rtol=rtol, atol=1e-8)
+
+
 def tolerance(dtype: str, scale: float = 1.0) -> dict:
     """The tolerance of ``dtype`` with ``atol`` scaled to the magnitude of the problem."""
     tol = TOLERANCES[dtype]

@@ -1,11 +1,12 @@
 """Result types shared by the backends: the named tuples of the Array API's ``unique_*``
-functions (numpy and jax return their own named tuples, with the same fields)."""
+functions (numpy and jax return their own named tuples, with the same fields) and of
+:func:`ivy.top_k`."""
 
 from __future__ import annotations
 
 from typing import Any, NamedTuple
 
-__all__ = ["UniqueAllResult", "UniqueCountsResult", "UniqueInverseResult"]
+__all__ = ["TopKResult", "UniqueAllResult", "UniqueCountsResult", "UniqueInverseResult"]
 
 
 class UniqueAllResult(NamedTuple):
@@ -30,3 +31,11 @@ class UniqueInverseResult(NamedTuple):
 
     values: Any
     inverse_indices: Any
+
+
+class TopKResult(NamedTuple):
+    """``values`` (the ``k`` largest or smallest elements along the axis) and their ``indices``
+    (int64) in the input."""
+
+    values: Any
+    indices: Any

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from ivy import framework_handler as _fh
 from ivy.core._by_hand import by_hand
-from ivy.core._dispatch import alias, dispatch
+from ivy.core._dispatch import alias, composition, dispatch
 
 __all__ = [
     "asarray",
@@ -15,6 +15,7 @@ __all__ = [
     "full",
     "arange",
     "linspace",
+    "logspace",
     "eye",
     "zeros_like",
     "ones_like",
@@ -69,6 +70,37 @@ def arange(start, /, stop=None, step=1, *, dtype=None, device=None, f=None):
 @dispatch()
 def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True, f=None):
     """``num`` evenly spaced values from ``start`` to ``stop``; float32 by default."""
+
+
+@composition
+def logspace(start, stop, /, num, *, base=10.0, dtype=None, device=None, endpoint=True, f=None):
+    """``num`` values spaced evenly on a log scale: ``base ** linspace(start, stop, num)``, as
+    ``numpy.logspace``.
+
+    Args:
+        start: exponent of the first value.
+        stop: exponent of the last value (excluded with ``endpoint=False``).
+        num: how many values.
+        base: the base of the powers.
+        dtype: float32 by default; the values are computed in ``dtype`` when it is floating, else
+            in float64 and then cast (truncated, as numpy does).
+        device: where to put the array.
+        endpoint: whether ``stop`` is included.
+        f: framework (name or namespace); by default the global framework.
+
+    Returns:
+        A 1-D array of ``num`` values.
+
+    Example: ``ivy.logspace(0, 3, 4, f='numpy')`` -> ``[1., 10., 100., 1000.]``.
+    """
+    xp = _fh.get_framework(f=f)
+    work = "float32" if dtype is None else dtype
+    floating = xp.isdtype(work, "real floating")
+    if not floating:
+        work = "float64"
+    exponents = xp.linspace(start, stop, num, dtype=work, device=device, endpoint=endpoint)
+    out = xp.pow(xp.asarray(base, dtype=work, device=device), exponents)
+    return out if floating else xp.astype(out, dtype)
 
 
 @dispatch()

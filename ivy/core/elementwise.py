@@ -56,6 +56,7 @@ __all__ = [
     "maximum",
     "minimum",
     "multiply",
+    "nan_to_num",
     "negative",
     "nextafter",
     "not_equal",
@@ -414,3 +415,22 @@ def logaddexp(x1, x2, /, *, f=None):
 @dispatch("x1", "x2")
 def nextafter(x1, x2, /, *, f=None):
     """The next representable floating value after ``x1`` toward ``x2`` (Array API 2024.12)."""
+
+
+@dispatch
+def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None, f=None):
+    """``x`` with NaN replaced by ``nan`` and infinities by ``posinf`` and ``neginf``, as
+    ``numpy.nan_to_num``.
+
+    Args:
+        x: array; integers and bools are returned unchanged, complex numbers have their real and
+            imaginary parts replaced separately.
+        nan: the value for NaN.
+        posinf: the value for ``+inf``; None: the largest finite value of ``x``'s dtype.
+        neginf: the value for ``-inf``; None: the most negative finite value of ``x``'s dtype.
+
+    Returns:
+        An array of ``x``'s dtype and shape.
+
+    Example: ``ivy.nan_to_num(np.array([np.nan, np.inf, 1.]), posinf=9.)`` -> ``[0., 9., 1.]``.
+    """

@@ -1,5 +1,5 @@
-"""Indexing: gathering and scattering, by index tuples (``_nd``) or into flattened arrays
-(``_flat``), and the coordinates of true elements."""
+"""Indexing: gathering and scattering, along an axis, by index tuples (``_nd``) or into flattened
+arrays (``_flat``), and the coordinates of true elements."""
 
 from __future__ import annotations
 
@@ -7,6 +7,7 @@ from ivy.core._dispatch import dispatch
 
 __all__ = [
     "take",
+    "take_along_axis",
     "gather_nd",
     "scatter_nd",
     "one_hot",
@@ -20,6 +21,27 @@ __all__ = [
 def take(x, indices, /, *, axis=None, f=None):
     """Elements of ``x`` at the 1-D integer ``indices`` along ``axis`` (None: of the flattened
     array)."""
+
+
+@dispatch("x", "indices")
+def take_along_axis(x, indices, /, *, axis=-1, f=None):
+    """Elements of ``x`` picked along ``axis`` by ``indices`` (Array API 2024.12): ``out[..., j,
+    ...] = x[..., indices[..., j, ...], ...]`` with ``j`` at position ``axis``.
+
+    Args:
+        x: array of at least one axis.
+        indices: integer array of ``x``'s number of axes; along ``axis`` any length, along the
+            others sizes that broadcast with ``x``'s. Negative indices count from the end.
+        axis: the axis to pick along.
+
+    Returns:
+        An array of ``x``'s dtype: ``indices``' size along ``axis``, the broadcast sizes
+        elsewhere.
+
+    Example: ``ivy.take_along_axis(x, ivy.argsort(x, axis=1), axis=1)`` is ``ivy.sort(x,
+    axis=1)``; ``ivy.take_along_axis(np.array([[1, 2], [3, 4]]), np.array([[1], [0]]))`` ->
+    ``[[2], [3]]``.
+    """
 
 
 @dispatch

@@ -32,7 +32,7 @@ from __future__ import annotations
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import dispatch
 
-__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle"]
+__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "random_categorical"]
 
 _seed_value: list[int | None] = [None]
 
@@ -86,3 +86,28 @@ def randint(low, high, shape=None, *, dtype=None, device=None, f=None):
 @dispatch
 def shuffle(x, /, *, f=None):
     """``x`` with its first axis randomly permuted."""
+
+
+@dispatch
+def random_categorical(logits, /, *, num_samples=1, dtype=None, f=None):
+    """Class indices drawn from the categorical distributions ``softmax(logits)`` along the last
+    axis, with replacement; batched over the leading axes.
+
+    Draws come from the backend's generator, as every random function's (reproducible after
+    :func:`seed`, fresh on every call of a function compiled with ``ivy.compile_fn``). The
+    numbers drawn differ between backends; their distribution does not.
+
+    Args:
+        logits: ``[..., num_classes]`` unnormalised log-probabilities (``-inf`` for a class that
+            must never be drawn; each distribution needs at least one finite logit).
+        num_samples: how many indices to draw from each distribution.
+        dtype: integer dtype of the result; int64 by default.
+
+    Returns:
+        ``[..., num_samples]`` indices in ``[0, num_classes)``.
+
+    Example:
+        >>> logits = np.array([[0.0, 0.0, 0.0], [5.0, -np.inf, 0.0]])  # class 1 of row 1: never
+        >>> ivy.random_categorical(logits, num_samples=4).shape
+        (2, 4)
+    """

@@ -1,4 +1,4 @@
-"""Sorting, along one axis.
+"""Sorting and selecting the ``k`` largest (or smallest) elements, along one axis.
 
 NaN sorts as the largest value (last ascending, first descending) and -0.0 equals 0.0, on every
 backend. ``stable=True`` (the default) keeps equal elements in their order, in descending sorts
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from ivy.core._dispatch import dispatch
 
-__all__ = ["argsort", "sort"]
+__all__ = ["argsort", "sort", "top_k"]
 
 
 @dispatch
@@ -25,4 +25,29 @@ def sort(x, /, *, axis=-1, descending=False, stable=True, f=None):
     """A sorted copy of ``x`` along ``axis``.
 
     Example: ``ivy.sort(np.array([3., 1., 2.]), descending=True)`` -> ``[3., 2., 1.]``.
+    """
+
+
+@dispatch
+def top_k(x, k, /, *, axis=-1, largest=True, sorted=True, f=None):
+    """The ``k`` largest (or smallest) elements of ``x`` along ``axis`` and their indices.
+
+    Elements are ordered as :func:`sort` orders them: NaN is the largest value and -0.0 equals
+    0.0; among equal elements the one of lower index comes first, on every backend (torch's own
+    ``topk`` leaves ties in no defined order, so its backend puts them in order).
+
+    Args:
+        x: real or bool array of at least one axis.
+        k: how many elements to take, from 0 to the size of ``axis``.
+        axis: the axis to select along.
+        largest: take the largest elements (else the smallest).
+        sorted: return them sorted, the best first. With ``sorted=False`` the same ``k``
+            elements come in an order that may differ between backends.
+
+    Returns:
+        A named tuple ``(values, indices)``: ``x``'s shape with ``k`` along ``axis``; the
+        values of ``x``'s dtype and their int64 indices along ``axis``.
+
+    Example: ``ivy.top_k(np.array([1., 3., 2., 3.]), 2)`` -> ``TopKResult(values=[3., 3.],
+    indices=[1, 3])``.
     """

@@ -1,5 +1,6 @@
-"""The functions added for the Array API run inside jax.jit and tf.function and give the eager
-results there (functions with data-dependent shapes raise inside jax.jit: see their tests)."""
+"""The functions added for the Array API (and other recent additions) run inside jax.jit and
+tf.function and give the eager results there (functions with data-dependent shapes raise inside
+jax.jit: see their tests)."""
 
 from __future__ import annotations
 
@@ -41,6 +42,22 @@ CALLS = {
         xp.all(x, axis=0),
         xp.any(i, keepdims=True),
         xp.diff(i, n=2),
+    ],
+    "selection, statistics and clipping": lambda xp, x, i: [
+        xp.take_along_axis(x, xp.remainder(i, 4) - 2, axis=1),
+        *xp.top_k(x, 3, axis=1),
+        *xp.top_k(i, 1, axis=0, largest=False),
+        xp.logsumexp(x, axis=1),
+        xp.median(x, axis=0),
+        xp.quantile(x, [0.2, 0.5], axis=1, method="midpoint"),
+        xp.nan_to_num(x, posinf=9.0),
+        xp.isclose(x, x[:, ::-1], equal_nan=True),
+        xp.allclose(x, x),
+        xp.cosine_similarity(x, x[:, ::-1]),
+        xp.clip_vector_norm(i, 10.0, axis=1),
+        xp.clip_by_global_norm({"a": i[:, :2], "b": i[0]}, 5.0)[0]["a"],
+        xp.interp(x, xp.asarray([-1.0, 0.0, 2.0]), xp.asarray([0.0, 1.0, 5.0])),
+        xp.logspace(0.0, 2.0, 3),
     ],
 }
 

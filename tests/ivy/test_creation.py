@@ -173,6 +173,33 @@ def test_linspace(backend, args, kwargs):
     check(api_f(backend, "linspace")[0](args[0], args[1], num=args[2], **kwargs), expected, backend)
 
 
+LOGSPACE = [
+    ((0.0, 3.0, 4), {}),
+    ((-2.0, 2.5, 10), {}),
+    ((1, 3, 3), {"base": 2.0}),
+    ((0.0, 1.0, 4), {"endpoint": False, "base": 3.0}),
+    ((5.0, -5.0, 6), {"dtype": "float64"}),
+    ((0.0, 3.0, 4), {"dtype": "int64"}),  # computed in float64, then truncated as numpy does
+    ((2.0, 3.0, 1), {}),
+    ((0.0, 1.0, 0), {}),
+]
+
+
+@pytest.mark.parametrize("args, kwargs", LOGSPACE, ids=[f"{a}-{k}" for a, k in LOGSPACE])
+def test_logspace(backend, args, kwargs):
+    dtype = kwargs.get("dtype", "float32")
+    np_kwargs = {k: v for k, v in kwargs.items() if k != "dtype"}
+    expected = np.logspace(*(float(a) for a in args[:2]), args[2], **np_kwargs).astype(dtype)
+    for fn in api_f(backend, "logspace"):
+        check(fn(*args, **kwargs), expected, backend)
+    check(ivy.logspace(args[0], args[1], num=args[2], f=backend, **kwargs), expected, backend)
+
+
+def test_logspace_takes_the_global_framework(backend):
+    with ivy.set_framework(backend):
+        check(ivy.logspace(0.0, 2.0, 3), np.array([1.0, 10.0, 100.0], np.float32), backend)
+
+
 EYE = [
     ((3,), {}),
     ((2, 4), {}),

@@ -1,6 +1,7 @@
 """Ivy's own functions beyond the Array API, on every backend, against references written here
 with Python loops or plain numpy float64: gather_flat, scatter_flat, indices_where, cumsum,
-cumprod, einsum, constant_pad, zero_pad, linear_resample, vector_to_skew_symmetric_matrix and
+cumprod, einsum, constant_pad, zero_pad, linear_resample, interp, vector_to_skew_symmetric_matrix,
+cosine_similarity, clip_vector_norm, clip_by_global_norm, nan_to_num, isclose, allclose and
 to_framework."""
 
 from __future__ import annotations
@@ -15,17 +16,21 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import ivy
+from ivy import nest
 from tests.helpers import (
     HYPOTHESIS,
     api,
+    api_f,
     check,
+    check_gradients,
     dtype_name,
     is_native,
     native,
     numpy_of,
+    reference,
     tolerance,
 )
-from tests.ivy.strategies import arrays, quarters
+from tests.ivy.strategies import BROADCAST_PAIRS, arrays, quarters
 
 BACKENDS = ("numpy", "torch", "jax", "tensorflow")
 
@@ -436,3 +441,271 @@ def test_to_framework_reads_the_source_from_the_type_under_a_global_framework(re
 def test_to_framework_refuses_an_unknown_framework(backend):
     with pytest.raises(ivy.UnknownFrameworkError):
         ivy.to_framework(native(np.ones(2), backend), "mxnet")
+
+
+# ----------------------------------------------------------------------------------------------
+# interp
+# ----------------------------------------------------------------------------------------------
+
+KNOTS = np.array([-1.0, 0.0, 0.5, 2.0, 3.5])
+VALUES = np.array([2.0, -1.0, 0.0, 4.0, 1.0])
+INTERP_X = {
+    "inside": 1.25,
+    "knots and ends": [-1.0, 0.0, 0.5, 2.0, 3.5],
+    "outside and nan": [-3.0, 4.0, np.nan, 3.49],
+    "2-D": np.random.default_rng(8).uniform(-2.0, 5.0, (3, 4)),
+    "empty": np.zeros((2, 0)),
+}
+
+
+@pytest.mark.parametrize("dtype", ["float32", "float64"])
+@pytest.mark.parametrize("x", list(INTERP_X.values()), ids=list(INTERP_X))
+@pytest.mark.parametrize("bounds", [{}, {"left": -7.0, "right": 9.0}], ids=["default", "given"])
+def test_interp(backend, dtype, x, bounds):
+    x = np.asarray(x, dtype)
+    expected = np.interp(x.astype(np.float64), KNOTS, VALUES, **bounds).astype(dtype)
+    args = [native(v.astype(dtype), backend) for v in (x, KNOTS, VALUES)]
+    for fn in api(backend, "interp"):
+        check(fn(*args, **bounds), expected, backend)
+
+
+def test_interp_of_one_point_integers_and_a_python_scalar(backend):
+    x = native(np.array([-1.0, 2.0, 3.0, np.nan]), backend)
+    for fn in api(backend, "interp"):
+        one = fn(x, native(np.array([2.0]), backend), native(np.array([5.0]), backend), right=0.0)
+        check(one, np.array([5.0, 5.0, 0.0, np.nan]), backend)
+        ints = fn(
+            native(np.array([1, 3]), backend),
+            native(np.array([0, 2, 4]), backend),
+            native(np.array([0, 10, 0]), backend),
+        )
+        check(ints, np.array([5.0, 5.0], np.float32), backend)
+        scalar = fn(0.25, native(KNOTS, backend), native(VALUES, backend))
+        check(scalar, np.array(np.interp(0.25, KNOTS, VALUES)), backend)
+        with pytest.raises(ValueError, match="same length"):
+            fn(x, native(KNOTS, backend), native(VALUES[:3], backend))
+
+
+def test_interp_gradients(diff_backend):
+    knots = native(KNOTS, diff_backend)
+
+    def fn(x, values):
+        return ivy.interp(x, knots, values)
+
+    x = np.array([[-0.7, 0.2, 1.1], [2.9, 3.3, 0.3]])  # inside segments, away from the knots
+    check_gradients(diff_backend, fn, [x, VALUES], n_directions=2)
+
+
+# ----------------------------------------------------------------------------------------------
+# cosine_similarity
+# ----------------------------------------------------------------------------------------------
+
+
+def _cosine_reference(a, b, axis, eps=1e-8):
+    a, b = np.broadcast_arrays(a.astype(np.float64), b.astype(np.float64))
+    dot = np.sum(a * b, axis=axis)
+    norm_a = np.maximum(np.sqrt(np.sum(a * a, axis=axis)), eps)
+    norm_b = np.maximum(np.sqrt(np.sum(b * b, axis=axis)), eps)
+    return dot / (norm_a * norm_b)
+
+
+COSINE_CASES = [
+    ((4,), (4,), -1),
+    ((3, 4), (3, 4), 1),
+    ((3, 4), (3, 4), 0),
+    ((2, 1, 4), (3, 4), -1),
+    ((5, 3), (1, 3), -1),
+    ((2, 0), (2, 0), 0),
+]
+
+
+@pytest.mark.parametrize("dtype", ["float32", "float64"])
+@pytest.mark.parametrize("shape1, shape2, axis", COSINE_CASES, ids=str)
+def test_cosine_similarity(backend, dtype, shape1, shape2, axis):
+    rng = np.random.default_rng(11)
+    a = rng.standard_normal(shape1).astype(dtype)
+    b = rng.standard_normal(shape2).astype(dtype)
+    expected = _cosine_reference(a, b, axis).astype(dtype)
+    for fn in api(backend, "cosine_similarity"):
+        check(fn(native(a, backend), native(b, backend), axis=axis), expected, backend)
+
+
+def test_cosine_similarity_of_zero_and_tiny_vectors(backend):
+    a = np.array([[0.0, 0.0], [1e-9, 0.0], [3.0, 4.0]])
+    b = np.array([[1.0, 2.0], [1e-9, 0.0], [-3.0, -4.0]])
+    expected = _cosine_reference(a, b, -1)  # 0, a tiny number (eps clamps each norm), -1
+    for fn in api(backend, "cosine_similarity"):
+        check(fn(native(a, backend), native(b, backend)), expected, backend)
+    if backend == "torch":  # the very definition of torch's own function
+        import torch
+
+        torch_own = torch.nn.functional.cosine_similarity(torch.tensor(a), torch.tensor(b), dim=-1)
+        check(torch_own, expected, backend)
+
+
+def test_cosine_similarity_gradients(diff_backend):
+    rng = np.random.default_rng(12)
+
+    def fn(a, b):
+        return ivy.cosine_similarity(a, b, axis=0)
+
+    check_gradients(diff_backend, fn, [rng.standard_normal((3, 4)), rng.standard_normal((3, 4))])
+
+
+# ----------------------------------------------------------------------------------------------
+# clip_vector_norm, clip_by_global_norm
+# ----------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("dtype", ["float32", "float64"])
+@pytest.mark.parametrize("axis", [None, 1, -2, (0, 1)], ids=str)
+@pytest.mark.parametrize("p", [2.0, 1.0, math.inf], ids=str)
+def test_clip_vector_norm(backend, dtype, axis, p):
+    a = (np.random.default_rng(13).standard_normal((3, 4)) * 2).astype(dtype)
+    max_norm = 2.5
+    norm = np.linalg.vector_norm(a.astype(np.float64), axis=axis, ord=p, keepdims=True)
+    expected = a * np.where(norm > max_norm, max_norm / norm, 1.0)
+    for fn in api(backend, "clip_vector_norm"):
+        out = fn(native(a, backend), max_norm, axis=axis, p=p)
+        check(out, expected.astype(dtype), backend)
+        within = fn(native(a, backend), 1e3, axis=axis, p=p)  # every norm is within: unchanged
+        check(within, a, backend, rtol=0, atol=0)
+
+
+def test_clip_vector_norm_refuses_a_max_norm_that_is_not_positive(backend):
+    for fn in api(backend, "clip_vector_norm"):
+        with pytest.raises(ValueError, match="positive"):
+            fn(native(np.ones(3), backend), 0.0)
+
+
+def _grads(dtype_w="float64", dtype_b="float64"):
+    rng = np.random.default_rng(14)
+    return {
+        "w": rng.standard_normal((3, 2)).astype(dtype_w),
+        "layers": [rng.standard_normal(2).astype(dtype_b), np.array(1.5, dtype_b)],
+    }
+
+
+@pytest.mark.parametrize("scale", [0.5, 2.0], ids=["clipped", "within"])
+def test_clip_by_global_norm(backend, scale):
+    grads = _grads()
+    leaves = [grads["w"], *grads["layers"]]
+    norm = np.sqrt(sum(np.sum(g**2) for g in leaves))
+    max_norm = scale * norm
+    factor = min(1.0, max_norm / norm)
+    for fn in api(backend, "clip_by_global_norm"):
+        clipped, global_norm = fn(nest.map_nest(lambda g: native(g, backend), grads), max_norm)
+        check(global_norm, np.array(norm), backend)
+        assert isinstance(clipped, dict) and isinstance(clipped["layers"], list)
+        check(clipped["w"], grads["w"] * factor, backend)
+        check(clipped["layers"][0], grads["layers"][0] * factor, backend)
+        check(clipped["layers"][1], grads["layers"][1] * factor, backend)
+
+
+def test_clip_by_global_norm_keeps_each_dtype_and_takes_empty_nests(backend):
+    grads = _grads("float32", "float64")
+    leaves = [grads["w"], *grads["layers"]]
+    norm = np.sqrt(sum(np.sum(g.astype(np.float64) ** 2) for g in leaves))
+    clipped, global_norm = ivy.clip_by_global_norm(
+        nest.map_nest(lambda g: native(g, backend), grads), 1.0
+    )
+    check(global_norm, np.array(norm), backend, rtol=1e-6)  # float32 squares, promoted
+    check(clipped["w"], (grads["w"] / norm).astype("float32"), backend)
+    check(clipped["layers"][0], grads["layers"][0] / norm, backend, rtol=1e-6)
+    empty, zero = ivy.clip_by_global_norm({"a": []}, 1.0, f=backend)
+    assert empty == {"a": []}
+    check(zero, np.array(0.0, np.float32), backend)
+
+
+def test_clip_gradients(diff_backend):
+    rng = np.random.default_rng(15)
+    a, b = rng.standard_normal((2, 3)), rng.standard_normal(4)
+
+    def by_vector(x):
+        return ivy.clip_vector_norm(x, 1.0, axis=1)  # both rows are longer than 1
+
+    def by_global(a, b):
+        clipped, norm = ivy.clip_by_global_norm({"a": a, "b": b}, 1.0)
+        return ivy.concat([ivy.reshape(clipped["a"], (-1,)), clipped["b"], norm[None]])
+
+    check_gradients(diff_backend, by_vector, [a * 3])
+    check_gradients(diff_backend, by_global, [a, b])
+
+
+# ----------------------------------------------------------------------------------------------
+# nan_to_num
+# ----------------------------------------------------------------------------------------------
+
+NAN_TO_NUM_ARGS = [{}, {"nan": -1.0, "posinf": 9.0, "neginf": -9.0}, {"posinf": 1e300}]
+
+
+@pytest.mark.filterwarnings("ignore:overflow encountered in cast:RuntimeWarning")  # numpy's own
+@pytest.mark.parametrize("dtype", ["float32", "float64"])
+@pytest.mark.parametrize("kwargs", NAN_TO_NUM_ARGS, ids=str)
+def test_nan_to_num(backend, dtype, kwargs):
+    a = np.array([[np.nan, np.inf, -np.inf], [1.5, -0.0, -2.0]], dtype)
+    expected = reference(np.nan_to_num, a, **kwargs)  # in dtype: its largest finite values
+    for fn in api(backend, "nan_to_num"):
+        check(fn(native(a, backend), **kwargs), expected, backend, signed_zeros=True)
+        check(fn(native(a[0, 0], backend), **kwargs), expected[0, 0], backend)  # 0-d
+
+
+@pytest.mark.parametrize("dtype", ["int64", "uint8", "bool", "complex64", "complex128"])
+def test_nan_to_num_of_integers_and_complex_numbers(backend, dtype):
+    if dtype.startswith("complex"):
+        a = np.array([complex(np.nan, np.inf), complex(-np.inf, 1.0), 2 - 1j], dtype)
+    else:
+        a = np.array([1, 0, 1], dtype)
+    for fn in api(backend, "nan_to_num"):
+        check(fn(native(a, backend), nan=4.0), np.nan_to_num(a, nan=4.0), backend)
+
+
+def test_nan_to_num_gradients(diff_backend):
+    def fn(x):
+        return ivy.nan_to_num(x) * x
+
+    check_gradients(diff_backend, fn, [np.random.default_rng(16).standard_normal((2, 3))])
+
+
+# ----------------------------------------------------------------------------------------------
+# isclose, allclose
+# ----------------------------------------------------------------------------------------------
+
+NEAR_ONE = [0.0, -0.0, 1.0, 1.0 + 1e-6, 1.0 + 3e-5, 1.001, 1e-9, -1e-9, math.inf, -math.inf]
+TOLERANCE_ARGS = [(1e-5, 1e-8), (0.0, 0.0), (1e-3, 0.0), (0.0, 1e-6)]
+
+
+@HYPOTHESIS
+@given(data=st.data())
+def test_isclose_and_allclose(backend, data):
+    """Against numpy (which computes in the inputs' dtype too), broadcasting, with infinities
+    and NaNs."""
+    dtype = data.draw(st.sampled_from(["float32", "float64"]), label="dtype")
+    shape1, shape2 = data.draw(BROADCAST_PAIRS, label="shapes")
+    elements = st.sampled_from([float(np.dtype(dtype).type(v)) for v in [*NEAR_ONE, math.nan]])
+    a = data.draw(arrays(dtype, elements, shape1), label="x1")
+    b = data.draw(arrays(dtype, elements, shape2), label="x2")
+    rtol, atol = data.draw(st.sampled_from(TOLERANCE_ARGS), label="rtol, atol")
+    equal_nan = data.draw(st.booleans(), label="equal_nan")
+    kwargs = dict(rtol=rtol, atol=atol, equal_nan=equal_nan)
+    x1, x2 = native(a, backend), native(b, backend)
+    for fn in api(backend, "isclose"):
+        check(fn(x1, x2, **kwargs), np.isclose(a, b, **kwargs), backend)
+    for fn in api(backend, "allclose"):
+        check(fn(x1, x2, **kwargs), np.array(np.allclose(a, b, **kwargs)), backend)
+
+
+def test_isclose_of_mixed_dtypes_and_python_scalars(backend):
+    ints = np.array([1, 2, 3], np.int64)
+    floats = np.array([1.0 + 1e-7, 2.1, np.inf], np.float32)
+    for fn in api(backend, "isclose"):
+        out = fn(native(ints, backend), native(floats, backend))
+        check(out, np.isclose(ints.astype(np.float32), floats), backend)
+        check(fn(native(floats, backend), 2.1), np.isclose(floats, np.float32(2.1)), backend)
+    for fn in api_f(backend, "isclose"):
+        check(fn(1.0, 1.0 + 1e-9), np.array(True), backend)
+    for fn in api(backend, "allclose"):
+        check(fn(native(floats[:2], backend), native(floats[:2], backend)), np.array(True), backend)
+        check(
+            fn(native(np.zeros(0), backend), native(np.ones(0), backend)), np.array(True), backend
+        )

@@ -1,4 +1,5 @@
-"""take, gather_nd, scatter_nd and one_hot against references written with Python loops."""
+"""take, take_along_axis, gather_nd, scatter_nd and one_hot against references written with Python
+loops."""
 
 from __future__ import annotations
 
@@ -8,7 +9,7 @@ import numpy as np
 import pytest
 
 import ivy
-from tests.helpers import api, check, native, numpy_of
+from tests.helpers import api, check, check_gradients, native, numpy_of
 
 DTYPES = ("float32", "float64", "int64")
 
@@ -42,6 +43,63 @@ def test_take_with_int32_indices_and_empty_indices(backend):
         check(out, a[:, [3, 1]], backend)
         out = fn(native(a, backend), native(np.zeros(0, np.int64), backend), axis=0)
         check(out, np.zeros((0, 4), np.float32), backend)
+
+
+# ----------------------------------------------------------------------------------------------
+# take_along_axis
+# ----------------------------------------------------------------------------------------------
+
+
+def _take_along_reference(a, indices, axis):
+    """``out[p] = a[p with p[axis] replaced by indices[p]]``, broadcasting size-1 index axes."""
+    axis %= a.ndim
+    shape = tuple(indices.shape[d] if d == axis else a.shape[d] for d in range(a.ndim))
+    out = np.empty(shape, a.dtype)
+    for p in np.ndindex(shape):
+        at = tuple(0 if indices.shape[d] == 1 and d != axis else p[d] for d in range(a.ndim))
+        source = list(p)
+        source[axis] = int(indices[at])  # negative counts from the end
+        out[p] = a[tuple(source)]
+    return out
+
+
+@pytest.mark.parametrize("dtype", DTYPES)
+@pytest.mark.parametrize("axis", [0, 1, 2, -1, -3])
+def test_take_along_axis(backend, dtype, axis):
+    a = _params(dtype, (3, 4, 5))
+    n = a.shape[axis]
+    shape = list(a.shape)
+    shape[axis] = 6  # more picks than elements: repeats
+    indices = np.random.default_rng(axis + 5).integers(-n, n, shape)  # negative ones too
+    expected = _take_along_reference(a, indices, axis)
+    for fn in api(backend, "take_along_axis"):
+        check(fn(native(a, backend), native(indices, backend), axis=axis), expected, backend)
+
+
+def test_take_along_axis_defaults_to_the_last_axis_and_inverts_argsort(backend):
+    a = np.array([[3.0, 1.0, 2.0], [0.5, -1.0, 4.0]])
+    order = np.array([[1, 2, 0], [1, 0, 2]])
+    for fn in api(backend, "take_along_axis"):
+        check(fn(native(a, backend), native(order, backend)), np.sort(a, axis=-1), backend)
+
+
+def test_take_along_axis_broadcasts_int32_and_empty_indices(backend):
+    a = _params("float64", (3, 4))
+    for fn in api(backend, "take_along_axis"):
+        row = np.array([[3, -4]], np.int32)  # size 1 along axis 0: the same picks for every row
+        out = fn(native(a, backend), native(row, backend), axis=1)
+        check(out, _take_along_reference(a, row, 1), backend)
+        none = np.zeros((0, 4), np.int64)
+        check(fn(native(a, backend), native(none, backend), axis=0), np.zeros((0, 4)), backend)
+
+
+def test_take_along_axis_gradients(diff_backend):
+    indices = native(np.array([[0, 0, 2], [1, 2, 1]]), diff_backend)  # repeats accumulate
+
+    def fn(x):
+        return ivy.take_along_axis(x, indices, axis=1)
+
+    check_gradients(diff_backend, fn, [np.random.default_rng(3).normal(size=(2, 3))])
 
 
 # ----------------------------------------------------------------------------------------------

@@ -1,10 +1,12 @@
 """Random numbers on every backend: reproducibility under ``ivy.seed``, bounds, shapes, dtypes,
-and loose statistical checks (seeded, so deterministic; bounds are many standard errors wide)."""
+and statistical checks (seeded, so deterministic; bounds are many standard errors wide, or a
+chi-square quantile that a correct sampler exceeds with probability 1e-6)."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy import stats
 
 import ivy
 from tests.helpers import api, api_f, check_meta, native, numpy_of
@@ -185,3 +187,61 @@ def test_shuffle_of_tiny_arrays(backend):
             x = fn(native(a, backend))
             check_meta(x, backend, "float32", a.shape)
             np.testing.assert_array_equal(numpy_of(x), a)
+
+
+# ----------------------------------------------------------------------------------------------
+# random_categorical
+# ----------------------------------------------------------------------------------------------
+
+# Two distributions of 5 classes; class 3 of the first has probability 0.
+LOGITS = np.array([[0.0, 1.0, 2.0, -np.inf, 0.5], [3.0, 0.0, 0.0, -1.0, 0.0]])
+
+
+def _softmax(logits):
+    e = np.exp(logits - logits.max(axis=-1, keepdims=True))
+    return e / e.sum(axis=-1, keepdims=True)
+
+
+@pytest.mark.parametrize("dtype", ["float32", "float64"])
+def test_random_categorical_frequencies_match_softmax(backend, dtype):
+    """Pearson's chi-square statistic of the counts of 20000 draws per distribution, against its
+    quantile of probability 1 - 1e-6 (seeded: the test cannot flake); the impossible class is
+    never drawn."""
+    n = 20_000
+    ivy.seed(21)
+    draws = numpy_of(ivy.random_categorical(native(LOGITS.astype(dtype), backend), num_samples=n))
+    assert draws.shape == (2, n)
+    for row, probs in zip(draws, _softmax(LOGITS)):
+        counts = np.bincount(row, minlength=5)
+        possible = probs > 0
+        assert counts[~possible].sum() == 0
+        expected = n * probs[possible]
+        chi2 = np.sum((counts[possible] - expected) ** 2 / expected)
+        assert chi2 < stats.chi2.isf(1e-6, df=possible.sum() - 1), (counts, expected)
+
+
+def test_random_categorical_shapes_and_dtypes(backend):
+    ivy.seed(22)
+    for fn in api(backend, "random_categorical"):
+        batched = native(np.zeros((2, 3, 4), np.float32), backend)
+        out = fn(batched, num_samples=5)
+        check_meta(out, backend, "int64", (2, 3, 5))
+        assert np.all((numpy_of(out) >= 0) & (numpy_of(out) < 4))
+        check_meta(fn(native(np.zeros(4), backend)), backend, "int64", (1,))  # one sample
+        check_meta(fn(batched, num_samples=3, dtype="int32"), backend, "int32", (2, 3, 3))
+        check_meta(fn(batched, num_samples=0), backend, "int64", (2, 3, 0))
+        check_meta(fn(native(np.zeros((0, 4)), backend), num_samples=2), backend, "int64", (0, 2))
+        certain = fn(native(np.array([-np.inf, 0.0, -np.inf]), backend), num_samples=50)
+        np.testing.assert_array_equal(numpy_of(certain), np.ones(50))
+        with pytest.raises(ValueError, match="at least one class"):
+            fn(native(np.zeros((2, 0)), backend))
+
+
+def test_random_categorical_is_reproducible(backend):
+    logits = native(np.zeros((3, 10)), backend)
+    for fn in api(backend, "random_categorical"):
+        ivy.seed(23)
+        first, second = numpy_of(fn(logits, num_samples=20)), numpy_of(fn(logits, num_samples=20))
+        ivy.seed(23)
+        np.testing.assert_array_equal(numpy_of(fn(logits, num_samples=20)), first)
+        assert not np.array_equal(first, second), "consecutive draws are equal"

@@ -68,6 +68,32 @@ def test_seed_reproduces_mixed_eager_and_compiled_draws(backend):
         np.testing.assert_array_equal(a, b)
 
 
+def categorical(logits):
+    return ivy.random_categorical(logits, num_samples=64)
+
+
+@functools.cache
+def compiled_categorical(backend):
+    return ivy.compile_fn(categorical)
+
+
+def test_compiled_categorical_draws_differ_between_calls_and_repeat_after_seed(backend):
+    logits = native(np.zeros((2, 10)), backend)
+
+    def draws(n):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", UserWarning)  # numpy: "no compiler"
+            return [numpy_of(compiled_categorical(backend)(logits)) for _ in range(n)]
+
+    ivy.seed(31)
+    first = draws(2)
+    assert first[0].shape == (2, 64) and np.all((first[0] >= 0) & (first[0] < 10))
+    assert not np.array_equal(first[0], first[1]), "compiled draws are frozen"
+    ivy.seed(31)
+    for a, b in zip(first, draws(2)):
+        np.testing.assert_array_equal(a, b)
+
+
 @pytest.mark.parametrize("backend_", ["jax", "tensorflow"])
 def test_noisy_compiled_training_step(request, backend_):
     """Noise inside a compiled step with gradients (dropout-like): fresh on every call."""

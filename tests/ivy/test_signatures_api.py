@@ -55,6 +55,7 @@ SIGNATURES = {
     "all": "(x, /, *, axis=None, keepdims=False)",
     "any": "(x, /, *, axis=None, keepdims=False)",
     "diff": "(x, /, *, axis=-1, n=1, prepend=None, append=None)",
+    "take_along_axis": "(x, indices, /, *, axis=-1)",  # 2024.12
 }
 
 

@@ -1,4 +1,4 @@
-"""Reductions against numpy float64 references, on every backend.
+"""Reductions against numpy (and scipy) float64 references, on every backend.
 
 Hypothesis draws the array (0-d and empty included), the ``axis`` (None, an int, a tuple, negative
 axes) and ``keepdims``. Float32 results are compared with a tolerance scaled to the magnitude of
@@ -8,18 +8,31 @@ the reduced values, since a float32 sum carries rounding errors relative to sum(
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from tests.helpers import HYPOTHESIS, api, cast, check, native, reference, tolerance
+import ivy
+from tests.helpers import (
+    HYPOTHESIS,
+    api,
+    cast,
+    check,
+    check_gradients,
+    native,
+    reference,
+    tolerance,
+)
 from tests.ivy.strategies import (
     FLOAT_DTYPES,
     NONEMPTY_SHAPES,
     SHAPES,
     arrays,
     axis_arguments,
+    quarters,
     reals,
 )
 
@@ -178,3 +191,183 @@ def test_sum_over_a_tuple_of_axes_with_negative_entries(backend):
             a.sum(axis=(0, 2), keepdims=True),
             backend,
         )
+
+
+# ----------------------------------------------------------------------------------------------
+# logsumexp
+# ----------------------------------------------------------------------------------------------
+
+
+@HYPOTHESIS
+@given(data=st.data())
+def test_logsumexp(backend, data):
+    """Against numpy's ``logaddexp`` reduction (another algorithm: pairwise), with infinities
+    and NaN among the values; float32 errors scale with the largest value (the shift)."""
+    dtype = data.draw(st.sampled_from(FLOAT_DTYPES), label="dtype")
+    a = data.draw(arrays(dtype, reals(dtype, -50, 50)), label="x")
+    axis = data.draw(axis_arguments(a.ndim), label="axis")
+    keepdims = data.draw(st.booleans(), label="keepdims")
+    expected = reference(np.logaddexp.reduce, a.astype(np.float64), axis=axis, keepdims=keepdims)
+    tol = tolerance(dtype, _magnitude(a))
+    x = native(a, backend)
+    for fn in api(backend, "logsumexp"):
+        check(fn(x, axis=axis, keepdims=keepdims), cast(expected, dtype), backend, **tol)
+
+
+LOGSUMEXP_CASES = [
+    ([-math.inf, -math.inf], {}, -math.inf),
+    ([math.inf, 1.0], {}, math.inf),
+    ([math.inf, -math.inf], {}, math.inf),
+    ([-math.inf, 0.0], {}, 0.0),
+    ([math.nan, 1.0], {}, math.nan),
+    ([1000.0, 1000.0], {}, 1000.0 + math.log(2.0)),  # exp(1000) overflows: the shift avoids it
+    (np.zeros((2, 0)), {"axis": 1}, [-math.inf, -math.inf]),
+    (2.5, {}, 2.5),
+]
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+@pytest.mark.parametrize("values, kwargs, expected", LOGSUMEXP_CASES, ids=str)
+def test_logsumexp_edge_values(backend, dtype, values, kwargs, expected):
+    a = np.asarray(values, dtype=dtype)
+    for fn in api(backend, "logsumexp"):
+        check(fn(native(a, backend), **kwargs), np.asarray(expected, dtype=dtype), backend)
+
+
+def test_logsumexp_of_integers_is_float32(backend):
+    a = np.array([[1, 2, 3], [0, 0, 0]], np.int64)
+    for fn in api(backend, "logsumexp"):
+        expected = np.logaddexp.reduce(a.astype(np.float64), axis=1).astype("float32")
+        check(fn(native(a, backend), axis=1), expected, backend)
+
+
+@pytest.mark.parametrize("kwargs", [{"axis": 1}, {}, {"axis": (0, 2), "keepdims": True}], ids=str)
+def test_logsumexp_gradients(diff_backend, kwargs):
+    def fn(x):
+        return ivy.logsumexp(x, **kwargs)
+
+    check_gradients(diff_backend, fn, [np.random.default_rng(1).normal(size=(2, 3, 4))])
+
+
+# ----------------------------------------------------------------------------------------------
+# median and quantile
+# ----------------------------------------------------------------------------------------------
+
+
+@HYPOTHESIS
+@given(data=st.data())
+def test_median(backend, data):
+    """Against numpy, with infinities, NaN and empty reductions (NaN) among the cases."""
+    dtype = data.draw(st.sampled_from(FLOAT_DTYPES), label="dtype")
+    a = data.draw(arrays(dtype, reals(dtype, -100, 100)), label="x")
+    axis = data.draw(axis_arguments(a.ndim), label="axis")
+    keepdims = data.draw(st.booleans(), label="keepdims")
+    expected = reference(np.median, a.astype(np.float64), axis=axis, keepdims=keepdims)
+    x = native(a, backend)
+    for fn in api(backend, "median"):
+        check(fn(x, axis=axis, keepdims=keepdims), cast(expected, dtype), backend)
+
+
+METHODS = ["linear", "lower", "higher", "nearest", "midpoint"]
+EIGHTHS = st.integers(0, 8).map(lambda i: i / 8)  # exact in float32 too, as are their positions
+
+
+@HYPOTHESIS
+@given(data=st.data())
+def test_quantile(backend, data):
+    """Against numpy, for each method, with ``q`` a float, a list or a 1-D array of the backend,
+    and NaN among the values (no infinities: numpy interpolates ``inf * 0`` to NaN there)."""
+    dtype = data.draw(st.sampled_from(FLOAT_DTYPES), label="dtype")
+    elements = quarters(-2, 2) | st.just(math.nan)
+    a = data.draw(arrays(dtype, elements, NONEMPTY_SHAPES), label="x")
+    axis = data.draw(axis_arguments(a.ndim), label="axis")
+    keepdims = data.draw(st.booleans(), label="keepdims")
+    method = data.draw(st.sampled_from(METHODS), label="method")
+    kind = data.draw(st.sampled_from(["float", "list", "array"]), label="q kind")
+    if kind == "float":
+        q = data.draw(st.floats(0, 1), label="q")
+    elif kind == "list":
+        q = data.draw(st.lists(st.floats(0, 1), min_size=1, max_size=3), label="q")
+    else:
+        q = np.array(data.draw(st.lists(EIGHTHS, min_size=1, max_size=3), label="q"), dtype)
+    expected = reference(
+        np.quantile, a.astype(np.float64), q, axis=axis, keepdims=keepdims, method=method
+    )
+    x = native(a, backend)
+    q_arg = native(q, backend) if kind == "array" else q
+    for fn in api(backend, "quantile"):
+        out = fn(x, q_arg, axis=axis, keepdims=keepdims, method=method)
+        check(out, cast(expected, dtype), backend)
+
+
+def test_median_and_quantile_of_integers_are_float32(backend):
+    a = np.array([[4, 1, 3, 2], [7, 7, 0, 1]], np.int64)
+    x = native(a, backend)
+    check(ivy.median(x, axis=1), np.median(a, axis=1).astype("float32"), backend)
+    check(ivy.quantile(x, 0.3), np.float32(np.quantile(a, 0.3)), backend)
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+def test_median_and_quantile_of_nothing_are_nan(backend, dtype):
+    x = native(np.zeros((2, 0), dtype), backend)
+    for fn in api(backend, "median"):
+        check(fn(x, axis=1), np.full(2, np.nan, dtype), backend)
+        check(fn(x), np.array(np.nan, dtype), backend)
+    for fn in api(backend, "quantile"):
+        check(fn(x, [0.5, 1.0], axis=1), np.full((2, 2), np.nan, dtype), backend)
+
+
+def test_quantile_next_to_infinities(backend):
+    """Exact positions take the value there; numpy gives NaN (from ``inf * 0``) in these cases."""
+    a = np.array([0.0, 1.0, np.inf])
+    for fn in api(backend, "quantile"):
+        check(fn(native(a, backend), [0.5, 1.0]), np.array([1.0, np.inf]), backend)
+        check(fn(native(-a, backend), 0.0), np.array(-np.inf), backend)
+
+
+def test_quantile_shapes_with_keepdims_and_a_list_of_q(backend):
+    a = np.arange(24.0).reshape(2, 3, 4)
+    x = native(a, backend)
+    for fn in api(backend, "quantile"):
+        out = fn(x, [0.1, 0.9], axis=(0, 2), keepdims=True)
+        check(out, np.quantile(a, [0.1, 0.9], axis=(0, 2), keepdims=True), backend)
+        check(fn(x, 0.5, axis=-1), np.quantile(a, 0.5, axis=-1), backend)
+
+
+@pytest.mark.parametrize(
+    "q, kwargs, message",
+    [
+        (1.5, {}, "q must be in"),
+        ([0.5, -0.1], {}, "q must be in"),
+        (0.5, {"method": "inverted_cdf"}, "unknown method"),
+        (0.5, {"axis": 2}, "out of bounds"),
+        (0.5, {"axis": (0, 0)}, "repeated axis"),
+    ],
+)
+def test_quantile_refuses_bad_arguments(backend, q, kwargs, message):
+    x = native(np.ones((2, 2)), backend)
+    for fn in api(backend, "quantile"):
+        with pytest.raises(ValueError, match=message):
+            fn(x, q, **kwargs)
+    with pytest.raises(ValueError, match="1-D"):
+        ivy.quantile(x, native(np.ones((1, 2)) / 2, backend))
+
+
+@pytest.mark.parametrize("shape", [(3, 5), (3, 4)], ids=["odd", "even"])
+def test_median_gradients(diff_backend, shape):
+    a = np.random.default_rng(4).permutation(15)[: math.prod(shape)].reshape(shape) * 0.3
+
+    def fn(x):
+        return ivy.median(x, axis=1)
+
+    check_gradients(diff_backend, fn, [a])
+
+
+@pytest.mark.parametrize("method", ["linear", "midpoint", "nearest"])
+def test_quantile_gradients(diff_backend, method):
+    a = np.random.default_rng(5).permutation(12).reshape(3, 4) * 0.7  # distinct values
+
+    def fn(x):
+        return ivy.quantile(x, [0.1, 0.5, 0.8], axis=0, method=method)
+
+    check_gradients(diff_backend, fn, [a])

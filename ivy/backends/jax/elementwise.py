@@ -56,6 +56,7 @@ __all__ = [
     "maximum",
     "minimum",
     "multiply",
+    "nan_to_num",
     "negative",
     "nextafter",
     "not_equal",
@@ -144,3 +145,7 @@ subtract = jnp.subtract
 tan = jnp.tan
 tanh = jnp.tanh
 trunc = jnp.trunc
+
+
+def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):
+    return jnp.nan_to_num(x, nan=nan, posinf=posinf, neginf=neginf)

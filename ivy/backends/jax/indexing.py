@@ -1,7 +1,7 @@
 """jax backend: gathering and scattering.
 
 As everywhere in jax, out-of-bounds indices do not raise (they cannot under ``jax.jit``):
-``take``, ``gather_nd`` and ``gather_flat`` return a fill value there (NaN for floats, the smallest integer for
+``take``, ``take_along_axis``, ``gather_nd`` and ``gather_flat`` return a fill value there (NaN for floats, the smallest integer for
 ints; jax's ``mode='fill'``), and ``scatter_nd`` and ``scatter_flat`` drop those updates. ``indices_where`` has a result shape
 that depends on the values, so it cannot run under ``jax.jit``.
 """
@@ -15,6 +15,7 @@ from ivy.backends.jax._helpers import native_dtype
 
 __all__ = [
     "take",
+    "take_along_axis",
     "gather_nd",
     "scatter_nd",
     "one_hot",
@@ -66,3 +67,7 @@ def gather_flat(params, indices, /):
 
 def scatter_flat(indices, updates, /, size, *, reduction="sum"):
     return scatter_nd(jnp.asarray(indices)[..., None], updates, (size,), reduction=reduction)
+
+
+def take_along_axis(x, indices, /, *, axis=-1):
+    return jnp.take_along_axis(jnp.asarray(x), jnp.asarray(indices), axis=axis)

@@ -20,9 +20,10 @@ import warnings
 import jax
 import jax.numpy as jnp
 
+from ivy.backends._sample_args import categorical_args
 from ivy.backends.jax._helpers import default_int, native_device, native_dtype
 
-__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle"]
+__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "random_categorical"]
 
 _MASK32 = 0xFFFFFFFF
 
@@ -107,3 +108,13 @@ def randint(low, high, shape=None, *, dtype=None, device=None):
 
 def shuffle(x, /):
     return jax.random.permutation(_state.next_key(), x)
+
+
+def random_categorical(logits, /, *, num_samples=1, dtype=None):
+    logits = jnp.asarray(logits)
+    categorical_args(logits.shape, num_samples)
+    if not jnp.issubdtype(logits.dtype, jnp.floating):
+        logits = logits.astype(jnp.float32)
+    shape = (num_samples, *logits.shape[:-1])  # jax puts the sample axis first
+    out = jax.random.categorical(_state.next_key(), logits, axis=-1, shape=shape)
+    return jnp.moveaxis(out, 0, -1).astype(native_dtype(dtype) or default_int())

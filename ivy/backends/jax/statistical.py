@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import jax
 import jax.numpy as jnp
 
 from ivy.backends.jax._helpers import default_int, native_dtype
@@ -16,6 +17,7 @@ __all__ = [
     "std",
     "cumulative_sum",
     "cumulative_prod",
+    "logsumexp",
 ]
 
 mean = jnp.mean
@@ -47,3 +49,10 @@ def cumulative_prod(x, /, *, axis=None, dtype=None, include_initial=False):
     return jnp.cumulative_prod(
         x, axis=axis, dtype=native_dtype(dtype), include_initial=include_initial
     )
+
+
+def logsumexp(x, /, *, axis=None, keepdims=False):
+    x = jnp.asarray(x)
+    if not jnp.issubdtype(x.dtype, jnp.inexact):
+        x = x.astype(jnp.float32)
+    return jax.nn.logsumexp(x, axis=axis, keepdims=keepdims)

@@ -53,6 +53,7 @@ __all__ = [
     "maximum",
     "minimum",
     "multiply",
+    "nan_to_num",
     "negative",
     "nextafter",
     "not_equal",
@@ -146,3 +147,7 @@ def clip(x, /, min=None, max=None):
     if min is None and max is None:
         return np.asarray(x).copy()
     return np.clip(x, min, max)
+
+
+def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):
+    return np.nan_to_num(x, nan=nan, posinf=posinf, neginf=neginf)

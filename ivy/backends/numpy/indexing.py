@@ -9,6 +9,7 @@ from ivy.backends.numpy._helpers import native_dtype
 
 __all__ = [
     "take",
+    "take_along_axis",
     "gather_nd",
     "scatter_nd",
     "one_hot",
@@ -73,3 +74,7 @@ def one_hot(indices, depth, /, *, dtype=None):
 
 def scatter_flat(indices, updates, /, size, *, reduction="sum"):
     return scatter_nd(np.asarray(indices)[..., None], updates, (size,), reduction=reduction)
+
+
+def take_along_axis(x, indices, /, *, axis=-1):
+    return np.take_along_axis(np.asarray(x), np.asarray(indices), axis=axis)

@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ivy.backends._sample_args import categorical_args
 from ivy.backends.numpy._helpers import check_device, native_dtype
 
-__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle"]
+__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "random_categorical"]
 
 _rng = [np.random.default_rng()]
 
@@ -35,3 +36,12 @@ def randint(low, high, shape=None, *, dtype=None, device=None):
 
 def shuffle(x, /):
     return _rng[0].permutation(x)
+
+
+def random_categorical(logits, /, *, num_samples=1, dtype=None):
+    """The Gumbel-max trick: the index of the largest ``logit + Gumbel noise``."""
+    logits = np.asarray(logits)
+    n = categorical_args(logits.shape, num_samples)
+    noise = _rng[0].gumbel(size=(*logits.shape[:-1], num_samples, n))
+    out = np.argmax(logits[..., None, :] + noise, axis=-1)
+    return out.astype(native_dtype(dtype) or np.int64)

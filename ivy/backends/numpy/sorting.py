@@ -6,7 +6,10 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["argsort", "sort"]
+from ivy.backends._sample_args import top_k_axis
+from ivy.core._results import TopKResult
+
+__all__ = ["argsort", "sort", "top_k"]
 
 
 def argsort(x, /, *, axis=-1, descending=False, stable=True):
@@ -22,3 +25,12 @@ def sort(x, /, *, axis=-1, descending=False, stable=True):
     if not descending:
         return np.sort(x, axis=axis, kind=kind)
     return np.flip(np.sort(np.flip(x, axis), axis=axis, kind=kind), axis)
+
+
+def top_k(x, k, /, *, axis=-1, largest=True, sorted=True):
+    """The first ``k`` of a stable sort (descending for the largest): ties in index order."""
+    x = np.asarray(x)
+    axis = top_k_axis(x.shape, k, axis)
+    order = argsort(x, axis=axis, descending=largest, stable=True)
+    indices = np.take(order, np.arange(k), axis=axis)
+    return TopKResult(np.take_along_axis(x, indices, axis=axis), indices)

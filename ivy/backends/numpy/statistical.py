@@ -16,6 +16,7 @@ __all__ = [
     "std",
     "cumulative_sum",
     "cumulative_prod",
+    "logsumexp",
 ]
 
 
@@ -49,3 +50,15 @@ def std(x, /, *, axis=None, correction=0.0, keepdims=False):
 
 cumulative_sum = np.cumulative_sum
 cumulative_prod = np.cumulative_prod
+
+
+def logsumexp(x, /, *, axis=None, keepdims=False):
+    """Shifted by the maximum (0 where that is infinite, so that -inf and inf give themselves)."""
+    x = np.asarray(x)
+    if x.dtype.kind not in "fc":
+        x = x.astype(np.float32)
+    shift = np.max(x, axis=axis, keepdims=True, initial=-np.inf)
+    shift = np.where(np.isfinite(shift), shift, np.zeros((), x.dtype))
+    with np.errstate(divide="ignore"):  # log(0) = -inf: no element, or all -inf
+        out = np.log(np.sum(np.exp(x - shift), axis=axis, keepdims=keepdims))
+    return out + (shift if keepdims else np.squeeze(shift, axis=axis))

@@ -70,6 +70,7 @@ __all__ = [
     "maximum",
     "minimum",
     "multiply",
+    "nan_to_num",
     "negative",
     "nextafter",
     "not_equal",
@@ -346,3 +347,24 @@ def _floating(*tensors):
     if tensors[0].dtype.is_floating:
         return tensors
     return [tf.cast(t, tf.float32) for t in tensors]
+
+
+def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):
+    x = tensor(x)
+    dt = x.dtype
+    if dt.is_complex:
+
+        def part(v):
+            return nan_to_num(v, nan=nan, posinf=posinf, neginf=neginf)
+
+        return tf.complex(part(tf.math.real(x)), part(tf.math.imag(x)))
+    if not dt.is_floating:
+        return x
+
+    def value(v):  # a Python number, rounded to dt (overflowing to inf as numpy does)
+        return tf.cast(tf.constant(v, tf.float64), dt)
+
+    big = value(dt.max if posinf is None else posinf)
+    small = value(dt.min if neginf is None else neginf)
+    x = tf.where(tf.math.is_nan(x), value(nan), x)
+    return tf.where(tf.math.is_inf(x), tf.where(x > 0, big, small), x)

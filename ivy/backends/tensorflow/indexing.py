@@ -8,6 +8,7 @@ from ivy.backends.tensorflow._helpers import native_dtype, tensor
 
 __all__ = [
     "take",
+    "take_along_axis",
     "gather_nd",
     "scatter_nd",
     "one_hot",
@@ -78,3 +79,7 @@ def indices_where(x, /):
     if x.shape.rank == 0:  # tf.where refuses 0-d input: one row of no coordinates, or none
         return tf.where(tf.reshape(x, [1]))[:, :0]
     return tf.where(x)
+
+
+def take_along_axis(x, indices, /, *, axis=-1):
+    return tf.experimental.numpy.take_along_axis(tensor(x), tf.convert_to_tensor(indices), axis)

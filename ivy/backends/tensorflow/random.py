@@ -8,9 +8,10 @@ from __future__ import annotations
 
 import tensorflow as tf
 
+from ivy.backends._sample_args import categorical_args
 from ivy.backends.tensorflow._helpers import native_dtype, placed, tensor, tensor_of
 
-__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle"]
+__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "random_categorical"]
 
 _generator: list[tf.random.Generator] = []  # created on first use
 
@@ -74,3 +75,16 @@ def shuffle(x, /):
     x = tensor(x)
     keys = _rng().uniform_full_int(tf.shape(x)[:1], dtype=tf.int64)
     return tf.gather(x, tf.argsort(keys))
+
+
+def random_categorical(logits, /, *, num_samples=1, dtype=None):
+    """``tf.random.stateless_categorical`` seeded from the generator, which advances it."""
+    logits = tensor(logits)
+    n = categorical_args(logits.shape.as_list(), num_samples)
+    if logits.dtype not in (tf.float32, tf.float64):
+        logits = tf.cast(logits, tf.float32)
+    dt = native_dtype(dtype) or tf.int64
+    seed = _rng().make_seeds(1)[:, 0]
+    out = tf.random.stateless_categorical(tf.reshape(logits, [-1, n]), num_samples, seed)
+    shape = tf.concat([tf.shape(logits)[:-1], [num_samples]], axis=0)
+    return tf.cast(tf.reshape(out, shape), dt)

@@ -10,9 +10,11 @@ from __future__ import annotations
 
 import tensorflow as tf
 
+from ivy.backends._sample_args import top_k_axis
 from ivy.backends.tensorflow._helpers import normalize_axis, static_rank, tensor
+from ivy.core._results import TopKResult
 
-__all__ = ["argsort", "sort"]
+__all__ = ["argsort", "sort", "top_k"]
 
 _BITS = {tf.float16: tf.int16, tf.bfloat16: tf.int16, tf.float32: tf.int32, tf.float64: tf.int64}
 
@@ -54,3 +56,22 @@ def sort(x, /, *, axis=-1, descending=False, stable=True):
     back = [perm.index(a) for a in range(rank)]
     taken = tf.gather(tf.transpose(x, perm), tf.transpose(order, perm), batch_dims=rank - 1)
     return tf.transpose(taken, back)
+
+
+def top_k(x, k, /, *, axis=-1, largest=True, sorted=True):
+    """``tf.math.top_k`` (last axis; equal elements in index order) of the integer key that
+    ``argsort`` sorts by; the values are gathered from ``x``, so that gradients flow to them."""
+    x = tensor(x)
+    rank = static_rank(x, "top_k")
+    axis = top_k_axis(x.shape.as_list(), k, axis)
+    if axis != rank - 1:
+        perm = [a for a in range(rank) if a != axis] + [axis]
+        back = [perm.index(a) for a in range(rank)]
+        values, indices = top_k(tf.transpose(x, perm), k, axis=-1, largest=largest)
+        return TopKResult(tf.transpose(values, back), tf.transpose(indices, back))
+    key = _key(x)
+    if not largest:
+        key = tf.bitwise.invert(key)  # reverses the order of integers, without overflow
+    indices = tf.math.top_k(key, k, sorted=True).indices
+    values = tf.gather(x, indices, batch_dims=rank - 1)
+    return TopKResult(values, tf.cast(indices, tf.int64))

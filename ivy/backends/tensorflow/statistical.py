@@ -22,6 +22,7 @@ __all__ = [
     "std",
     "cumulative_sum",
     "cumulative_prod",
+    "logsumexp",
 ]
 
 min = tf.math.reduce_min
@@ -95,3 +96,7 @@ def cumulative_sum(x, /, *, axis=None, dtype=None, include_initial=False):
 
 def cumulative_prod(x, /, *, axis=None, dtype=None, include_initial=False):
     return _cumulative(tf.math.cumprod, 1, x, axis, dtype, include_initial, "cumulative_prod")
+
+
+def logsumexp(x, /, *, axis=None, keepdims=False):
+    return tf.math.reduce_logsumexp(floating(x), axis=axis, keepdims=keepdims)

@@ -64,6 +64,7 @@ __all__ = [
     "maximum",
     "minimum",
     "multiply",
+    "nan_to_num",
     "negative",
     "nextafter",
     "not_equal",
@@ -211,3 +212,7 @@ def _tensor_or_scalar(value):
     if value is None or isinstance(value, (torch.Tensor, int, float)):
         return value
     return asarray(value)
+
+
+def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):
+    return torch.nan_to_num(x, nan=nan, posinf=posinf, neginf=neginf)

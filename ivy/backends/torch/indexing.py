@@ -10,6 +10,7 @@ from ivy.backends.torch._helpers import native_dtype
 
 __all__ = [
     "take",
+    "take_along_axis",
     "gather_nd",
     "scatter_nd",
     "one_hot",
@@ -74,3 +75,8 @@ def gather_flat(params, indices, /):
 def scatter_flat(indices, updates, /, size, *, reduction="sum"):
     indices = torch.as_tensor(indices)[..., None]
     return scatter_nd(indices, updates, (size,), reduction=reduction)
+
+
+def take_along_axis(x, indices, /, *, axis=-1):
+    indices = torch.as_tensor(indices, device=x.device)
+    return torch.take_along_dim(x, indices.long(), dim=axis)  # torch wants int64 indices

@@ -5,9 +5,10 @@ from __future__ import annotations
 
 import torch
 
+from ivy.backends._sample_args import categorical_args
 from ivy.backends.torch._helpers import device_of, native_device, native_dtype
 
-__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle"]
+__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "random_categorical"]
 
 
 def seed(seed_value=0):
@@ -51,3 +52,16 @@ def randint(low, high, shape=None, *, dtype=None, device=None):
 
 def shuffle(x, /):
     return x[torch.randperm(x.shape[0], device=x.device)]
+
+
+def random_categorical(logits, /, *, num_samples=1, dtype=None):
+    n = categorical_args(logits.shape, num_samples)
+    dtype = native_dtype(dtype) or torch.int64
+    if logits.dtype not in (torch.float32, torch.float64):
+        logits = logits.to(torch.float32)
+    batch = logits.shape[:-1]
+    probs = torch.softmax(logits.reshape(-1, n), dim=-1)
+    if probs.shape[0] == 0 or num_samples == 0:
+        return torch.zeros((*batch, num_samples), dtype=dtype, device=logits.device)
+    out = torch.multinomial(probs, num_samples, replacement=True)
+    return out.reshape(*batch, num_samples).to(dtype)

@@ -5,7 +5,10 @@ from __future__ import annotations
 
 import torch
 
-__all__ = ["argsort", "sort"]
+from ivy.backends._sample_args import top_k_axis
+from ivy.core._results import TopKResult
+
+__all__ = ["argsort", "sort", "top_k"]
 
 
 def argsort(x, /, *, axis=-1, descending=False, stable=True):
@@ -14,3 +17,38 @@ def argsort(x, /, *, axis=-1, descending=False, stable=True):
 
 def sort(x, /, *, axis=-1, descending=False, stable=True):
     return torch.sort(x, dim=axis, descending=descending, stable=stable).values
+
+
+def top_k(x, k, /, *, axis=-1, largest=True, sorted=True):
+    """torch.topk finds the k best values, but among equal ones it picks any, in any order. So
+    only its k-th value is kept: a second topk, of integer keys, takes every element better than
+    that value and then the first ones equal to it, in index order; a stable sort of those k
+    orders them."""
+    dim = top_k_axis(x.shape, k, axis)
+    key = x.to(torch.uint8) if x.dtype is torch.bool else x  # torch has no topk of bools
+    n = x.shape[dim]
+    if k == 0:
+        values = x.narrow(dim, 0, 0)
+        return TopKResult(values, torch.zeros(values.shape, dtype=torch.int64, device=x.device))
+    kth = torch.topk(key, k, dim, largest=largest, sorted=True).values.narrow(dim, k - 1, 1)
+    if key.is_floating_point():  # NaN is the largest value
+        nan, nan_kth = key.isnan(), kth.isnan()
+        if largest:
+            better = (key > kth) | (nan & ~nan_kth)
+        else:
+            better = (key < kth) | (~nan & nan_kth)
+        tied = (key == kth) | (nan & nan_kth)
+    else:
+        better = key > kth if largest else key < kth
+        tied = key == kth
+    shape = [1] * x.ndim
+    shape[dim] = n
+    small = torch.int32 if 2 * n < 2**31 else torch.int64  # int32 keys: faster wheres
+    rank = torch.arange(n, 0, -1, dtype=small, device=x.device).reshape(shape)  # earlier: larger
+    # every better element (fewer than k) outranks every tied one, which outranks the rest
+    order_key = torch.where(better, rank + n, torch.where(tied, rank, 0))
+    indices = torch.topk(order_key, k, dim).indices
+    if sorted:  # by value; equal values stay in index order
+        by_value = torch.sort(key.gather(dim, indices), dim=dim, descending=largest, stable=True)
+        indices = indices.gather(dim, by_value[1])
+    return TopKResult(x.gather(dim, indices), indices)

@@ -16,6 +16,7 @@ __all__ = [
     "std",
     "cumulative_sum",
     "cumulative_prod",
+    "logsumexp",
 ]
 
 
@@ -101,3 +102,12 @@ def cumulative_sum(x, /, *, axis=None, dtype=None, include_initial=False):
 
 def cumulative_prod(x, /, *, axis=None, dtype=None, include_initial=False):
     return _cumulative(torch.cumprod, 1, x, axis, dtype, include_initial, "cumulative_prod")
+
+
+def logsumexp(x, /, *, axis=None, keepdims=False):
+    if not (x.is_floating_point() or x.is_complex()):
+        x = x.to(torch.float32)
+    x, dim, keepdim = reduction_args(x, axis, keepdims)
+    if dim is None:
+        dim = tuple(range(x.ndim)) if x.ndim else 0  # torch.logsumexp needs the dims
+    return torch.logsumexp(x, dim, keepdim=keepdim)
