@@ -63,6 +63,7 @@ def leaky_relu(x, /, alpha=0.2, *, f=None):
         array([-0.2,  2. ])
     """
     xp = _fh.get_framework(x, f=f)
+    x = _inexact(xp, x)
     return xp.where(xp.greater(x, 0), x, xp.multiply(x, alpha))
 
 
@@ -149,6 +150,7 @@ def softplus(x, /, *, f=None):
         array([0.00000000e+00, 6.93147181e-01, 1.00000000e+03])
     """
     xp = _fh.get_framework(x, f=f)
+    x = _inexact(xp, x)
     positive = xp.greater(x, 0)
     exp_minus_abs = xp.exp(xp.where(positive, xp.negative(x), x))
     return xp.add(xp.where(positive, x, 0), xp.log1p(exp_minus_abs))
@@ -169,6 +171,7 @@ def silu(x, /, *, f=None):
         array([0.        , 0.73105858])
     """
     xp = _fh.get_framework(x, f=f)
+    x = _inexact(xp, x)
     return xp.multiply(x, xp.sigmoid(x))
 
 
@@ -188,6 +191,17 @@ def elu(x, /, alpha=1.0, *, f=None):
         array([-0.63212056,  2.        ])
     """
     xp = _fh.get_framework(x, f=f)
+    x = _inexact(xp, x)
     positive = xp.greater(x, 0)
     negative_part = xp.multiply(xp.expm1(xp.where(positive, 0, x)), alpha)
     return xp.where(positive, x, negative_part)
+
+
+def _inexact(xp, x):
+    """``x``, with an integer or boolean array as float32: how functions of real numbers treat
+    such inputs on every backend (``ivy/backends/_reals.py``)."""
+    if not hasattr(x, "dtype"):
+        x = xp.asarray(x)
+    if xp.isdtype(x.dtype, ("real floating", "complex floating")):
+        return x
+    return xp.astype(x, xp.float32)
