@@ -12,7 +12,10 @@ def is_floating(name: str) -> bool:
 
 
 def floating(xp, x):
-    """``x``, or ``x`` cast to float32 when it is not of a floating or complex dtype."""
+    """``x`` as an array, cast to float32 when it is not of a floating or complex dtype (the
+    rule of every backend's functions of real numbers, ``ivy/backends/_reals.py``)."""
+    if not hasattr(x, "dtype"):
+        x = xp.asarray(x)
     return x if is_floating(xp.dtype(x, as_str=True)) else xp.astype(x, "float32")
 
 

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition, dispatch
+from ivy.core._floats import floating
 
 __all__ = [
     "relu",
@@ -63,6 +64,7 @@ def leaky_relu(x, /, alpha=0.2, *, f=None):
         array([-0.2,  2. ])
     """
     xp = _fh.get_framework(x, f=f)
+    x = floating(xp, x)
     return xp.where(xp.greater(x, 0), x, xp.multiply(x, alpha))
 
 
@@ -149,6 +151,7 @@ def softplus(x, /, *, f=None):
         array([0.00000000e+00, 6.93147181e-01, 1.00000000e+03])
     """
     xp = _fh.get_framework(x, f=f)
+    x = floating(xp, x)
     positive = xp.greater(x, 0)
     exp_minus_abs = xp.exp(xp.where(positive, xp.negative(x), x))
     return xp.add(xp.where(positive, x, 0), xp.log1p(exp_minus_abs))
@@ -169,6 +172,7 @@ def silu(x, /, *, f=None):
         array([0.        , 0.73105858])
     """
     xp = _fh.get_framework(x, f=f)
+    x = floating(xp, x)
     return xp.multiply(x, xp.sigmoid(x))
 
 
@@ -188,6 +192,7 @@ def elu(x, /, alpha=1.0, *, f=None):
         array([-0.63212056,  2.        ])
     """
     xp = _fh.get_framework(x, f=f)
+    x = floating(xp, x)
     positive = xp.greater(x, 0)
     negative_part = xp.multiply(xp.expm1(xp.where(positive, 0, x)), alpha)
     return xp.where(positive, x, negative_part)

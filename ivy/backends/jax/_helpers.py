@@ -130,3 +130,10 @@ def default_device():
     if d is None:
         return jax.devices()[0]
     return native_device(d) if isinstance(d, str) else d
+
+
+def as_inexact(x):
+    """``x``, with an integer or boolean array converted to float32: how functions of real
+    numbers treat such inputs on every backend (see ``ivy/backends/_reals.py``)."""
+    x = jnp.asarray(x)
+    return x if x.dtype.kind in "fc" else x.astype(jnp.float32)

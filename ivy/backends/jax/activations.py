@@ -4,19 +4,24 @@ from __future__ import annotations
 
 import jax
 
+from ivy.backends.jax._helpers import as_inexact
+
 __all__ = ["relu", "gelu", "sigmoid", "softmax", "log_softmax"]
 
 relu = jax.nn.relu
-sigmoid = jax.nn.sigmoid
+
+
+def sigmoid(x, /):
+    return jax.nn.sigmoid(as_inexact(x))
 
 
 def gelu(x, /, approximate=False):
-    return jax.nn.gelu(x, approximate=approximate)
+    return jax.nn.gelu(as_inexact(x), approximate=approximate)
 
 
 def softmax(x, /, axis=-1):
-    return jax.nn.softmax(x, axis=axis)
+    return jax.nn.softmax(as_inexact(x), axis=axis)
 
 
 def log_softmax(x, /, axis=-1):
-    return jax.nn.log_softmax(x, axis=axis)
+    return jax.nn.log_softmax(as_inexact(x), axis=axis)

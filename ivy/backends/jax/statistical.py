@@ -5,7 +5,8 @@ from __future__ import annotations
 import jax
 import jax.numpy as jnp
 
-from ivy.backends.jax._helpers import default_int, native_dtype
+from ivy.backends import _reals
+from ivy.backends.jax._helpers import as_inexact, default_int, native_dtype
 
 __all__ = [
     "sum",
@@ -20,11 +21,11 @@ __all__ = [
     "logsumexp",
 ]
 
-mean = jnp.mean
+mean = _reals.unary(jnp.mean, "mean", as_inexact)
 min = jnp.min
 max = jnp.max
-var = jnp.var  # takes ``correction=`` as the Array API does
-std = jnp.std
+var = _reals.unary(jnp.var, "var", as_inexact)  # takes ``correction=`` as the Array API does
+std = _reals.unary(jnp.std, "std", as_inexact)
 
 
 def sum(x, /, *, axis=None, dtype=None, keepdims=False):

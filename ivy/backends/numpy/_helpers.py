@@ -51,3 +51,10 @@ def default_dtype_of_value(value):
     if isinstance(value, (complex, np.complexfloating)):
         return np.complex64
     return None
+
+
+def as_inexact(x):
+    """``x``, with an integer or boolean array converted to float32: how functions of real
+    numbers treat such inputs on every backend (see ``ivy/backends/_reals.py``)."""
+    x = np.asarray(x)
+    return x if x.dtype.kind in "fc" else x.astype(np.float32)

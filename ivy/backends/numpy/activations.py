@@ -10,6 +10,8 @@ import math
 
 import numpy as np
 
+from ivy.backends.numpy._helpers import as_inexact
+
 __all__ = ["relu", "gelu", "sigmoid", "softmax", "log_softmax"]
 
 try:  # scipy is optional for the numpy backend
@@ -32,7 +34,7 @@ def relu(x, /):
 
 
 def gelu(x, /, approximate=False):
-    x = np.asarray(x)
+    x = as_inexact(x)
     if approximate:
         out = 0.5 * x * (1 + np.tanh(_SQRT_2_OVER_PI * (x + 0.044715 * x**3)))
     else:
@@ -41,7 +43,7 @@ def gelu(x, /, approximate=False):
 
 
 def sigmoid(x, /):
-    x = np.asarray(x)
+    x = as_inexact(x)
     if _expit is not None:
         return _expit(x)
     z = np.exp(-np.abs(x))  # pragma: no cover
@@ -49,10 +51,12 @@ def sigmoid(x, /):
 
 
 def softmax(x, /, axis=-1):
+    x = as_inexact(x)
     e = np.exp(x - np.max(x, axis=axis, keepdims=True))
     return e / np.sum(e, axis=axis, keepdims=True)
 
 
 def log_softmax(x, /, axis=-1):
+    x = as_inexact(x)
     shifted = x - np.max(x, axis=axis, keepdims=True)
     return shifted - np.log(np.sum(np.exp(shifted), axis=axis, keepdims=True))

@@ -1,8 +1,12 @@
-"""numpy backend: elementwise functions (numpy ufuncs, exported as they are)."""
+"""numpy backend: elementwise functions (numpy ufuncs, exported as they are), except the
+functions of real numbers (sin, divide...), which compute integer and boolean arrays in float32
+where numpy would use float64 or float16 (see ``ivy/backends/_reals.py``)."""
 
 from __future__ import annotations
 
 import numpy as np
+
+from ivy.backends import _reals
 
 __all__ = [
     "abs",
@@ -75,15 +79,33 @@ __all__ = [
     "trunc",
 ]
 
+
+def _float32(x):
+    return x.astype(np.float32)
+
+
+def _astype(x, dtype):
+    return x.astype(dtype)
+
+
+def _on_reals(native, name):
+    """``native`` computing integer and boolean arrays in float32 (ivy's rule, see _reals)."""
+    return _reals.unary(native, name, _float32)
+
+
+def _on_reals2(native, name):
+    return _reals.binary(native, name, _float32, _astype)
+
+
 abs = np.abs
-acos = np.acos
-acosh = np.acosh
+acos = _on_reals(np.acos, "acos")
+acosh = _on_reals(np.acosh, "acosh")
 add = np.add
-asin = np.asin
-asinh = np.asinh
-atan = np.atan
-atan2 = np.atan2
-atanh = np.atanh
+asin = _on_reals(np.asin, "asin")
+asinh = _on_reals(np.asinh, "asinh")
+atan = _on_reals(np.atan, "atan")
+atan2 = _on_reals2(np.atan2, "atan2")
+atanh = _on_reals(np.atanh, "atanh")
 bitwise_and = np.bitwise_and
 bitwise_invert = np.bitwise_invert
 bitwise_left_shift = np.bitwise_left_shift
@@ -92,29 +114,29 @@ bitwise_right_shift = np.bitwise_right_shift
 bitwise_xor = np.bitwise_xor
 ceil = np.ceil
 conj = np.conj
-copysign = np.copysign
-cos = np.cos
-cosh = np.cosh
-divide = np.divide
+copysign = _on_reals2(np.copysign, "copysign")
+cos = _on_reals(np.cos, "cos")
+cosh = _on_reals(np.cosh, "cosh")
+divide = _on_reals2(np.divide, "divide")
 equal = np.equal
-exp = np.exp
-expm1 = np.expm1
+exp = _on_reals(np.exp, "exp")
+expm1 = _on_reals(np.expm1, "expm1")
 floor = np.floor
 floor_divide = np.floor_divide
 greater = np.greater
 greater_equal = np.greater_equal
-hypot = np.hypot
+hypot = _on_reals2(np.hypot, "hypot")
 imag = np.imag
 isfinite = np.isfinite
 isinf = np.isinf
 isnan = np.isnan
 less = np.less
 less_equal = np.less_equal
-log = np.log
-log10 = np.log10
-log1p = np.log1p
-log2 = np.log2
-logaddexp = np.logaddexp
+log = _on_reals(np.log, "log")
+log10 = _on_reals(np.log10, "log10")
+log1p = _on_reals(np.log1p, "log1p")
+log2 = _on_reals(np.log2, "log2")
+logaddexp = _on_reals2(np.logaddexp, "logaddexp")
 logical_and = np.logical_and
 logical_not = np.logical_not
 logical_or = np.logical_or
@@ -123,23 +145,23 @@ maximum = np.maximum
 minimum = np.minimum
 multiply = np.multiply
 negative = np.negative
-nextafter = np.nextafter
+nextafter = _on_reals2(np.nextafter, "nextafter")
 not_equal = np.not_equal
 positive = np.positive
 pow = np.pow
 real = np.real
-reciprocal = np.reciprocal
+reciprocal = _on_reals(np.reciprocal, "reciprocal")
 remainder = np.remainder
 round = np.round
 sign = np.sign
 signbit = np.signbit
-sin = np.sin
-sinh = np.sinh
-sqrt = np.sqrt
+sin = _on_reals(np.sin, "sin")
+sinh = _on_reals(np.sinh, "sinh")
+sqrt = _on_reals(np.sqrt, "sqrt")
 square = np.square
 subtract = np.subtract
-tan = np.tan
-tanh = np.tanh
+tan = _on_reals(np.tan, "tan")
+tanh = _on_reals(np.tanh, "tanh")
 trunc = np.trunc
 
 

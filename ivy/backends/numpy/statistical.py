@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ivy.backends.numpy._helpers import native_dtype
+from ivy.backends.numpy._helpers import as_inexact, native_dtype
 
 __all__ = [
     "sum",
@@ -29,7 +29,7 @@ def prod(x, /, *, axis=None, dtype=None, keepdims=False):
 
 
 def mean(x, /, *, axis=None, keepdims=False):
-    return np.mean(x, axis=axis, keepdims=keepdims)
+    return np.mean(as_inexact(x), axis=axis, keepdims=keepdims)
 
 
 def min(x, /, *, axis=None, keepdims=False):
@@ -41,11 +41,11 @@ def max(x, /, *, axis=None, keepdims=False):
 
 
 def var(x, /, *, axis=None, correction=0.0, keepdims=False):
-    return np.var(x, axis=axis, ddof=correction, keepdims=keepdims)
+    return np.var(as_inexact(x), axis=axis, ddof=correction, keepdims=keepdims)
 
 
 def std(x, /, *, axis=None, correction=0.0, keepdims=False):
-    return np.std(x, axis=axis, ddof=correction, keepdims=keepdims)
+    return np.std(as_inexact(x), axis=axis, ddof=correction, keepdims=keepdims)
 
 
 cumulative_sum = np.cumulative_sum

@@ -276,3 +276,10 @@ def ivy_device(tf_name: str) -> str:
             dev = "cpu"
         _IVY_DEVICES[tf_name] = dev
     return dev
+
+
+def as_inexact(x):
+    """``x``, with an integer or boolean array converted to float32: how functions of real
+    numbers treat such inputs on every backend (see ``ivy/backends/_reals.py``)."""
+    x = tensor(x)
+    return x if x.dtype.is_floating or x.dtype.is_complex else tf.cast(x, tf.float32)

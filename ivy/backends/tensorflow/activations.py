@@ -10,17 +10,22 @@ import math
 
 import tensorflow as tf
 
+from ivy.backends.tensorflow._helpers import as_inexact
+
 __all__ = ["relu", "gelu", "sigmoid", "softmax", "log_softmax"]
 
 _SQRT_HALF = math.sqrt(0.5)
 _SQRT_2_OVER_PI = math.sqrt(2 / math.pi)
 
 relu = tf.nn.relu
-sigmoid = tf.math.sigmoid
+
+
+def sigmoid(x, /):
+    return tf.math.sigmoid(as_inexact(x))
 
 
 def gelu(x, /, approximate=False):
-    x = tf.convert_to_tensor(x)
+    x = as_inexact(x)
     if approximate:
         inner = _SQRT_2_OVER_PI * (x + 0.044715 * x * x * x)
         return 0.5 * x * (1 + tf.math.tanh(inner))
@@ -28,8 +33,8 @@ def gelu(x, /, approximate=False):
 
 
 def softmax(x, /, axis=-1):
-    return tf.nn.softmax(x, axis=axis)
+    return tf.nn.softmax(as_inexact(x), axis=axis)
 
 
 def log_softmax(x, /, axis=-1):
-    return tf.nn.log_softmax(x, axis=axis)
+    return tf.nn.log_softmax(as_inexact(x), axis=axis)

@@ -19,7 +19,15 @@ import math
 
 import tensorflow as tf
 
-from ivy.backends.tensorflow._helpers import FAST_TYPES, REFUSED, promote, tensor, tensor_of
+from ivy.backends.tensorflow._helpers import (
+    FAST_TYPES,
+    REFUSED,
+    TENSOR_TYPES,
+    as_inexact,
+    promote,
+    tensor,
+    tensor_of,
+)
 
 __all__ = [
     "abs",
@@ -93,41 +101,61 @@ __all__ = [
 ]
 
 
+def _of_reals(native, name: str):
+    """tf's function of real numbers ``native``, which refuses integers and bools: those are
+    computed in float32 (ivy's rule for every backend, ``ivy/backends/_reals.py``)."""
+
+    def fn(x, /):
+        try:
+            return native(x)
+        except REFUSED:
+            x = tensor(x)
+            if x.dtype.is_floating or x.dtype.is_complex:
+                raise
+            return native(tf.cast(x, tf.float32))
+
+    fn.__name__ = fn.__qualname__ = name
+    return fn
+
+
 abs = tf.math.abs
-acos = tf.math.acos
-acosh = tf.math.acosh
-asin = tf.math.asin
-asinh = tf.math.asinh
-atan = tf.math.atan
-atanh = tf.math.atanh
+acos = _of_reals(tf.math.acos, "acos")
+acosh = _of_reals(tf.math.acosh, "acosh")
+asin = _of_reals(tf.math.asin, "asin")
+asinh = _of_reals(tf.math.asinh, "asinh")
+atan = _of_reals(tf.math.atan, "atan")
+atanh = _of_reals(tf.math.atanh, "atanh")
 conj = tf.math.conj
-cos = tf.math.cos
-cosh = tf.math.cosh
-exp = tf.math.exp
-expm1 = tf.math.expm1
+cos = _of_reals(tf.math.cos, "cos")
+cosh = _of_reals(tf.math.cosh, "cosh")
+exp = _of_reals(tf.math.exp, "exp")
+expm1 = _of_reals(tf.math.expm1, "expm1")
 imag = tf.math.imag
-log = tf.math.log
-log1p = tf.math.log1p
+log = _of_reals(tf.math.log, "log")
+log1p = _of_reals(tf.math.log1p, "log1p")
 negative = tf.math.negative
 positive = tf.identity
 real = tf.math.real
-reciprocal = tf.math.reciprocal
 round = tf.math.round
 sign = tf.math.sign
-sin = tf.math.sin
-sinh = tf.math.sinh
-sqrt = tf.math.sqrt
+sin = _of_reals(tf.math.sin, "sin")
+sinh = _of_reals(tf.math.sinh, "sinh")
+sqrt = _of_reals(tf.math.sqrt, "sqrt")
 square = tf.math.square
-tan = tf.math.tan
-tanh = tf.math.tanh
+tan = _of_reals(tf.math.tan, "tan")
+tanh = _of_reals(tf.math.tanh, "tanh")
 
 
 def log2(x, /):
-    return tf.math.log(x) / math.log(2.0)
+    return log(x) / math.log(2.0)
 
 
 def log10(x, /):
-    return tf.math.log(x) / math.log(10.0)
+    return log(x) / math.log(10.0)
+
+
+def reciprocal(x, /):
+    return tf.math.reciprocal(as_inexact(x))  # tf's would divide integers as integers
 
 
 def _rounding(native, name: str):
@@ -210,8 +238,8 @@ def _binary(native, name: str, fallback=promote):
 
 
 add = _binary(tf.math.add, "add")
-atan2 = _binary(tf.math.atan2, "atan2")
-divide = _binary(tf.math.divide, "divide")
+atan2 = _binary(tf.math.atan2, "atan2", lambda *v: _floating(*promote(*v)))
+_divide = _binary(tf.math.divide, "divide")
 equal = _binary(tf.math.equal, "equal")
 floor_divide = _binary(tf.math.floordiv, "floor_divide")
 greater = _binary(tf.math.greater, "greater")
@@ -228,6 +256,14 @@ subtract = _binary(tf.math.subtract, "subtract")
 logical_and = _binary(tf.math.logical_and, "logical_and", _as_bools)
 logical_or = _binary(tf.math.logical_or, "logical_or", _as_bools)
 logical_xor = _binary(tf.math.logical_xor, "logical_xor", _as_bools)
+
+
+def divide(x1, x2, /):
+    """``x1 / x2``; integers and bools are divided in float32 (tf would use float64)."""
+    for v in (x1, x2):
+        if isinstance(v, TENSOR_TYPES) and (v.dtype.is_floating or v.dtype.is_complex):
+            return _divide(x1, x2)
+    return _divide(*_floating(*promote(x1, x2)))
 
 
 def logical_not(x, /):

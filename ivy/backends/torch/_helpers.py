@@ -90,3 +90,11 @@ def reduction_args(x, axis, keepdims):
     if isinstance(axis, (tuple, list)) and not axis:
         return x.unsqueeze(-1), -1, False
     return x, axis, keepdims
+
+
+def as_inexact(x):
+    """``x``, with an integer or boolean array converted to float32: how functions of real
+    numbers treat such inputs on every backend (see ``ivy/backends/_reals.py``)."""
+    if not isinstance(x, torch.Tensor):
+        x = torch.as_tensor(x)
+    return x if x.is_floating_point() or x.is_complex() else x.to(torch.float32)

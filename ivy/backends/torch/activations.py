@@ -5,6 +5,8 @@ from __future__ import annotations
 import torch
 import torch.nn.functional as F
 
+from ivy.backends.torch._helpers import as_inexact
+
 __all__ = ["relu", "gelu", "sigmoid", "softmax", "log_softmax"]
 
 relu = torch.relu
@@ -12,12 +14,12 @@ sigmoid = torch.sigmoid
 
 
 def gelu(x, /, approximate=False):
-    return F.gelu(x, approximate="tanh" if approximate else "none")
+    return F.gelu(as_inexact(x), approximate="tanh" if approximate else "none")
 
 
 def softmax(x, /, axis=-1):
-    return torch.softmax(x, axis)
+    return torch.softmax(as_inexact(x), axis)
 
 
 def log_softmax(x, /, axis=-1):
-    return torch.log_softmax(x, axis)
+    return torch.log_softmax(as_inexact(x), axis)

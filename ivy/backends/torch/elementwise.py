@@ -12,7 +12,7 @@ import operator
 
 import torch
 
-from ivy.backends.torch._helpers import with_tensor_operands
+from ivy.backends.torch._helpers import as_inexact, with_tensor_operands
 from ivy.backends.torch.creation import asarray
 
 __all__ = [
@@ -152,15 +152,15 @@ def copysign(x1, x2, /):
 
 
 def hypot(x1, x2, /):
-    return torch.hypot(*with_tensor_operands(x1, x2))
+    return torch.hypot(*_inexact_operands(x1, x2))
 
 
 def logaddexp(x1, x2, /):
-    return torch.logaddexp(*with_tensor_operands(x1, x2))
+    return torch.logaddexp(*_inexact_operands(x1, x2))
 
 
 def nextafter(x1, x2, /):
-    return torch.nextafter(*with_tensor_operands(x1, x2))
+    return torch.nextafter(*_inexact_operands(x1, x2))
 
 
 def logical_and(x1, x2, /):
@@ -216,3 +216,15 @@ def _tensor_or_scalar(value):
 
 def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):
     return torch.nan_to_num(x, nan=nan, posinf=posinf, neginf=neginf)
+
+
+def _inexact_operands(x1, x2):
+    """Tensor operands of one dtype for functions torch defines on floats only: integer and
+    boolean operands become float32 (ivy's rule, ``ivy/backends/_reals.py``), or the dtype of
+    the floating operand."""
+    a, b = with_tensor_operands(x1, x2)
+    if a.is_floating_point() or a.is_complex():
+        return a, b if b.dtype is a.dtype else b.to(torch.promote_types(a.dtype, b.dtype))
+    if b.is_floating_point() or b.is_complex():
+        return a.to(b.dtype), b
+    return as_inexact(a), as_inexact(b)

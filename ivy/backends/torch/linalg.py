@@ -152,7 +152,7 @@ def trace(x, /, *, offset=0, dtype=None):
 def vecdot(x1, x2, /, *, axis=-1):
     x1, x2 = _promoted(x1, x2)
     if not (x1.is_floating_point() or x1.is_complex()):  # torch.linalg.vecdot refuses integers
-        return torch.sum(x1 * x2, dim=axis)
+        return torch.sum(x1 * x2, dim=axis, dtype=x1.dtype)  # torch would sum in int64
     return torch.linalg.vecdot(x1, x2, dim=axis)
 
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import torch
 
-from ivy.backends.torch._helpers import native_dtype, reduction_args
+from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
 
 __all__ = [
     "sum",
@@ -39,7 +39,7 @@ def prod(x, /, *, axis=None, dtype=None, keepdims=False):
 
 
 def mean(x, /, *, axis=None, keepdims=False):
-    x, dim, keepdim = reduction_args(x, axis, keepdims)
+    x, dim, keepdim = reduction_args(as_inexact(x), axis, keepdims)
     return torch.mean(x, dim=dim, keepdim=keepdim)
 
 
@@ -54,12 +54,12 @@ def max(x, /, *, axis=None, keepdims=False):
 
 
 def var(x, /, *, axis=None, correction=0.0, keepdims=False):
-    x, dim, keepdim = reduction_args(x, axis, keepdims)
+    x, dim, keepdim = reduction_args(as_inexact(x), axis, keepdims)
     return torch.var(x, dim=dim, correction=correction, keepdim=keepdim)
 
 
 def std(x, /, *, axis=None, correction=0.0, keepdims=False):
-    x, dim, keepdim = reduction_args(x, axis, keepdims)
+    x, dim, keepdim = reduction_args(as_inexact(x), axis, keepdims)
     return torch.std(x, dim=dim, correction=correction, keepdim=keepdim)
 
 

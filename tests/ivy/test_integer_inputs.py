@@ -1,0 +1,125 @@
+"""Integer and boolean arrays given to functions defined on floating-point numbers.
+
+The Array API leaves this open ("should have a floating-point data type"), and the frameworks
+disagree: numpy computes in float64 (float16 for bool), torch in its default float, jax in
+float64 for int64 under x64, tensorflow refuses. ivy makes one rule for every backend: such
+inputs are computed in the default float dtype, float32, as a float32 array of the same values
+would be. Reductions and products of integers (sum, prod, matmul, vecdot...) stay integer.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy import special
+
+import ivy
+from tests.helpers import api, check, reference
+
+# name, numpy float64 reference, integer inputs in the function's domain
+UNARY = [
+    ("acos", np.arccos, [-1, 0, 1]),
+    ("acosh", np.arccosh, [1, 2, 7]),
+    ("asin", np.arcsin, [-1, 0, 1]),
+    ("asinh", np.arcsinh, [-3, 0, 7]),
+    ("atan", np.arctan, [-3, 0, 7]),
+    ("atanh", np.arctanh, [-1, 0, 1]),
+    ("cos", np.cos, [-3, 0, 7]),
+    ("cosh", np.cosh, [-3, 0, 7]),
+    ("exp", np.exp, [-3, 0, 7]),
+    ("expm1", np.expm1, [-3, 0, 7]),
+    ("log", np.log, [0, 1, 7]),
+    ("log10", np.log10, [0, 1, 100]),
+    ("log1p", np.log1p, [-1, 0, 7]),
+    ("log2", np.log2, [0, 1, 8]),
+    ("reciprocal", np.reciprocal, [-3, 1, 7]),  # 1/x of integers is not an integer
+    ("sin", np.sin, [-3, 0, 7]),
+    ("sinh", np.sinh, [-3, 0, 7]),
+    ("sqrt", np.sqrt, [0, 2, 9]),
+    ("tan", np.tan, [-3, 0, 7]),
+    ("tanh", np.tanh, [-3, 0, 7]),
+    ("sigmoid", special.expit, [-3, 0, 7]),
+    ("softplus", lambda x: np.logaddexp(0.0, x), [-3, 0, 7]),
+    ("silu", lambda x: x * special.expit(x), [-3, 0, 7]),
+    ("elu", lambda x: np.where(x > 0, x, np.expm1(x)), [-3, 0, 7]),
+    ("gelu", lambda x: x * special.ndtr(x), [-3, 0, 7]),
+    ("softmax", lambda x: special.softmax(x, axis=-1), [-3, 0, 7]),
+    ("log_softmax", lambda x: special.log_softmax(x, axis=-1), [-3, 0, 7]),
+    ("mean", np.mean, [-3, 0, 7]),
+    ("var", np.var, [-3, 0, 7]),
+    ("std", np.std, [-3, 0, 7]),
+    ("logsumexp", special.logsumexp, [-3, 0, 7]),
+    ("median", np.median, [-3, 0, 7]),
+]
+BINARY = [
+    ("atan2", np.arctan2, [-3, 0, 7], [2, -1, 0]),
+    ("copysign", np.copysign, [-3, 0, 7], [2, -1, -5]),
+    ("divide", np.divide, [-3, 0, 7], [2, -1, 4]),
+    ("hypot", np.hypot, [-3, 0, 7], [4, -1, 0]),
+    ("logaddexp", np.logaddexp, [-3, 0, 7], [2, -1, 0]),
+]
+INT_DTYPES = ["int8", "int32", "int64", "uint8"]
+
+
+def _native(a, backend):
+    return getattr(ivy, backend).asarray(a)
+
+
+def _inputs(values, dtype):
+    if dtype == "uint8":
+        values = [abs(v) for v in values]
+    return np.asarray(values, dtype=dtype)
+
+
+@pytest.mark.parametrize("dtype", INT_DTYPES)
+@pytest.mark.parametrize("name, ref, values", UNARY, ids=[u[0] for u in UNARY])
+def test_float_functions_of_integers_compute_in_float32(backend, name, ref, values, dtype):
+    a = _inputs(values, dtype)
+    expected = reference(ref, a.astype(np.float64))
+    for fn in api(backend, name):
+        check(fn(_native(a, backend)), expected, backend, dtype="float32")
+
+
+@pytest.mark.parametrize("dtype", INT_DTYPES)
+@pytest.mark.parametrize("name, ref, x1, x2", BINARY, ids=[b[0] for b in BINARY])
+def test_binary_float_functions_of_integers_compute_in_float32(backend, name, ref, x1, x2, dtype):
+    a, b = _inputs(x1, dtype), _inputs(x2, dtype)
+    expected = reference(ref, a.astype(np.float64), b.astype(np.float64))
+    for fn in api(backend, name):
+        check(fn(_native(a, backend), _native(b, backend)), expected, backend, dtype="float32")
+    # an integer next to a float array takes the float's dtype, as type promotion says
+    f64 = b.astype(np.float64)
+    out = getattr(ivy, name)(_native(a, backend), _native(f64, backend))
+    check(out, reference(ref, a.astype(np.float64), f64), backend, dtype="float64")
+
+
+@pytest.mark.parametrize("name", ["sqrt", "exp", "mean", "sigmoid", "divide"])
+def test_booleans_count_as_zero_and_one(backend, name):
+    a = np.array([True, False, True])
+    expected = {
+        "sqrt": np.sqrt,
+        "exp": np.exp,
+        "mean": np.mean,
+        "sigmoid": special.expit,
+        "divide": lambda x: x / x,
+    }[name](a.astype(np.float64))
+    args = (_native(a, backend),) * (2 if name == "divide" else 1)
+    check(getattr(ivy, name)(*args), reference(lambda: expected), backend, dtype="float32")
+
+
+@pytest.mark.parametrize("name", ["sum", "prod", "cumulative_sum"])
+def test_integer_reductions_stay_integer(backend, name):
+    a = np.array([[1, 2], [3, 5]], dtype=np.int32)
+    ref = {"sum": np.sum, "prod": np.prod, "cumulative_sum": lambda x: np.cumsum(x, axis=0)}
+    kwargs = {"axis": 0} if name == "cumulative_sum" else {}
+    out = getattr(ivy, name)(_native(a, backend), **kwargs)
+    # the Array API: sums and products of signed integers accumulate in the default int, int64
+    check(out, ref[name](a).astype(np.int64), backend)
+
+
+@pytest.mark.parametrize("dtype", ["int32", "int64"])
+def test_integer_products_keep_their_dtype(backend, dtype):
+    a = np.array([[1, 2], [3, 5]], dtype=dtype)
+    x = _native(a, backend)
+    check(ivy.vecdot(x[0], x[1]), np.array(a[0] @ a[1], dtype=dtype), backend)
+    check(ivy.matmul(x, x), (a @ a).astype(dtype), backend)
