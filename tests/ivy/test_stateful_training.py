@@ -196,7 +196,11 @@ def test_compiled_training_step_equals_eager(request, compiled_backend):
     tol = dict(rtol=1e-4, atol=1e-6)
     nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), compiled_backend, **tol), v_c, v_e)
     nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), compiled_backend, **tol), s_c, s_e)
-    if compiled_backend == "torch":
+    instrumented = any(  # scripts/coverage_table.py's wrappers break graphs of their own
+        getattr(p, "wraps_backend_functions", False)
+        for p in request.config.pluginmanager.get_plugins()
+    )
+    if compiled_backend == "torch" and not instrumented:
         # forward, autograd.grad and the update form one graph, with no break around the grads
         assert dict(torch._dynamo.utils.counters["graph_break"]) == {}
         assert torch._dynamo.utils.counters["stats"]["unique_graphs"] == 1
