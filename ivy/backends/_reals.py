@@ -7,30 +7,63 @@ dtype, float32, as it would a float32 array of the same values. Next to a floati
 integer one takes the floating dtype, as type promotion says.
 
 numpy's own ufuncs compute integers in float64 and booleans in float16; jax computes int64 in
-float64 when 64-bit types are on. The wrappers here convert such inputs first, and cost one
-dtype check when the inputs are already floating.
+float64 when 64-bit types are on. The wrappers here call the framework's function and look at
+the result's dtype: float32 (the common case) is returned at once; only a float16, float64 or
+complex128 result, which such inputs produce, leads to a look at the inputs, and to a second
+call with converted inputs when they were not floating. A float32 call costs one function call
+and a dtype comparison more than the framework's own.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
+import numpy as np
+
 _INEXACT = "fc"  # numpy dtype kinds: floating, complex
+_PYTHON_SCALARS = frozenset({bool, int, float, complex})
+# The result dtypes that integer or boolean inputs can produce (float32 ones cannot).
+_F16, _F64, _C128 = np.dtype(np.float16), np.dtype(np.float64), np.dtype(np.complex128)
+
+
+def _suspect(out) -> bool:
+    dtype = out.dtype
+    return dtype is _F64 or dtype is _F16 or dtype is _C128
+
+
+def _kind(x):
+    """``x``'s dtype kind; None for a Python scalar (and for array-likes without a dtype)."""
+    return None if type(x) in _PYTHON_SCALARS else getattr(getattr(x, "dtype", None), "kind", None)
 
 
 def unary(native: Callable, name: str, to_float32: Callable) -> Callable:
-    """``native(x, ...)`` with an integer or boolean ``x`` converted by ``to_float32`` first."""
+    """``native(x)`` with an integer or boolean ``x`` converted by ``to_float32`` first."""
+
+    def fn(x, /):
+        out = native(x)
+        dtype = out.dtype  # inlined _suspect: this is the hot path of small arrays
+        if dtype is not _F64 and dtype is not _F16 and dtype is not _C128:
+            return out
+        kind = _kind(x)
+        return out if kind is None or kind in _INEXACT else native(to_float32(x))
+
+    return _named(fn, name, "inputs")
+
+
+def with_options(native: Callable, name: str, to_float32: Callable) -> Callable:
+    """``native(x, *args, **kwargs)`` (a reduction...) with an integer or boolean ``x``
+    converted by ``to_float32`` first."""
 
     def fn(x, /, *args, **kwargs):
-        try:
-            exact = x.dtype.kind not in _INEXACT
-        except AttributeError:  # a Python scalar: the framework's own rules
-            exact = False
-        return native(to_float32(x) if exact else x, *args, **kwargs)
+        out = native(x, *args, **kwargs)
+        if not _suspect(out):
+            return out
+        kind = _kind(x)
+        if kind is None or kind in _INEXACT:
+            return out
+        return native(to_float32(x), *args, **kwargs)
 
-    fn.__name__ = fn.__qualname__ = name
-    fn.__doc__ = f"{name}, with integer and boolean inputs computed in float32."
-    return fn
+    return _named(fn, name, "inputs")
 
 
 def binary(native: Callable, name: str, to_float32: Callable, astype: Callable) -> Callable:
@@ -38,10 +71,13 @@ def binary(native: Callable, name: str, to_float32: Callable, astype: Callable) 
     neither operand is floating, else to the floating operand's dtype."""
 
     def fn(x1, x2, /):
-        k1 = getattr(getattr(x1, "dtype", None), "kind", None)
-        k2 = getattr(getattr(x2, "dtype", None), "kind", None)
+        out = native(x1, x2)
+        dtype = out.dtype  # inlined _suspect, as in unary
+        if dtype is not _F64 and dtype is not _F16 and dtype is not _C128:
+            return out
+        k1, k2 = _kind(x1), _kind(x2)
         if (k1 is None or k1 in _INEXACT) and (k2 is None or k2 in _INEXACT):
-            return native(x1, x2)
+            return out
         if k1 is not None and k1 in _INEXACT:  # x2 exact: it takes x1's dtype
             return native(x1, astype(x2, x1.dtype))
         if k2 is not None and k2 in _INEXACT:
@@ -49,6 +85,10 @@ def binary(native: Callable, name: str, to_float32: Callable, astype: Callable) 
         # no floating array: exact arrays become float32, Python scalars stay as they are
         return native(x1 if k1 is None else to_float32(x1), x2 if k2 is None else to_float32(x2))
 
+    return _named(fn, name, "operands")
+
+
+def _named(fn: Callable, name: str, what: str) -> Callable:
     fn.__name__ = fn.__qualname__ = name
-    fn.__doc__ = f"{name}, with integer and boolean operands computed in float32."
+    fn.__doc__ = f"{name}, with integer and boolean {what} computed in float32."
     return fn

@@ -21,11 +21,11 @@ __all__ = [
     "logsumexp",
 ]
 
-mean = _reals.unary(jnp.mean, "mean", as_inexact)
+mean = _reals.with_options(jnp.mean, "mean", as_inexact)
 min = jnp.min
 max = jnp.max
-var = _reals.unary(jnp.var, "var", as_inexact)  # takes ``correction=`` as the Array API does
-std = _reals.unary(jnp.std, "std", as_inexact)
+var = _reals.with_options(jnp.var, "var", as_inexact)  # takes ``correction=`` as the Array API does
+std = _reals.with_options(jnp.std, "std", as_inexact)
 
 
 def sum(x, /, *, axis=None, dtype=None, keepdims=False):

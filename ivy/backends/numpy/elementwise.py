@@ -150,7 +150,13 @@ not_equal = np.not_equal
 positive = np.positive
 pow = np.pow
 real = np.real
-reciprocal = _on_reals(np.reciprocal, "reciprocal")
+
+
+def _reciprocal(x):
+    return np.divide(1.0, x)  # np.reciprocal would divide integers as integers (1 // x)
+
+
+reciprocal = _on_reals(_reciprocal, "reciprocal")
 remainder = np.remainder
 round = np.round
 sign = np.sign
