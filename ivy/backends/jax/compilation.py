@@ -1,6 +1,7 @@
 """jax backend: compilation with ``jax.jit``, threading the backend's PRNG key through.
 
-The jitted function takes the backend's PRNG key (``ivy.backends.jax.random``) as an extra input
+The jitted function takes the backend's PRNG key (``ivy.backends.jax.random``; as its raw uint32
+data, which jax passes through a jitted call faster than a typed key) as an extra input
 and returns the advanced key as an extra output, which is written back to the key state after
 the call. While jax traces the function, the key state holds the traced key, so every ivy random
 function inside draws from it. Draws therefore differ from call to call (they are not constants
@@ -72,14 +73,15 @@ def _committed_like(key, arguments):
 def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
     state = _random._state
 
-    def with_key(key, /, *args, **kwargs):
-        saved = state.key
-        state.key = key  # traced: draws inside the function come from the key passed in
+    def with_key(key_data, /, *args, **kwargs):
+        saved = state.saved()
+        # traced: draws inside the function come from the key passed in
+        state.key = jax.random.wrap_key_data(key_data)
         try:
             out = fn(*args, **kwargs)
-            return out, state.key
+            return out, jax.random.key_data(state.key)
         finally:
-            state.key = saved
+            state.restore(saved)
 
     try:
         sig = inspect.signature(fn)
@@ -93,17 +95,17 @@ def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
 
     @functools.wraps(fn)
     def compiled(*args, **kwargs):
-        key = state.key
-        if key is None:  # never seeded: next_key seeds from the OS's entropy
-            key = state.next_key()
-        if not isinstance(key, _Tracer) and not key.committed:
-            key = _committed_like(key, (args, kwargs))
-        out, new_key = jitted(key, *args, **kwargs)
-        if isinstance(new_key, _Tracer) and not isinstance(key, _Tracer):
+        if state.data is None:  # never seeded: next_key seeds from the OS's entropy
+            state.next_key()
+        data = state.data
+        if not isinstance(data, _Tracer) and not data.committed:
+            data = _committed_like(data, (args, kwargs))
+        out, new_data = jitted(data, *args, **kwargs)
+        if isinstance(new_data, _Tracer) and not isinstance(data, _Tracer):
             state.next_key()  # under an outer trace: advance the key concretely (and warn)
         else:
-            state.key = new_key
+            state.data = new_data
         return out
 
-    compiled.jitted = jitted  # the jax.jit object: (key, *args) -> (out, new_key)
+    compiled.jitted = jitted  # the jax.jit object: (key data, *args) -> (out, new key data)
     return compiled
