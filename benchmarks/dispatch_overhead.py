@@ -32,7 +32,7 @@ NATIVE = {
     "jax": ("import jax.numpy as nat", "nat.{fn}"),
     "tensorflow": ("import tensorflow as tf; nat = tf.math", "nat.{fn}"),
 }
-ARITY = {"add": 2, "multiply": 2, "sin": 1, "exp": 1, "maximum": 2}
+ARITY = {"add": 2, "multiply": 2, "divide": 2, "sin": 1, "exp": 1, "maximum": 2}
 VARIANTS = ("native", "ivy.<b>.fn", "inferred", "f=", "set")
 
 
