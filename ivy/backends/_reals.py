@@ -31,13 +31,17 @@ def _suspect(out) -> bool:
     return dtype is _F64 or dtype is _F16 or dtype is _C128
 
 
+def _float32(x):
+    return x.astype("float32")  # numpy and jax arrays alike
+
+
 def _kind(x):
     """``x``'s dtype kind; None for a Python scalar (and for array-likes without a dtype)."""
     return None if type(x) in _PYTHON_SCALARS else getattr(getattr(x, "dtype", None), "kind", None)
 
 
-def unary(native: Callable, name: str, to_float32: Callable) -> Callable:
-    """``native(x)`` with an integer or boolean ``x`` converted by ``to_float32`` first."""
+def unary(native: Callable, name: str) -> Callable:
+    """``native(x)`` with an integer or boolean ``x`` converted to float32 first."""
 
     def fn(x, /):
         out = native(x)
@@ -45,14 +49,14 @@ def unary(native: Callable, name: str, to_float32: Callable) -> Callable:
         if dtype is not _F64 and dtype is not _F16 and dtype is not _C128:
             return out
         kind = _kind(x)
-        return out if kind is None or kind in _INEXACT else native(to_float32(x))
+        return out if kind is None or kind in _INEXACT else native(_float32(x))
 
     return _named(fn, name, "inputs")
 
 
-def with_options(native: Callable, name: str, to_float32: Callable) -> Callable:
+def with_options(native: Callable, name: str) -> Callable:
     """``native(x, *args, **kwargs)`` (a reduction...) with an integer or boolean ``x``
-    converted by ``to_float32`` first."""
+    converted to float32 first."""
 
     def fn(x, /, *args, **kwargs):
         out = native(x, *args, **kwargs)
@@ -61,12 +65,12 @@ def with_options(native: Callable, name: str, to_float32: Callable) -> Callable:
         kind = _kind(x)
         if kind is None or kind in _INEXACT:
             return out
-        return native(to_float32(x), *args, **kwargs)
+        return native(_float32(x), *args, **kwargs)
 
     return _named(fn, name, "inputs")
 
 
-def binary(native: Callable, name: str, to_float32: Callable, astype: Callable) -> Callable:
+def binary(native: Callable, name: str) -> Callable:
     """``native(x1, x2)`` with integer or boolean operands converted first: to float32 when
     neither operand is floating, else to the floating operand's dtype."""
 
@@ -79,11 +83,11 @@ def binary(native: Callable, name: str, to_float32: Callable, astype: Callable) 
         if (k1 is None or k1 in _INEXACT) and (k2 is None or k2 in _INEXACT):
             return out
         if k1 is not None and k1 in _INEXACT:  # x2 exact: it takes x1's dtype
-            return native(x1, astype(x2, x1.dtype))
+            return native(x1, x2.astype(x1.dtype))
         if k2 is not None and k2 in _INEXACT:
-            return native(astype(x1, x2.dtype), x2)
+            return native(x1.astype(x2.dtype), x2)
         # no floating array: exact arrays become float32, Python scalars stay as they are
-        return native(x1 if k1 is None else to_float32(x1), x2 if k2 is None else to_float32(x2))
+        return native(x1 if k1 is None else _float32(x1), x2 if k2 is None else _float32(x2))
 
     return _named(fn, name, "operands")
 

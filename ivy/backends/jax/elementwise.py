@@ -83,32 +83,15 @@ __all__ = [
 ]
 
 
-def _float32(x):
-    return x.astype(jnp.float32)
-
-
-def _astype(x, dtype):
-    return x.astype(dtype)
-
-
-def _on_reals(native, name):
-    """``native`` computing integer and boolean arrays in float32 (ivy's rule, see _reals)."""
-    return _reals.unary(native, name, _float32)
-
-
-def _on_reals2(native, name):
-    return _reals.binary(native, name, _float32, _astype)
-
-
 abs = jnp.abs
-acos = _on_reals(jnp.acos, "acos")
-acosh = _on_reals(jnp.acosh, "acosh")
+acos = _reals.unary(jnp.acos, "acos")
+acosh = _reals.unary(jnp.acosh, "acosh")
 add = jnp.add
-asin = _on_reals(jnp.asin, "asin")
-asinh = _on_reals(jnp.asinh, "asinh")
-atan = _on_reals(jnp.atan, "atan")
-atan2 = _on_reals2(jnp.atan2, "atan2")
-atanh = _on_reals(jnp.atanh, "atanh")
+asin = _reals.unary(jnp.asin, "asin")
+asinh = _reals.unary(jnp.asinh, "asinh")
+atan = _reals.unary(jnp.atan, "atan")
+atan2 = _reals.binary(jnp.atan2, "atan2")
+atanh = _reals.unary(jnp.atanh, "atanh")
 bitwise_and = jnp.bitwise_and
 bitwise_invert = jnp.bitwise_invert
 bitwise_left_shift = jnp.bitwise_left_shift
@@ -118,29 +101,29 @@ bitwise_xor = jnp.bitwise_xor
 ceil = jnp.ceil
 clip = jnp.clip  # with no bounds it returns x itself: jax arrays are immutable
 conj = jnp.conj
-copysign = _on_reals2(jnp.copysign, "copysign")
-cos = _on_reals(jnp.cos, "cos")
-cosh = _on_reals(jnp.cosh, "cosh")
-divide = _on_reals2(jnp.divide, "divide")
+copysign = _reals.binary(jnp.copysign, "copysign")
+cos = _reals.unary(jnp.cos, "cos")
+cosh = _reals.unary(jnp.cosh, "cosh")
+divide = _reals.binary(jnp.divide, "divide")
 equal = jnp.equal
-exp = _on_reals(jnp.exp, "exp")
-expm1 = _on_reals(jnp.expm1, "expm1")
+exp = _reals.unary(jnp.exp, "exp")
+expm1 = _reals.unary(jnp.expm1, "expm1")
 floor = jnp.floor
 floor_divide = jnp.floor_divide
 greater = jnp.greater
 greater_equal = jnp.greater_equal
-hypot = _on_reals2(jnp.hypot, "hypot")
+hypot = _reals.binary(jnp.hypot, "hypot")
 imag = jnp.imag
 isfinite = jnp.isfinite
 isinf = jnp.isinf
 isnan = jnp.isnan
 less = jnp.less
 less_equal = jnp.less_equal
-log = _on_reals(jnp.log, "log")
-log10 = _on_reals(jnp.log10, "log10")
-log1p = _on_reals(jnp.log1p, "log1p")
-log2 = _on_reals(jnp.log2, "log2")
-logaddexp = _on_reals2(jnp.logaddexp, "logaddexp")
+log = _reals.unary(jnp.log, "log")
+log10 = _reals.unary(jnp.log10, "log10")
+log1p = _reals.unary(jnp.log1p, "log1p")
+log2 = _reals.unary(jnp.log2, "log2")
+logaddexp = _reals.binary(jnp.logaddexp, "logaddexp")
 logical_and = jnp.logical_and
 logical_not = jnp.logical_not
 logical_or = jnp.logical_or
@@ -149,23 +132,23 @@ maximum = jnp.maximum
 minimum = jnp.minimum
 multiply = jnp.multiply
 negative = jnp.negative
-nextafter = _on_reals2(jnp.nextafter, "nextafter")
+nextafter = _reals.binary(jnp.nextafter, "nextafter")
 not_equal = jnp.not_equal
 positive = jnp.positive
 pow = jnp.pow
 real = jnp.real
-reciprocal = _on_reals(jnp.reciprocal, "reciprocal")
+reciprocal = _reals.unary(jnp.reciprocal, "reciprocal")
 remainder = jnp.remainder
 round = jnp.round
 sign = jnp.sign
 signbit = jnp.signbit
-sin = _on_reals(jnp.sin, "sin")
-sinh = _on_reals(jnp.sinh, "sinh")
-sqrt = _on_reals(jnp.sqrt, "sqrt")
+sin = _reals.unary(jnp.sin, "sin")
+sinh = _reals.unary(jnp.sinh, "sinh")
+sqrt = _reals.unary(jnp.sqrt, "sqrt")
 square = jnp.square
 subtract = jnp.subtract
-tan = _on_reals(jnp.tan, "tan")
-tanh = _on_reals(jnp.tanh, "tanh")
+tan = _reals.unary(jnp.tan, "tan")
+tanh = _reals.unary(jnp.tanh, "tanh")
 trunc = jnp.trunc
 
 

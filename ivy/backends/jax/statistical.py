@@ -6,7 +6,7 @@ import jax
 import jax.numpy as jnp
 
 from ivy.backends import _reals
-from ivy.backends.jax._helpers import as_inexact, default_int, native_dtype
+from ivy.backends.jax._helpers import default_int, native_dtype
 
 __all__ = [
     "sum",
@@ -21,11 +21,11 @@ __all__ = [
     "logsumexp",
 ]
 
-mean = _reals.with_options(jnp.mean, "mean", as_inexact)
+mean = _reals.with_options(jnp.mean, "mean")
 min = jnp.min
 max = jnp.max
-var = _reals.with_options(jnp.var, "var", as_inexact)  # takes ``correction=`` as the Array API does
-std = _reals.with_options(jnp.std, "std", as_inexact)
+var = _reals.with_options(jnp.var, "var")  # takes ``correction=`` as the Array API does
+std = _reals.with_options(jnp.std, "std")
 
 
 def sum(x, /, *, axis=None, dtype=None, keepdims=False):

@@ -80,32 +80,15 @@ __all__ = [
 ]
 
 
-def _float32(x):
-    return x.astype(np.float32)
-
-
-def _astype(x, dtype):
-    return x.astype(dtype)
-
-
-def _on_reals(native, name):
-    """``native`` computing integer and boolean arrays in float32 (ivy's rule, see _reals)."""
-    return _reals.unary(native, name, _float32)
-
-
-def _on_reals2(native, name):
-    return _reals.binary(native, name, _float32, _astype)
-
-
 abs = np.abs
-acos = _on_reals(np.acos, "acos")
-acosh = _on_reals(np.acosh, "acosh")
+acos = _reals.unary(np.acos, "acos")
+acosh = _reals.unary(np.acosh, "acosh")
 add = np.add
-asin = _on_reals(np.asin, "asin")
-asinh = _on_reals(np.asinh, "asinh")
-atan = _on_reals(np.atan, "atan")
-atan2 = _on_reals2(np.atan2, "atan2")
-atanh = _on_reals(np.atanh, "atanh")
+asin = _reals.unary(np.asin, "asin")
+asinh = _reals.unary(np.asinh, "asinh")
+atan = _reals.unary(np.atan, "atan")
+atan2 = _reals.binary(np.atan2, "atan2")
+atanh = _reals.unary(np.atanh, "atanh")
 bitwise_and = np.bitwise_and
 bitwise_invert = np.bitwise_invert
 bitwise_left_shift = np.bitwise_left_shift
@@ -114,29 +97,29 @@ bitwise_right_shift = np.bitwise_right_shift
 bitwise_xor = np.bitwise_xor
 ceil = np.ceil
 conj = np.conj
-copysign = _on_reals2(np.copysign, "copysign")
-cos = _on_reals(np.cos, "cos")
-cosh = _on_reals(np.cosh, "cosh")
-divide = _on_reals2(np.divide, "divide")
+copysign = _reals.binary(np.copysign, "copysign")
+cos = _reals.unary(np.cos, "cos")
+cosh = _reals.unary(np.cosh, "cosh")
+divide = _reals.binary(np.divide, "divide")
 equal = np.equal
-exp = _on_reals(np.exp, "exp")
-expm1 = _on_reals(np.expm1, "expm1")
+exp = _reals.unary(np.exp, "exp")
+expm1 = _reals.unary(np.expm1, "expm1")
 floor = np.floor
 floor_divide = np.floor_divide
 greater = np.greater
 greater_equal = np.greater_equal
-hypot = _on_reals2(np.hypot, "hypot")
+hypot = _reals.binary(np.hypot, "hypot")
 imag = np.imag
 isfinite = np.isfinite
 isinf = np.isinf
 isnan = np.isnan
 less = np.less
 less_equal = np.less_equal
-log = _on_reals(np.log, "log")
-log10 = _on_reals(np.log10, "log10")
-log1p = _on_reals(np.log1p, "log1p")
-log2 = _on_reals(np.log2, "log2")
-logaddexp = _on_reals2(np.logaddexp, "logaddexp")
+log = _reals.unary(np.log, "log")
+log10 = _reals.unary(np.log10, "log10")
+log1p = _reals.unary(np.log1p, "log1p")
+log2 = _reals.unary(np.log2, "log2")
+logaddexp = _reals.binary(np.logaddexp, "logaddexp")
 logical_and = np.logical_and
 logical_not = np.logical_not
 logical_or = np.logical_or
@@ -145,7 +128,7 @@ maximum = np.maximum
 minimum = np.minimum
 multiply = np.multiply
 negative = np.negative
-nextafter = _on_reals2(np.nextafter, "nextafter")
+nextafter = _reals.binary(np.nextafter, "nextafter")
 not_equal = np.not_equal
 positive = np.positive
 pow = np.pow
@@ -156,18 +139,18 @@ def _reciprocal(x):
     return np.divide(1.0, x)  # np.reciprocal would divide integers as integers (1 // x)
 
 
-reciprocal = _on_reals(_reciprocal, "reciprocal")
+reciprocal = _reals.unary(_reciprocal, "reciprocal")
 remainder = np.remainder
 round = np.round
 sign = np.sign
 signbit = np.signbit
-sin = _on_reals(np.sin, "sin")
-sinh = _on_reals(np.sinh, "sinh")
-sqrt = _on_reals(np.sqrt, "sqrt")
+sin = _reals.unary(np.sin, "sin")
+sinh = _reals.unary(np.sinh, "sinh")
+sqrt = _reals.unary(np.sqrt, "sqrt")
 square = np.square
 subtract = np.subtract
-tan = _on_reals(np.tan, "tan")
-tanh = _on_reals(np.tanh, "tanh")
+tan = _reals.unary(np.tan, "tan")
+tanh = _reals.unary(np.tanh, "tanh")
 trunc = np.trunc
 
 
