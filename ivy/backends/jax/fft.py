@@ -10,7 +10,7 @@ from __future__ import annotations
 import jax.numpy as jnp
 
 from ivy.backends._fft_args import sizes_and_axes
-from ivy.backends.jax._helpers import native_device, native_dtype
+from ivy.backends.jax._helpers import as_inexact, native_device, native_dtype
 
 __all__ = [
     "fft",
@@ -33,58 +33,52 @@ fftshift = jnp.fft.fftshift
 ifftshift = jnp.fft.ifftshift
 
 
-def _inexact(x):
-    """``x`` as an array of a floating or complex dtype: bool and integers become float32."""
-    x = jnp.asarray(x)
-    return x if jnp.issubdtype(x.dtype, jnp.inexact) else x.astype(jnp.float32)
-
-
 def fft(x, /, *, n=None, axis=-1, norm="backward"):
-    return jnp.fft.fft(_inexact(x), n=n, axis=axis, norm=norm)
+    return jnp.fft.fft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def ifft(x, /, *, n=None, axis=-1, norm="backward"):
-    return jnp.fft.ifft(_inexact(x), n=n, axis=axis, norm=norm)
+    return jnp.fft.ifft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def fftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "fftn")
     return jnp.fft.fftn(x, s=s, axes=axes, norm=norm)
 
 
 def ifftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "ifftn")
     return jnp.fft.ifftn(x, s=s, axes=axes, norm=norm)
 
 
 def rfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return jnp.fft.rfft(_inexact(x), n=n, axis=axis, norm=norm)
+    return jnp.fft.rfft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def irfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return jnp.fft.irfft(_inexact(x), n=n, axis=axis, norm=norm)
+    return jnp.fft.irfft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def rfftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "rfftn")
     return jnp.fft.rfftn(x, s=s, axes=axes, norm=norm)
 
 
 def irfftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "irfftn", real_inverse=True)
     return jnp.fft.irfftn(x, s=s, axes=axes, norm=norm)
 
 
 def hfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return jnp.fft.hfft(_inexact(x), n=n, axis=axis, norm=norm)
+    return jnp.fft.hfft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def ihfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return jnp.fft.ihfft(_inexact(x), n=n, axis=axis, norm=norm)
+    return jnp.fft.ihfft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def fftfreq(n, /, *, d=1.0, dtype=None, device=None):

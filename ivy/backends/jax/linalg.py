@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import jax.numpy as jnp
 
+from ivy.backends.jax._helpers import as_inexact
+
 __all__ = [
     "cholesky",
     "cross",
@@ -45,45 +47,39 @@ trace = jnp.linalg.trace  # bool and small integers accumulate in int64 (unsigne
 vecdot = jnp.linalg.vecdot
 
 
-def _floating(x):
-    """``x`` as an array of a floating dtype: bool and integers become float32."""
-    x = jnp.asarray(x)
-    return x if jnp.issubdtype(x.dtype, jnp.inexact) else x.astype(jnp.float32)
-
-
 def cholesky(x, /, *, upper=False):
-    return jnp.linalg.cholesky(_floating(x), upper=upper)
+    return jnp.linalg.cholesky(as_inexact(x), upper=upper)
 
 
 def det(x, /):
-    return jnp.linalg.det(_floating(x))
+    return jnp.linalg.det(as_inexact(x))
 
 
 def eigh(x, /):
-    return jnp.linalg.eigh(_floating(x))
+    return jnp.linalg.eigh(as_inexact(x))
 
 
 def eigvalsh(x, /):
-    return jnp.linalg.eigvalsh(_floating(x))
+    return jnp.linalg.eigvalsh(as_inexact(x))
 
 
 def inv(x, /):
-    return jnp.linalg.inv(_floating(x))
+    return jnp.linalg.inv(as_inexact(x))
 
 
 def matrix_norm(x, /, *, keepdims=False, ord="fro"):
-    return jnp.linalg.matrix_norm(_floating(x), keepdims=keepdims, ord=ord)
+    return jnp.linalg.matrix_norm(as_inexact(x), keepdims=keepdims, ord=ord)
 
 
 def matrix_power(x, n, /):
     """Integer matrices stay integer for ``n >= 0``; a negative ``n`` inverts in float32."""
-    return jnp.linalg.matrix_power(x if n >= 0 else _floating(x), n)
+    return jnp.linalg.matrix_power(x if n >= 0 else as_inexact(x), n)
 
 
 def matrix_rank(x, /, *, rtol=None):
     """jnp.linalg.matrix_rank reads ``rtol`` as an absolute tolerance; here it is relative to
     the largest singular value, as the Array API says."""
-    x = _floating(x)
+    x = as_inexact(x)
     s = jnp.linalg.svdvals(x)
     if rtol is None:
         rtol = max(x.shape[-2:]) * jnp.finfo(s.dtype).eps
@@ -92,28 +88,28 @@ def matrix_rank(x, /, *, rtol=None):
 
 
 def pinv(x, /, *, rtol=None):
-    return jnp.linalg.pinv(_floating(x), rtol=rtol)
+    return jnp.linalg.pinv(as_inexact(x), rtol=rtol)
 
 
 def qr(x, /, *, mode="reduced"):
-    return jnp.linalg.qr(_floating(x), mode=mode)
+    return jnp.linalg.qr(as_inexact(x), mode=mode)
 
 
 def slogdet(x, /):
-    return jnp.linalg.slogdet(_floating(x))
+    return jnp.linalg.slogdet(as_inexact(x))
 
 
 def solve(x1, x2, /):
-    return jnp.linalg.solve(_floating(x1), _floating(x2))
+    return jnp.linalg.solve(as_inexact(x1), as_inexact(x2))
 
 
 def svd(x, /, *, full_matrices=True):
-    return jnp.linalg.svd(_floating(x), full_matrices=full_matrices)
+    return jnp.linalg.svd(as_inexact(x), full_matrices=full_matrices)
 
 
 def svdvals(x, /):
-    return jnp.linalg.svdvals(_floating(x))
+    return jnp.linalg.svdvals(as_inexact(x))
 
 
 def vector_norm(x, /, *, axis=None, keepdims=False, ord=2):
-    return jnp.linalg.vector_norm(_floating(x), axis=axis, keepdims=keepdims, ord=ord)
+    return jnp.linalg.vector_norm(as_inexact(x), axis=axis, keepdims=keepdims, ord=ord)

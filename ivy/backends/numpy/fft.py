@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from ivy.backends._fft_args import sizes_and_axes
-from ivy.backends.numpy._helpers import check_device, native_dtype
+from ivy.backends.numpy._helpers import as_inexact, check_device, native_dtype
 
 __all__ = [
     "fft",
@@ -33,58 +33,52 @@ fftshift = np.fft.fftshift
 ifftshift = np.fft.ifftshift
 
 
-def _inexact(x):
-    """``x`` as an array of a floating or complex dtype: bool and integers become float32."""
-    x = np.asarray(x)
-    return x if x.dtype.kind in "fc" else x.astype(np.float32)
-
-
 def fft(x, /, *, n=None, axis=-1, norm="backward"):
-    return np.fft.fft(_inexact(x), n=n, axis=axis, norm=norm)
+    return np.fft.fft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def ifft(x, /, *, n=None, axis=-1, norm="backward"):
-    return np.fft.ifft(_inexact(x), n=n, axis=axis, norm=norm)
+    return np.fft.ifft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def fftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "fftn")
     return np.fft.fftn(x, s=s, axes=axes, norm=norm)
 
 
 def ifftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "ifftn")
     return np.fft.ifftn(x, s=s, axes=axes, norm=norm)
 
 
 def rfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return np.fft.rfft(_inexact(x), n=n, axis=axis, norm=norm)
+    return np.fft.rfft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def irfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return np.fft.irfft(_inexact(x), n=n, axis=axis, norm=norm)
+    return np.fft.irfft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def rfftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "rfftn")
     return np.fft.rfftn(x, s=s, axes=axes, norm=norm)
 
 
 def irfftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "irfftn", real_inverse=True)
     return np.fft.irfftn(x, s=s, axes=axes, norm=norm)
 
 
 def hfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return np.fft.hfft(_inexact(x), n=n, axis=axis, norm=norm)
+    return np.fft.hfft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def ihfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return np.fft.ihfft(_inexact(x), n=n, axis=axis, norm=norm)
+    return np.fft.ihfft(as_inexact(x), n=n, axis=axis, norm=norm)
 
 
 def fftfreq(n, /, *, d=1.0, dtype=None, device=None):

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ivy.backends.numpy._helpers import as_inexact
+
 __all__ = [
     "cholesky",
     "cross",
@@ -45,14 +47,8 @@ trace = np.linalg.trace  # bool and small integers accumulate in int64 (unsigned
 vecdot = np.linalg.vecdot
 
 
-def _floating(x):
-    """``x`` as an array of a floating dtype: bool and integers become float32."""
-    x = np.asarray(x)
-    return x if x.dtype.kind in "fc" else x.astype(np.float32)
-
-
 def cholesky(x, /, *, upper=False):
-    return np.linalg.cholesky(_floating(x), upper=upper)
+    return np.linalg.cholesky(as_inexact(x), upper=upper)
 
 
 def cross(x1, x2, /, *, axis=-1):
@@ -60,57 +56,57 @@ def cross(x1, x2, /, *, axis=-1):
 
 
 def det(x, /):
-    return np.linalg.det(_floating(x))
+    return np.linalg.det(as_inexact(x))
 
 
 def eigh(x, /):
-    return np.linalg.eigh(_floating(x))
+    return np.linalg.eigh(as_inexact(x))
 
 
 def eigvalsh(x, /):
-    return np.linalg.eigvalsh(_floating(x))
+    return np.linalg.eigvalsh(as_inexact(x))
 
 
 def inv(x, /):
-    return np.linalg.inv(_floating(x))
+    return np.linalg.inv(as_inexact(x))
 
 
 def matrix_norm(x, /, *, keepdims=False, ord="fro"):
-    return np.linalg.matrix_norm(_floating(x), keepdims=keepdims, ord=ord)
+    return np.linalg.matrix_norm(as_inexact(x), keepdims=keepdims, ord=ord)
 
 
 def matrix_power(x, n, /):
     """Integer matrices stay integer for ``n >= 0``; a negative ``n`` inverts in float32."""
-    return np.linalg.matrix_power(x if n >= 0 else _floating(x), n)
+    return np.linalg.matrix_power(x if n >= 0 else as_inexact(x), n)
 
 
 def matrix_rank(x, /, *, rtol=None):
-    return np.linalg.matrix_rank(_floating(x), rtol=rtol)
+    return np.linalg.matrix_rank(as_inexact(x), rtol=rtol)
 
 
 def pinv(x, /, *, rtol=None):
-    return np.linalg.pinv(_floating(x), rtol=rtol)
+    return np.linalg.pinv(as_inexact(x), rtol=rtol)
 
 
 def qr(x, /, *, mode="reduced"):
-    return np.linalg.qr(_floating(x), mode=mode)
+    return np.linalg.qr(as_inexact(x), mode=mode)
 
 
 def slogdet(x, /):
-    return np.linalg.slogdet(_floating(x))
+    return np.linalg.slogdet(as_inexact(x))
 
 
 def solve(x1, x2, /):
-    return np.linalg.solve(_floating(x1), _floating(x2))
+    return np.linalg.solve(as_inexact(x1), as_inexact(x2))
 
 
 def svd(x, /, *, full_matrices=True):
-    return np.linalg.svd(_floating(x), full_matrices=full_matrices)
+    return np.linalg.svd(as_inexact(x), full_matrices=full_matrices)
 
 
 def svdvals(x, /):
-    return np.linalg.svdvals(_floating(x))
+    return np.linalg.svdvals(as_inexact(x))
 
 
 def vector_norm(x, /, *, axis=None, keepdims=False, ord=2):
-    return np.linalg.vector_norm(_floating(x), axis=axis, keepdims=keepdims, ord=ord)
+    return np.linalg.vector_norm(as_inexact(x), axis=axis, keepdims=keepdims, ord=ord)

@@ -380,9 +380,7 @@ def nextafter(x1, x2, /):
 
 def _floating(*tensors):
     """``tensors`` (of one dtype) cast to float32 unless floating."""
-    if tensors[0].dtype.is_floating:
-        return tensors
-    return [tf.cast(t, tf.float32) for t in tensors]
+    return [as_inexact(t) for t in tensors]
 
 
 def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):

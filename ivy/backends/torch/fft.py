@@ -10,7 +10,7 @@ from __future__ import annotations
 import torch
 
 from ivy.backends._fft_args import sizes_and_axes
-from ivy.backends.torch._helpers import native_device, native_dtype
+from ivy.backends.torch._helpers import as_inexact, native_device, native_dtype
 
 __all__ = [
     "fft",
@@ -30,57 +30,52 @@ __all__ = [
 ]
 
 
-def _inexact(x):
-    """``x`` as a tensor of a floating or complex dtype: bool and integers become float32."""
-    return x if x.is_floating_point() or x.is_complex() else x.to(torch.float32)
-
-
 def fft(x, /, *, n=None, axis=-1, norm="backward"):
-    return torch.fft.fft(_inexact(x), n=n, dim=axis, norm=norm)
+    return torch.fft.fft(as_inexact(x), n=n, dim=axis, norm=norm)
 
 
 def ifft(x, /, *, n=None, axis=-1, norm="backward"):
-    return torch.fft.ifft(_inexact(x), n=n, dim=axis, norm=norm)
+    return torch.fft.ifft(as_inexact(x), n=n, dim=axis, norm=norm)
 
 
 def fftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "fftn")
     return torch.fft.fftn(x, s=s, dim=axes, norm=norm)
 
 
 def ifftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "ifftn")
     return torch.fft.ifftn(x, s=s, dim=axes, norm=norm)
 
 
 def rfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return torch.fft.rfft(_inexact(x), n=n, dim=axis, norm=norm)
+    return torch.fft.rfft(as_inexact(x), n=n, dim=axis, norm=norm)
 
 
 def irfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return torch.fft.irfft(_inexact(x), n=n, dim=axis, norm=norm)
+    return torch.fft.irfft(as_inexact(x), n=n, dim=axis, norm=norm)
 
 
 def rfftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "rfftn")
     return torch.fft.rfftn(x, s=s, dim=axes, norm=norm)
 
 
 def irfftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = _inexact(x)
+    x = as_inexact(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "irfftn", real_inverse=True)
     return torch.fft.irfftn(x, s=s, dim=axes, norm=norm)
 
 
 def hfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return torch.fft.hfft(_inexact(x), n=n, dim=axis, norm=norm)
+    return torch.fft.hfft(as_inexact(x), n=n, dim=axis, norm=norm)
 
 
 def ihfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return torch.fft.ihfft(_inexact(x), n=n, dim=axis, norm=norm)
+    return torch.fft.ihfft(as_inexact(x), n=n, dim=axis, norm=norm)
 
 
 def fftfreq(n, /, *, d=1.0, dtype=None, device=None):

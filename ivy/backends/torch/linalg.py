@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import torch
 
-from ivy.backends.torch._helpers import native_dtype, reduction_args
+from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
 
 __all__ = [
     "cholesky",
@@ -47,11 +47,6 @@ _WIDE.update({torch.uint32: torch.uint64, torch.int8: torch.int64, torch.int16: 
 _WIDE[torch.int32] = torch.int64
 
 
-def _floating(x):
-    """``x`` as a tensor of a floating dtype: bool and integers become float32."""
-    return x if x.is_floating_point() or x.is_complex() else x.to(torch.float32)
-
-
 def _promoted(x1, x2):
     """Both tensors in their common dtype (torch's tensordot and vecdot require one)."""
     if x1.dtype == x2.dtype:
@@ -61,7 +56,7 @@ def _promoted(x1, x2):
 
 
 def cholesky(x, /, *, upper=False):
-    return torch.linalg.cholesky(_floating(x), upper=upper)
+    return torch.linalg.cholesky(as_inexact(x), upper=upper)
 
 
 def cross(x1, x2, /, *, axis=-1):
@@ -71,32 +66,32 @@ def cross(x1, x2, /, *, axis=-1):
 
 
 def det(x, /):
-    return torch.linalg.det(_floating(x))
+    return torch.linalg.det(as_inexact(x))
 
 
 def eigh(x, /):
-    return torch.linalg.eigh(_floating(x))
+    return torch.linalg.eigh(as_inexact(x))
 
 
 def eigvalsh(x, /):
-    return torch.linalg.eigvalsh(_floating(x))
+    return torch.linalg.eigvalsh(as_inexact(x))
 
 
 def inv(x, /):
-    return torch.linalg.inv(_floating(x))
+    return torch.linalg.inv(as_inexact(x))
 
 
 def matrix_norm(x, /, *, keepdims=False, ord="fro"):
-    return torch.linalg.matrix_norm(_floating(x), ord=ord, dim=(-2, -1), keepdim=keepdims)
+    return torch.linalg.matrix_norm(as_inexact(x), ord=ord, dim=(-2, -1), keepdim=keepdims)
 
 
 def matrix_power(x, n, /):
     """Integer matrices stay integer for ``n >= 0``; a negative ``n`` inverts in float32."""
-    return torch.linalg.matrix_power(x if n >= 0 else _floating(x), n)
+    return torch.linalg.matrix_power(x if n >= 0 else as_inexact(x), n)
 
 
 def matrix_rank(x, /, *, rtol=None):
-    return torch.linalg.matrix_rank(_floating(x), rtol=rtol)
+    return torch.linalg.matrix_rank(as_inexact(x), rtol=rtol)
 
 
 def matrix_transpose(x, /):
@@ -104,20 +99,20 @@ def matrix_transpose(x, /):
 
 
 def pinv(x, /, *, rtol=None):
-    return torch.linalg.pinv(_floating(x), rtol=rtol)
+    return torch.linalg.pinv(as_inexact(x), rtol=rtol)
 
 
 def qr(x, /, *, mode="reduced"):
-    return torch.linalg.qr(_floating(x), mode=mode)
+    return torch.linalg.qr(as_inexact(x), mode=mode)
 
 
 def slogdet(x, /):
-    return torch.linalg.slogdet(_floating(x))
+    return torch.linalg.slogdet(as_inexact(x))
 
 
 def solve(x1, x2, /):
     """``x2`` is a vector only when 1-D (torch would also read ``(..., M)`` as vectors)."""
-    x1, x2 = _promoted(_floating(x1), _floating(x2))
+    x1, x2 = _promoted(as_inexact(x1), as_inexact(x2))
     if x2.ndim == 1:
         return torch.linalg.solve(x1, x2)
     batch = torch.broadcast_shapes(x1.shape[:-2], x2.shape[:-2])
@@ -127,11 +122,11 @@ def solve(x1, x2, /):
 
 
 def svd(x, /, *, full_matrices=True):
-    return torch.linalg.svd(_floating(x), full_matrices=full_matrices)
+    return torch.linalg.svd(as_inexact(x), full_matrices=full_matrices)
 
 
 def svdvals(x, /):
-    return torch.linalg.svdvals(_floating(x))
+    return torch.linalg.svdvals(as_inexact(x))
 
 
 def tensordot(x1, x2, /, *, axes=2):
@@ -157,5 +152,5 @@ def vecdot(x1, x2, /, *, axis=-1):
 
 
 def vector_norm(x, /, *, axis=None, keepdims=False, ord=2):
-    x, dim, keepdim = reduction_args(_floating(x), axis, keepdims)
+    x, dim, keepdim = reduction_args(as_inexact(x), axis, keepdims)
     return torch.linalg.vector_norm(x, ord=ord, dim=dim, keepdim=keepdim)
