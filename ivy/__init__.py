@@ -18,6 +18,7 @@ from ivy import (
     framework_handler,
     nest,  # noqa: F401 - ivy.nest: map, flatten, unflatten nests
     stateful,  # noqa: F401 - ivy.stateful: modules, layers, optimizers, checkpoints
+    typing,  # noqa: F401 - ivy.typing: Array, Framework, Dtype, Shape ... for signatures
 )
 from ivy.backends._assemble import ARRAY_API_CONSTANTS, ARRAY_API_VERSION
 from ivy.core import *  # noqa: F403 - the public API is listed in ivy.core.__all__
