@@ -178,8 +178,10 @@ def horner(x: Array, coeffs: Sequence[float], /, *, f: Framework = None) -> Arra
     """
     if len(coeffs) == 0:
         raise ValueError("horner: coeffs is empty; give at least one coefficient.")
-    acc = x * 0 + coeffs[-1]
-    for c in reversed(coeffs[:-1]):
+    if len(coeffs) == 1:
+        return x * 0 + coeffs[0]
+    acc = x * coeffs[-1] + coeffs[-2]
+    for c in reversed(coeffs[:-2]):
         acc = acc * x + c
     return acc
 
