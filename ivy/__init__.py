@@ -17,6 +17,7 @@ from ivy import (
     errors,
     framework_handler,
     nest,  # noqa: F401 - ivy.nest: map, flatten, unflatten nests
+    registry,
     stateful,  # noqa: F401 - ivy.stateful: modules, layers, optimizers, checkpoints
     typing,  # noqa: F401 - ivy.typing: Array, Framework, Dtype, Shape ... for signatures
 )
@@ -26,14 +27,17 @@ from ivy.core._extensions import agnostic_extensions
 from ivy.dtypes import *  # noqa: F403
 from ivy.errors import *  # noqa: F403
 from ivy.framework_handler import (
+    Capabilities,
     available_frameworks,
     current_framework,
     framework_of_type,
     get_framework,
     installed_frameworks,
+    register_framework,
     set_framework,
     unset_framework,
 )
+from ivy.registry import FunctionInfo, function_info, list_functions
 from ivy.stateful import *  # noqa: F403 - Module, Linear, MLP, ..., Adam, save_weights ...
 
 __version__ = "0.1.0"
@@ -45,13 +49,12 @@ globals().update(_EXTENSIONS)
 globals().update(ARRAY_API_CONSTANTS)
 __array_api_version__ = ARRAY_API_VERSION
 
-_NAMESPACES = framework_handler.available_frameworks()
-
 __all__ = sorted(
     set(core.__all__)
     | set(dtypes.__all__)
     | set(errors.__all__)
     | set(framework_handler.__all__)
+    | set(registry.__all__)
     | set(_EXTENSIONS)
     | {"e", "pi", "inf", "nan", "newaxis"}
 )
@@ -59,7 +62,7 @@ __all__ = sorted(
 
 def __getattr__(name: str):
     """Load the backend namespaces ``ivy.numpy``, ``ivy.torch``, ... on first access."""
-    if name in _NAMESPACES:
+    if name in framework_handler.available_frameworks():
         ns = framework_handler.load_backend(name)
         globals()[name] = ns
         return ns
@@ -67,4 +70,4 @@ def __getattr__(name: str):
 
 
 def __dir__():
-    return sorted(set(globals()) | set(_NAMESPACES))
+    return sorted(set(globals()) | set(framework_handler.available_frameworks()))

@@ -33,6 +33,8 @@ from ivy.errors import (
 from ivy.typing import Framework
 
 __all__ = [
+    "Capabilities",
+    "register_framework",
     "get_framework",
     "set_framework",
     "unset_framework",
@@ -44,17 +46,56 @@ __all__ = [
 
 
 @dataclass(frozen=True)
+class Capabilities:
+    """What a backend can do beyond the Array API; what it cannot raises
+    :class:`ivy.errors.UnsupportedError` (or, for ``compilation``, runs eagerly with a warning).
+
+    Attributes:
+        autodiff: automatic differentiation (``ivy.execute_with_gradients``, ``ivy.grad``...).
+        compilation: a compiler behind ``ivy.compile_fn``.
+        mutable_arrays: arrays written in place are seen by every view of their memory.
+        devices: the kinds of device it places arrays on (``'cpu'``, ``'gpu'``).
+        float64: 64-bit floats (and int64) work.
+    """
+
+    autodiff: bool = False
+    compilation: bool = False
+    mutable_arrays: bool = False
+    devices: tuple[str, ...] = ("cpu",)
+    float64: bool = True
+
+
+@dataclass(frozen=True)
 class _BackendSpec:
     module: str  # the ivy backend package
     package: str  # the framework's own import name
-    extra: str  # the pyproject extra that installs it
+    extra: str | None  # the pyproject extra that installs it (None: a registered library)
+    capabilities: Capabilities = Capabilities()
+    namespace: Any = None  # a registered library's Array API namespace (or its import name)
 
 
 _BACKENDS: dict[str, _BackendSpec] = {
-    "numpy": _BackendSpec("ivy.backends.numpy", "numpy", "numpy"),
-    "torch": _BackendSpec("ivy.backends.torch", "torch", "torch"),
-    "jax": _BackendSpec("ivy.backends.jax", "jax", "jax"),
-    "tensorflow": _BackendSpec("ivy.backends.tensorflow", "tensorflow", "tensorflow"),
+    "numpy": _BackendSpec(
+        "ivy.backends.numpy", "numpy", "numpy", Capabilities(mutable_arrays=True)
+    ),
+    "torch": _BackendSpec(
+        "ivy.backends.torch",
+        "torch",
+        "torch",
+        Capabilities(autodiff=True, compilation=True, mutable_arrays=True, devices=("cpu", "gpu")),
+    ),
+    "jax": _BackendSpec(
+        "ivy.backends.jax",
+        "jax",
+        "jax",
+        Capabilities(autodiff=True, compilation=True, devices=("cpu", "gpu", "tpu")),
+    ),
+    "tensorflow": _BackendSpec(
+        "ivy.backends.tensorflow",
+        "tensorflow",
+        "tensorflow",
+        Capabilities(autodiff=True, compilation=True, devices=("cpu", "gpu")),
+    ),
 }
 _ALIASES = {"np": "numpy", "pytorch": "torch", "tf": "tensorflow"}
 
@@ -96,9 +137,79 @@ _stack: list[types.ModuleType] = []
 _on_load: list[Callable[[types.ModuleType], None]] = []
 
 
+def run_as_is_in_autograph(fn: Callable) -> Callable:
+    """Mark ``fn`` so that tensorflow's AutoGraph calls it as it is inside a ``tf.function``.
+
+    ivy's functions hold no Python control flow on tensor values (they also run under
+    ``jax.jit``), so there is nothing for AutoGraph to convert, as in tensorflow's own library,
+    which AutoGraph never converts. Left to itself, AutoGraph would convert them and everything
+    they call, ivy's framework selection and ``importlib`` included, which costs trace time and
+    is fragile. The mark is the attribute that ``tf.autograph.experimental.do_not_convert`` sets
+    on its wrappers; nothing is imported for it (``tests/ivy/test_dispatch.py`` checks that a
+    ``tf.function`` of ivy functions prints nothing).
+    """
+    fn.autograph_info__ = {}
+    return fn
+
+
 # ----------------------------------------------------------------------------------------------
 # The registry
 # ----------------------------------------------------------------------------------------------
+
+
+def register_framework(
+    name: str,
+    namespace: types.ModuleType | str,
+    *,
+    autodiff: bool = False,
+    compilation: bool = False,
+    mutable_arrays: bool = False,
+    devices: tuple[str, ...] = ("cpu",),
+    float64: bool = True,
+) -> None:
+    """Make an Array API namespace (2023.12) a backend of ivy, under ``name``.
+
+    Its functions come from ivy's shared layer bound to ``namespace`` (``ivy/backends/array_api/``):
+    the standard's functions as the library has them, ivy's rules on top (float32 defaults,
+    integer inputs of functions of real numbers in float32), and the functions the standard lacks
+    (``gather_nd``, convolutions, random numbers, ``einsum``...) through numpy on the host (DLPack).
+    What the flags deny raises :class:`ivy.errors.UnsupportedError` naming the backend. Nothing is
+    imported until the backend is first used; arrays of the library are then recognised by the
+    module their class comes from.
+
+    Args:
+        name: the backend's name (``f=name``, ``ivy.<name>``).
+        namespace: the namespace (``array_api_strict``) or its import name.
+        autodiff: the library differentiates (it would need its own gradients module to use it).
+        compilation: the library compiles (likewise).
+        mutable_arrays: in-place writes are seen through every view.
+        devices: the kinds of device its arrays may live on.
+        float64: 64-bit floats work.
+
+    Example:
+        >>> ivy.register_framework("array_api_strict", "array_api_strict")
+        >>> import array_api_strict as xp
+        >>> ivy.sin(xp.asarray([0.0]))               # inferred from the array's type
+        Array([0.], dtype=array_api_strict.float32)
+    """
+    if name in _BACKENDS and _BACKENDS[name].namespace is None:
+        raise ValueError(f"{name!r} is one of ivy's own backends; choose another name")
+    package = namespace if isinstance(namespace, str) else namespace.__name__
+    if name in _loaded:
+        raise ValueError(f"the backend {name!r} is already loaded; register it before first use")
+    _BACKENDS[name] = _BackendSpec(
+        f"ivy.backends.{name}",
+        package,
+        None,
+        Capabilities(autodiff, compilation, mutable_arrays, tuple(devices), float64),
+        namespace,
+    )
+    _MODULE_ROOTS[package.partition(".")[0]] = name
+
+
+def capabilities(name: str) -> Capabilities:
+    """The :class:`Capabilities` of backend ``name`` (installed or not; none is imported)."""
+    return _BACKENDS[_canonical_name(name)].capabilities
 
 
 def available_frameworks() -> tuple[str, ...]:
@@ -129,16 +240,34 @@ def load_backend(name: str) -> types.ModuleType:
     if ns is not None:
         return ns
     spec = _BACKENDS[name]
-    if importlib.util.find_spec(spec.package) is None:
-        hint = "" if name == "numpy" else f" or pip install 'ivy[{spec.extra}]'"
+    # (A framework whose arrays exist is imported: no look-up. This code may run inside a user's
+    # tf.function, where AutoGraph would try, and fail, to convert importlib's functions.)
+    if spec.package not in sys.modules and importlib.util.find_spec(spec.package) is None:
+        if spec.extra is None:
+            how = f"Install it with pip install {spec.package}"
+        else:
+            hint = "" if name == "numpy" else f" or pip install 'ivy[{spec.extra}]'"
+            how = f"Install it with pip install '.[{spec.extra}]' from the ivy repository{hint}"
         raise FrameworkNotInstalledError(
             f"ivy's {name} backend needs the package '{spec.package}', which is not installed. "
-            f"Install it with pip install '.[{spec.extra}]' from the ivy repository{hint}, "
-            f"or choose another of the installed frameworks: {', '.join(installed_frameworks())}."
+            f"{how}, or choose another of the installed frameworks: "
+            f"{', '.join(installed_frameworks())}."
         )
-    ns = importlib.import_module(spec.module)
+    if spec.namespace is not None:  # a registered library: assembled from the shared layer
+        from ivy.backends.array_api._register import assemble_registered
+
+        assemble_registered(name, spec)
+        return _loaded[name]
+    __import__(spec.module)  # its package assembles and registers it (a builtin: see above)
+    return _loaded[name]
+
+
+def register_loaded(name: str, ns: types.ModuleType, capabilities: Any = None) -> None:
+    """Record ``ns``, an assembled backend namespace, as backend ``name`` (called once, by
+    ``ivy.backends._assemble.assemble``), and run the load hooks on it."""
     ns.backend = name
     ns.use = _Use(ns)
+    ns.capabilities = capabilities
     for hook in _on_load:
         hook(ns)
     _loaded[name] = ns
@@ -147,7 +276,6 @@ def load_backend(name: str) -> types.ModuleType:
     for alias, target in _ALIASES.items():
         if target == name:
             _by_f[alias] = ns
-    return ns
 
 
 def on_backend_load(hook: Callable[[types.ModuleType], None]) -> None:
@@ -264,6 +392,7 @@ dispatch_globals["_infer"] = _infer
 # ----------------------------------------------------------------------------------------------
 
 
+@run_as_is_in_autograph
 def get_framework(*args: Any, f: Framework = None) -> types.ModuleType:
     """Return the backend namespace to use for ``args``.
 

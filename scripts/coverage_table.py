@@ -123,7 +123,6 @@ class Recorder:
 
     def install(self, backends):
         import ivy
-        from ivy.core._dispatch import COMPOSITIONS
         from ivy.core._extensions import ExtensionNamespace
         from ivy.dtypes import DTYPE_NAMES
 
@@ -149,7 +148,8 @@ class Recorder:
                         value.__dict__.pop(name, None)
                     if value._call is not None:
                         value._call = self._recording(value._call, [own], backend)
-        for name, comp in COMPOSITIONS.items():
+        for info in ivy.list_functions(kind="composition"):
+            name, comp = info.name, getattr(ivy.core, info.name)
             if getattr(ivy, name, None) is comp and getattr(ivy.core, name, None) is comp:
                 wrapped = self._composition(comp)
                 setattr(ivy, name, wrapped)
@@ -219,11 +219,12 @@ def _merge(paths):
 
 
 def _kind(name):
-    from ivy.core._dispatch import _ALIASES, COMPOSITIONS
+    import ivy
 
-    if name in _ALIASES:
-        return f"alias of `{_ALIASES[name]}`"
-    return "composition" if name in COMPOSITIONS else "backend"
+    info = ivy.function_info(name)
+    if info.kind == "alias":
+        return f"alias of `{info.target}`"
+    return "composition" if info.kind == "composition" else "backend"
 
 
 def render(exercised, unsupported, outcomes, backends, test_paths, seconds) -> tuple[str, list]:

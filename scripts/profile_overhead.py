@@ -179,7 +179,6 @@ from _timing import (  # noqa: E402
 )
 
 import ivy  # noqa: E402
-from ivy.core import _dispatch  # noqa: E402
 
 BACKENDS = ("numpy", "torch", "jax", "tensorflow")
 COMPILERS = ("torch", "jax", "tensorflow")
@@ -1192,10 +1191,14 @@ def discover() -> tuple[list[Entry], list[dict]]:
     """Every core function and composition; the skipped ones with their reason."""
     entries: list[Entry] = []
     skipped: list[dict] = []
-    registry = {**_dispatch.DISPATCHED, **_dispatch.COMPOSITIONS}
+    registry = {
+        i.name: getattr(ivy.core, i.name) for i in ivy.list_functions() if i.kind != "alias"
+    }
+    registry.update({i.name: getattr(ivy.core, i.target) for i in ivy.list_functions(kind="alias")})
+    compositions = {i.name for i in ivy.list_functions(kind="composition")}
     for name in sorted(set(ivy.core.__all__) | set(registry)):
         fn = registry.get(name)
-        kind = "composition" if name in _dispatch.COMPOSITIONS else "function"
+        kind = "composition" if name in compositions else "function"
         if fn is None:
             skipped.append(_skip("function", name, "not a dispatched function or composition"))
         elif fn.__name__ != name:

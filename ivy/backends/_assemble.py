@@ -1,18 +1,41 @@
-"""Assemble a backend namespace from its modules, one per core group (same file names).
+"""The one assembly of a backend namespace: after ``import ivy.backends.<name>`` it is complete.
 
-Array API extension groups (``linalg``, ``fft``) are also exposed as sub-namespaces of the backend
-namespace (``ivy.torch.linalg.svd is ivy.torch.svd``); see ``ivy/core/_extensions.py``.
+What a namespace exports derives from the core (:data:`ivy.core._dispatch.REGISTRY`); a backend
+repeats no list of the core's names. For each core group that has functions every backend must
+implement, the namespace takes them from, in order of precedence:
+
+1. the backend's own module of the group's name (``ivy/backends/torch/linalg.py``), which holds
+   only what differs on that backend;
+2. the shared layer (``ivy/backends/array_api/<group>.py``), functions written once against an
+   Array API namespace ``xp`` and bound to the backend's (numpy, jax, any registered library);
+3. the native namespace itself, for the functions that the shared layer declares native
+   (``NATIVE`` in the shared module: ``add`` is ``xp.add``).
+
+Then the rules declared on the core's stubs are applied (``@dispatch(reals=True)``: integer and
+boolean inputs of functions of real numbers compute in float32, by the backend's ``reals``
+wrappers), compositions are bound with ``f`` set to the namespace, aliases are the very same
+objects as their targets, dtypes are the native dtype objects, the Array API extensions become
+sub-namespaces (``ivy.torch.linalg``), and the namespace is registered with the framework
+handler (``ivy.get_framework(f='torch')``).
 """
 
 from __future__ import annotations
 
+import functools
 import importlib
 import importlib.util
+import inspect
+import sys
+import types
+from collections.abc import Callable, Mapping
 from typing import Any
 
-from ivy import core
+from ivy import framework_handler as _fh
+from ivy.core import GROUP_NAMES, GROUPS
+from ivy.core._dispatch import REGISTRY
 from ivy.core._extensions import ExtensionNamespace, extension_groups
 from ivy.dtypes import DTYPE_NAMES
+from ivy.errors import UnsupportedError
 
 ARRAY_API_VERSION = "2023.12"
 ARRAY_API_CONSTANTS = {
@@ -22,46 +45,192 @@ ARRAY_API_CONSTANTS = {
     "nan": float("nan"),
     "newaxis": None,
 }
+SHARED_PACKAGE = "ivy.backends.array_api"
 
 
-def assemble(package: str, namespace: dict[str, Any], native_dtypes: dict[str, Any]) -> None:
-    """Fill ``namespace`` (a backend package's globals) with the public names of its modules.
-
-    Each backend package has one module per core group that has dispatched functions, with the
-    same name as the group; those functions must all be defined there. Dtype names map to
-    native dtype objects. Each Array API extension becomes a sub-namespace (``ivy.torch.fft``).
-    """
-    exported: set[str] = set()
-    for group_name, group in zip(core.GROUP_NAMES, core.GROUPS):
-        if (
-            not _has_dispatched(group)
-            and importlib.util.find_spec(f"{package}.{group_name}") is None
-        ):
-            continue  # a group of compositions only needs no backend module
-        module = importlib.import_module(f"{package}.{group_name}")
-        names = getattr(module, "__all__", ())
-        namespace.update({name: getattr(module, name) for name in names})
-        exported.update(names)
-    missing = set(DTYPE_NAMES) - set(native_dtypes)
-    if missing:
-        raise ImportError(f"{package} defines no native dtype for {sorted(missing)}")
-    namespace.update(native_dtypes)
-    exported.update(DTYPE_NAMES)
-    # What makes a backend namespace usable as an Array API namespace.
-    namespace.update(ARRAY_API_CONSTANTS)
-    exported.update(ARRAY_API_CONSTANTS)
-    namespace["__array_api_version__"] = ARRAY_API_VERSION
-    backend = package.rpartition(".")[2]
-    for ext, group in extension_groups(core.GROUPS):
-        call = namespace[ext] if ext in group.__all__ else None  # fft: callable namespace
-        namespace[ext] = ExtensionNamespace(
-            f"ivy.{backend}.{ext}", group.__all__, namespace.__getitem__, call
-        )
-        exported.add(ext)
-    namespace["__all__"] = sorted(exported)
-
-
-def _has_dispatched(group) -> bool:
-    return any(
-        getattr(getattr(group, name), "__ivy_kind__", None) == "dispatch" for name in group.__all__
+def backend_names(group: str | None = None) -> list[str]:
+    """The names every backend implements (of one core group, or all), from the core."""
+    return sorted(
+        n
+        for n, info in REGISTRY.items()
+        if info.implemented_by_backends and (group is None or info.group == group)
     )
+
+
+def assemble(
+    namespace: types.ModuleType | Mapping[str, Any],
+    *,
+    backend: str,
+    native_dtypes: Mapping[str, Any],
+    package: str | None = None,
+    xp: Any = None,
+    bind: Mapping[str, Any] | None = None,
+    reals: Mapping[str, Callable] | None = None,
+    capabilities: Any = None,
+    fallback: Callable[[str], Callable] | None = None,
+) -> types.ModuleType:
+    """Fill ``namespace`` with the backend's public names and register it as backend ``backend``.
+
+    Args:
+        namespace: the backend package's module (or its ``globals()``).
+        backend: the name it is known by (``'torch'``, ``'array_api_strict'``...).
+        native_dtypes: dtype name -> the native dtype object, for every ivy dtype the backend
+            has (a missing one is left out of the namespace, and its name raises on use).
+        package: the package holding the backend's own group modules (None: none).
+        xp: the Array API namespace that the shared layer is bound to (None: not used).
+        bind: what the shared layer's functions find besides ``xp``: the backend's helpers
+            (``native_dtype``, ``check_device``, ``as_inexact``...).
+        reals: ``{'unary': w, 'binary': w, 'options': w}``, each ``w(native, name)`` wrapping a
+            function of real numbers so that integer and boolean inputs compute in float32
+            (see ``ivy/backends/_reals.py``); None: the backend's functions do it themselves.
+        capabilities: the backend's :class:`ivy.framework_handler.Capabilities`.
+        fallback: ``fallback(name)`` gives the function for a name that neither the backend nor
+            the shared layer provides (a registered library's host bridge); None: none.
+
+    Returns:
+        The namespace module, complete.
+    """
+    module = (
+        namespace if isinstance(namespace, types.ModuleType) else sys.modules[namespace["__name__"]]
+    )
+    ns = module.__dict__
+    shared_bound: dict[str, dict[str, Any]] = {}
+    exported: set[str] = set()
+    missing: list[str] = []
+    for group_name in GROUP_NAMES:
+        names = backend_names(group_name)
+        if not names:
+            continue
+        own = _own_module(package, group_name)
+        shared = (
+            shared_bound.setdefault(group_name, _shared(group_name, xp, bind))
+            if xp is not None
+            else {}
+        )
+        for name in names:
+            fn = getattr(own, name, None) if own is not None else None
+            if fn is None:
+                fn = shared.get(name)
+            if fn is None and fallback is not None:
+                fn = fallback(name)
+            if fn is None:
+                missing.append(name)
+                continue
+            info = REGISTRY[name]
+            if info.reals and reals is not None and not getattr(fn, "__ivy_reals__", False):
+                fn = reals[info.reals](fn, name)
+            ns[name] = fn
+            exported.add(name)
+    if missing:
+        raise ImportError(f"ivy backend {backend!r} does not implement {sorted(missing)}")
+    known = {n: t for n, t in native_dtypes.items() if t is not None}
+    ns.update(known)
+    exported.update(DTYPE_NAMES)  # a dtype the backend lacks raises on use (see below)
+    for name in set(DTYPE_NAMES) - set(known):
+        ns[name] = _MissingDtype(name, backend)
+    ns.update(ARRAY_API_CONSTANTS)
+    exported.update(ARRAY_API_CONSTANTS)
+    ns["__array_api_version__"] = ARRAY_API_VERSION
+    for name, info in REGISTRY.items():
+        if info.kind == "composition":
+            ns[name] = _bound(_core_function(name), module)
+            exported.add(name)
+    for name, info in REGISTRY.items():
+        if info.kind == "alias":
+            ns[name] = ns[info.target]
+            exported.add(name)
+    for ext, group in extension_groups(GROUPS):
+        call = ns[ext] if ext in group.__all__ else None  # fft: a callable namespace
+        ns[ext] = ExtensionNamespace(f"ivy.{backend}.{ext}", group.__all__, ns.__getitem__, call)
+        exported.add(ext)
+    ns["__all__"] = sorted(exported)
+    _fh.register_loaded(backend, module, capabilities)
+    return module
+
+
+class _MissingDtype:
+    """Stands for an ivy dtype that a backend does not have; using it raises."""
+
+    def __init__(self, name: str, backend: str):
+        self.name, self.backend = name, backend
+
+    def __repr__(self) -> str:
+        return f"<dtype {self.name} (not available on {self.backend})>"
+
+    def __call__(self, *args: Any, **kwargs: Any) -> Any:
+        raise UnsupportedError(f"the {self.backend} backend has no dtype {self.name}")
+
+
+def _own_module(package: str | None, group: str) -> types.ModuleType | None:
+    if package is None or importlib.util.find_spec(f"{package}.{group}") is None:
+        return None
+    return importlib.import_module(f"{package}.{group}")
+
+
+def _shared(group: str, xp: Any, bind: Mapping[str, Any] | None) -> dict[str, Any]:
+    """The shared layer's functions of ``group``, bound to ``xp`` and the backend's helpers."""
+    if importlib.util.find_spec(f"{SHARED_PACKAGE}.{group}") is None:
+        return {}
+    module = importlib.import_module(f"{SHARED_PACKAGE}.{group}")
+    return bind_shared(module, xp, bind or {})
+
+
+def bind_shared(module: types.ModuleType, xp: Any, bind: Mapping[str, Any]) -> dict[str, Any]:
+    """The public functions of the shared module ``module``, bound to ``xp``.
+
+    Each function is the same code with new globals: the module's own, with ``xp`` and the names
+    in ``bind`` replaced. Calls between the module's functions stay within the bound copies, so
+    a backend pays nothing for the sharing; ``inspect.getsource`` and tracebacks show the shared
+    file. The names in the module's ``NATIVE`` are taken from ``xp`` as they are; a function
+    that needs more of ``xp`` than the standard (the module's ``NEEDS``) is left out where ``xp``
+    lacks it.
+    """
+    scope = dict(module.__dict__)
+    scope["xp"] = xp
+    scope.update(bind)
+    out: dict[str, Any] = {}
+    needs = getattr(module, "NEEDS", {})
+    for name, value in module.__dict__.items():
+        if isinstance(value, types.FunctionType) and value.__module__ == module.__name__:
+            if all(hasattr(xp, attr) for attr in needs.get(name, ())):
+                scope[name] = out[name] = _rebind(value, scope)
+    for name, path in getattr(module, "NATIVE", {}).items():
+        native = xp
+        for part in path.split("."):
+            native = getattr(native, part, None)
+        if native is not None and name not in out:
+            out[name] = native
+    return {n: f for n, f in out.items() if not n.startswith("_")}
+
+
+def _rebind(fn: types.FunctionType, scope: dict[str, Any]) -> types.FunctionType:
+    new = types.FunctionType(fn.__code__, scope, fn.__name__, fn.__defaults__, fn.__closure__)
+    new.__kwdefaults__ = fn.__kwdefaults__
+    new.__doc__ = fn.__doc__
+    new.__qualname__ = fn.__qualname__
+    new.__module__ = fn.__module__
+    new.__dict__.update(fn.__dict__)
+    return new
+
+
+def _core_function(name: str) -> Callable:
+    return getattr(GROUPS[GROUP_NAMES.index(REGISTRY[name].group)], name)
+
+
+def _bound(comp: Callable, ns: types.ModuleType) -> Callable:
+    """The composition ``comp`` with ``f`` bound to the namespace ``ns``."""
+
+    def bound(*args: Any, **kwargs: Any) -> Any:
+        return comp(*args, f=ns, **kwargs)
+
+    # The same code with the composition's globals, where typing.get_type_hints finds the names
+    # its annotations use.
+    bound = types.FunctionType(bound.__code__, comp.__globals__, None, None, bound.__closure__)
+    functools.update_wrapper(bound, comp)
+    bound.__annotations__ = {k: v for k, v in comp.__annotations__.items() if k != "f"}
+    sig = inspect.signature(comp)
+    bound.__signature__ = sig.replace(
+        parameters=[p for p in sig.parameters.values() if p.name != "f"]
+    )
+    del bound.__wrapped__
+    return _fh.run_as_is_in_autograph(bound)

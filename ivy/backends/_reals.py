@@ -94,5 +94,11 @@ def binary(native: Callable, name: str) -> Callable:
 
 def _named(fn: Callable, name: str, what: str) -> Callable:
     fn.__name__ = fn.__qualname__ = name
+    fn.__ivy_reals__ = True
     fn.__doc__ = f"{name}, with integer and boolean {what} computed in float32."
     return fn
+
+
+# ivy's rule for the functions of real numbers that the core declares (@dispatch(reals=True)),
+# applied by the assembly of the backends whose arrays carry numpy dtypes.
+WRAPPERS = {"unary": unary, "binary": binary, "options": with_options}

@@ -5,24 +5,15 @@ when no framework is involved (``finfo('float32')``)."""
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable
 from types import ModuleType
 from typing import Any
 
 from ivy import framework_handler as _fh
-from ivy.core._dispatch import DISPATCHED
+from ivy.core._dispatch import by_hand
 from ivy.errors import NoFrameworkError
 from ivy.typing import Framework
 
 __all__ = ["by_hand", "framework_or_none"]
-
-
-def by_hand(fn: Callable) -> Callable:
-    """Register ``fn``, a dispatcher written by hand, as a dispatched function: every backend
-    must implement a function of the same name."""
-    fn.__ivy_kind__ = "dispatch"
-    DISPATCHED[fn.__name__] = fn
-    return fn
 
 
 def framework_or_none(*args: Any, f: Framework = None) -> ModuleType | None:

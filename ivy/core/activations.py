@@ -69,7 +69,7 @@ def leaky_relu(x: Array, /, alpha: float = 0.2, *, f: Framework = None) -> Array
     return xp.where(xp.greater(x, 0), x, xp.multiply(x, alpha))
 
 
-@dispatch
+@dispatch(reals=True)
 def gelu(x: Array, /, approximate: bool = False, *, f: Framework = None) -> Array:
     """Gaussian error linear unit ``x * Phi(x) = x / 2 * (1 + erf(x / sqrt(2)))``.
 
@@ -87,7 +87,7 @@ def gelu(x: Array, /, approximate: bool = False, *, f: Framework = None) -> Arra
     """
 
 
-@dispatch
+@dispatch(reals=True)
 def sigmoid(x: Array, /, *, f: Framework = None) -> Array:
     """Logistic function ``1 / (1 + exp(-x))``, finite with a finite gradient everywhere.
 
@@ -103,7 +103,7 @@ def sigmoid(x: Array, /, *, f: Framework = None) -> Array:
     """
 
 
-@dispatch
+@dispatch(reals=True)
 def softmax(x: Array, /, axis: int = -1, *, f: Framework = None) -> Array:
     """``exp(x) / sum(exp(x))`` along ``axis``, computed after subtracting the maximum.
 
@@ -120,7 +120,7 @@ def softmax(x: Array, /, axis: int = -1, *, f: Framework = None) -> Array:
     """
 
 
-@dispatch
+@dispatch(reals=True)
 def log_softmax(x: Array, /, axis: int = -1, *, f: Framework = None) -> Array:
     """``x - logsumexp(x)`` along ``axis``: the log of :func:`softmax`, without underflow.
 

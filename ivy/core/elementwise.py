@@ -85,32 +85,32 @@ def abs(x: Array, /, *, f: Framework = None) -> Array:
     """Absolute value."""
 
 
-@dispatch
+@dispatch(reals=True)
 def acos(x: Array, /, *, f: Framework = None) -> Array:
     """Inverse cosine, in radians."""
 
 
-@dispatch
+@dispatch(reals=True)
 def acosh(x: Array, /, *, f: Framework = None) -> Array:
     """Inverse hyperbolic cosine."""
 
 
-@dispatch
+@dispatch(reals=True)
 def asin(x: Array, /, *, f: Framework = None) -> Array:
     """Inverse sine, in radians."""
 
 
-@dispatch
+@dispatch(reals=True)
 def asinh(x: Array, /, *, f: Framework = None) -> Array:
     """Inverse hyperbolic sine."""
 
 
-@dispatch
+@dispatch(reals=True)
 def atan(x: Array, /, *, f: Framework = None) -> Array:
     """Inverse tangent, in radians."""
 
 
-@dispatch
+@dispatch(reals=True)
 def atanh(x: Array, /, *, f: Framework = None) -> Array:
     """Inverse hyperbolic tangent."""
 
@@ -120,22 +120,22 @@ def ceil(x: Array, /, *, f: Framework = None) -> Array:
     """Smallest integer-valued number not less than x."""
 
 
-@dispatch
+@dispatch(reals=True)
 def cos(x: Array, /, *, f: Framework = None) -> Array:
     """Cosine of x in radians."""
 
 
-@dispatch
+@dispatch(reals=True)
 def cosh(x: Array, /, *, f: Framework = None) -> Array:
     """Hyperbolic cosine."""
 
 
-@dispatch
+@dispatch(reals=True)
 def exp(x: Array, /, *, f: Framework = None) -> Array:
     """Exponential e**x."""
 
 
-@dispatch
+@dispatch(reals=True)
 def expm1(x: Array, /, *, f: Framework = None) -> Array:
     """exp(x) - 1, accurate for small x."""
 
@@ -160,22 +160,22 @@ def isnan(x: Array, /, *, f: Framework = None) -> Array:
     """True where x is nan."""
 
 
-@dispatch
+@dispatch(reals=True)
 def log(x: Array, /, *, f: Framework = None) -> Array:
     """Natural logarithm."""
 
 
-@dispatch
+@dispatch(reals=True)
 def log1p(x: Array, /, *, f: Framework = None) -> Array:
     """log(1 + x), accurate for small x."""
 
 
-@dispatch
+@dispatch(reals=True)
 def log2(x: Array, /, *, f: Framework = None) -> Array:
     """Base-2 logarithm."""
 
 
-@dispatch
+@dispatch(reals=True)
 def log10(x: Array, /, *, f: Framework = None) -> Array:
     """Base-10 logarithm."""
 
@@ -205,17 +205,17 @@ def sign(x: Array, /, *, f: Framework = None) -> Array:
     """Sign of x: -1, 0 or 1."""
 
 
-@dispatch
+@dispatch(reals=True)
 def sin(x: Array, /, *, f: Framework = None) -> Array:
     """Sine of x in radians."""
 
 
-@dispatch
+@dispatch(reals=True)
 def sinh(x: Array, /, *, f: Framework = None) -> Array:
     """Hyperbolic sine."""
 
 
-@dispatch
+@dispatch(reals=True)
 def sqrt(x: Array, /, *, f: Framework = None) -> Array:
     """Square root."""
 
@@ -225,12 +225,12 @@ def square(x: Array, /, *, f: Framework = None) -> Array:
     """x * x."""
 
 
-@dispatch
+@dispatch(reals=True)
 def tan(x: Array, /, *, f: Framework = None) -> Array:
     """Tangent of x in radians."""
 
 
-@dispatch
+@dispatch(reals=True)
 def tanh(x: Array, /, *, f: Framework = None) -> Array:
     """Hyperbolic tangent."""
 
@@ -245,12 +245,12 @@ def add(x1: Array | Scalar, x2: Array | Scalar, /, *, f: Framework = None) -> Ar
     """x1 + x2."""
 
 
-@dispatch("x1", "x2")
+@dispatch("x1", "x2", reals=True)
 def atan2(x1: Array | Scalar, x2: Array | Scalar, /, *, f: Framework = None) -> Array:
     """Angle of the point (x2, x1), in radians, in [-pi, pi]."""
 
 
-@dispatch("x1", "x2")
+@dispatch("x1", "x2", reals=True)
 def divide(x1: Array | Scalar, x2: Array | Scalar, /, *, f: Framework = None) -> Array:
     """x1 / x2 (true division)."""
 
@@ -370,7 +370,7 @@ def real(x: Array, /, *, f: Framework = None) -> Array:
     """Real part of a complex ``x``, as a real array of the same precision (real ``x``: itself)."""
 
 
-@dispatch
+@dispatch(reals=True)
 def reciprocal(x: Array, /, *, f: Framework = None) -> Array:
     """1 / x, for floating ``x`` (Array API 2024.12)."""
 
@@ -405,22 +405,22 @@ def bitwise_xor(x1: Array | Scalar, x2: Array | Scalar, /, *, f: Framework = Non
     """Bitwise XOR of integers or bools."""
 
 
-@dispatch("x1", "x2")
+@dispatch("x1", "x2", reals=True)
 def copysign(x1: Array | Scalar, x2: Array | Scalar, /, *, f: Framework = None) -> Array:
     """The magnitude of ``x1`` with the sign of ``x2`` (the sign bit: -0.0 counts as negative)."""
 
 
-@dispatch("x1", "x2")
+@dispatch("x1", "x2", reals=True)
 def hypot(x1: Array | Scalar, x2: Array | Scalar, /, *, f: Framework = None) -> Array:
     """sqrt(x1**2 + x2**2), without overflow or underflow; inf if either is infinite."""
 
 
-@dispatch("x1", "x2")
+@dispatch("x1", "x2", reals=True)
 def logaddexp(x1: Array | Scalar, x2: Array | Scalar, /, *, f: Framework = None) -> Array:
     """log(exp(x1) + exp(x2)), without overflow."""
 
 
-@dispatch("x1", "x2")
+@dispatch("x1", "x2", reals=True)
 def nextafter(x1: Array | Scalar, x2: Array | Scalar, /, *, f: Framework = None) -> Array:
     """The next representable floating value after ``x1`` toward ``x2`` (Array API 2024.12)."""
 

@@ -30,7 +30,7 @@ Example:
 from __future__ import annotations
 
 from ivy import framework_handler as _fh
-from ivy.core._dispatch import dispatch
+from ivy.core._dispatch import by_hand, dispatch
 from ivy.typing import Array, Device, Dtype, Framework, Shape
 
 __all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "random_categorical"]
@@ -38,6 +38,7 @@ __all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "ran
 _seed_value: list[int | None] = [None]
 
 
+@by_hand
 def seed(seed_value: int = 0, *, f: Framework = None) -> None:
     """Seed the random generators so that re-runs draw the same numbers, eager and compiled.
 

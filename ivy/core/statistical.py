@@ -60,7 +60,7 @@ def prod(
     """Product of ``x`` over ``axis``."""
 
 
-@dispatch
+@dispatch(reals=True)
 def mean(
     x: Array,
     /,
@@ -96,7 +96,7 @@ def max(
     """Maximum of ``x`` over ``axis`` (nan propagates)."""
 
 
-@dispatch
+@dispatch(reals=True)
 def var(
     x: Array,
     /,
@@ -109,7 +109,7 @@ def var(
     """Variance over ``axis``, dividing by ``N - correction`` (1 gives the sample variance)."""
 
 
-@dispatch
+@dispatch(reals=True)
 def std(
     x: Array,
     /,

@@ -1,13 +1,30 @@
-"""Truth tests, closeness and differences. ``axis`` is None (all axes), an int or a tuple."""
+"""Utilities: truth tests, closeness and differences (the Array API's utility functions), and
+conversion: to numpy, to lists, to another framework; shape, dtype and device of an array.
+``axis`` is None (all axes), an int or a tuple."""
 
 from __future__ import annotations
+
+from types import ModuleType
+from typing import Any
 
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition, dispatch
 from ivy.core._floats import common_floating
-from ivy.typing import Array, Framework, Scalar
+from ivy.typing import Array, ArrayLike, Dtype, Framework, Scalar
 
-__all__ = ["all", "any", "diff", "isclose", "allclose"]
+__all__ = [
+    "all",
+    "any",
+    "diff",
+    "isclose",
+    "allclose",
+    "to_numpy",
+    "to_list",
+    "shape",
+    "dtype",
+    "dev",
+    "to_framework",
+]
 
 
 @dispatch
@@ -127,3 +144,65 @@ def allclose(
     """
     xp = _fh.get_framework(x1, x2, f=f)
     return xp.all(isclose(x1, x2, rtol=rtol, atol=atol, equal_nan=equal_nan, f=xp))
+
+
+@dispatch
+def to_numpy(x: Array, /, *, f: Framework = None) -> Array:
+    """``x`` as a numpy array (detached, on the CPU)."""
+
+
+@dispatch
+def to_list(x: Array, /, *, f: Framework = None) -> list[Any] | Scalar:
+    """``x`` as nested Python lists (a scalar for a 0-d array)."""
+
+
+@dispatch
+def shape(x: Array, /, *, f: Framework = None) -> tuple[int, ...]:
+    """Shape of ``x`` as a tuple of ints."""
+
+
+@dispatch
+def dtype(x: Array, /, *, as_str: bool = False, f: Framework = None) -> Dtype:
+    """Dtype of ``x``: the framework's object, or its name with ``as_str=True``."""
+
+
+@dispatch
+def dev(x: Array, /, *, f: Framework = None) -> str:
+    """Device of ``x`` as a string: ``'cpu'`` or ``'gpu:0'``."""
+
+
+@composition
+def to_framework(x: ArrayLike, framework: str | ModuleType, /, *, f: Framework = None) -> Array:
+    """``x`` as an array of ``framework``, sharing its memory where the frameworks allow.
+
+    The array goes through DLPack (the target backend's ``from_dlpack``): numpy, torch and jax
+    arrays on the CPU convert into each other without a copy wherever the importer accepts the
+    buffer (torch -> numpy, numpy -> torch, jax -> numpy and jax -> torch always; jax and tf copy
+    buffers that are not aligned as they require). A torch tensor that requires gradients is
+    detached: gradients do not flow between frameworks. Where DLPack cannot carry the array at
+    all, the data are copied through numpy, with the same values and dtype. Memory shared with a
+    jax or tf array must not be written afterwards: those frameworks assume it immutable.
+
+    Args:
+        x: an array of any backend.
+        framework: the target: a name (``'jax'``) or a namespace (``ivy.jax``).
+        f: unused: the framework of ``x`` is always read from its type (neither ``f`` nor the
+            globally set framework changes what ``x`` is). Python scalars and lists are
+            converted with the target's ``asarray``.
+
+    Returns:
+        The array in the target framework (``x`` itself when it is already of that framework).
+
+    Example: ``ivy.to_framework(np.arange(3.), 'torch')`` -> ``tensor([0., 1., 2.],
+    dtype=torch.float64)``, sharing the numpy array's memory.
+    """
+    owner = _fh.framework_of_type(type(x))
+    target = _fh.get_framework(f=framework)
+    if owner == target.backend:
+        return x
+    if owner is None:
+        return target.asarray(x)
+    try:
+        return target.from_dlpack(x)
+    except Exception:  # DLPack cannot carry this array: a copy gives the same values and dtype
+        return target.asarray(_fh.get_framework(f=owner).to_numpy(x))

@@ -16,8 +16,9 @@ import math
 from collections.abc import Callable
 from typing import Any
 
-import ivy
 from ivy import framework_handler as _fh
+from ivy.core.compilation import compile_fn
+from ivy.core.gradients import execute_with_gradients
 from ivy.nest import flatten_nest, map_nest, multi_map_nest, unflatten_nest
 from ivy.stateful.module import Module
 from ivy.typing import Framework, Nest
@@ -89,7 +90,7 @@ class Optimizer:
             ``(new_v, new_state)``.
 
         Example:
-            >>> loss, grads = ivy.execute_with_gradients(loss_fn, v)
+            >>> loss, grads = execute_with_gradients(loss_fn, v)
             >>> v, state = opt.step(v, grads, state)
         """
         leaves, spec = flatten_nest(v)
@@ -132,11 +133,11 @@ class Optimizer:
         """
 
         def step(v, state, *args, **kwargs):
-            loss, grads = ivy.execute_with_gradients(lambda w: loss_fn(w, *args, **kwargs), v)[:2]
+            loss, grads = execute_with_gradients(lambda w: loss_fn(w, *args, **kwargs), v)[:2]
             new_v, new_state = self.step(v, grads, state)
             return loss, new_v, new_state
 
-        return ivy.compile_fn(step) if compile else step
+        return compile_fn(step) if compile else step
 
     # ------------------------------------------------------------------------------------------
     # Stateful form
@@ -148,7 +149,7 @@ class Optimizer:
         The state is created on the first call, and again whenever another module is passed.
 
         Example:
-            >>> loss, grads = ivy.execute_with_gradients(loss_fn, model.v)
+            >>> loss, grads = execute_with_gradients(loss_fn, model.v)
             >>> opt.update(model, grads)
         """
         v = module.v
@@ -170,7 +171,7 @@ class Optimizer:
         Example:
             >>> loss = opt.minimize(model, lambda v: ivy.mse(model(x, v=v), y))
         """
-        loss, grads, *aux = ivy.execute_with_gradients(loss_fn, module.v)
+        loss, grads, *aux = execute_with_gradients(loss_fn, module.v)
         self.update(module, grads)
         return (loss, *aux) if aux else loss
 
@@ -226,9 +227,9 @@ class _ModuleStep:
         self._in_place = compile and module.f.backend in _ASSIGN_IN_PLACE
         if self._in_place:
             self._v_vars = self._state_vars = None
-            self._run = ivy.compile_fn(self._assigning_step, f=module.f)
+            self._run = compile_fn(self._assigning_step, f=module.f)
         else:
-            self._run = ivy.compile_fn(self._pure, f=module.f) if compile else self._pure
+            self._run = compile_fn(self._pure, f=module.f) if compile else self._pure
 
     def _state_for(self, v: Any) -> Any:
         opt = self._opt

@@ -111,7 +111,7 @@ GROUPS = [
     "creation",
     "data_type",
     "elementwise",
-    "general",
+    "utility",
     "indexing",
     "linalg",
     "manipulation",

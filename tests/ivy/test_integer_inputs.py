@@ -123,3 +123,17 @@ def test_integer_products_keep_their_dtype(backend, dtype):
     x = _native(a, backend)
     check(ivy.vecdot(x[0], x[1]), np.array(a[0] @ a[1], dtype=dtype), backend)
     check(ivy.matmul(x, x), (a @ a).astype(dtype), backend)
+
+
+def test_the_rule_is_declared_on_the_core_stubs_and_tested_here():
+    """The functions of real numbers are declared once, on the core's stubs
+    (``@dispatch(reals=True)``, read with ``ivy.function_info``); every one is tested above."""
+    declared = {i.name: i.reals for i in ivy.list_functions() if i.reals}
+    tested = {u[0] for u in UNARY} | {b[0] for b in BINARY}
+    assert set(declared) <= tested, sorted(set(declared) - tested)
+    for name, *_ in BINARY:
+        assert declared[name] == "binary", name
+    for name in ("sin", "sqrt", "reciprocal", "sigmoid"):
+        assert declared[name] == "unary", name
+    for name in ("mean", "var", "std", "softmax"):
+        assert declared[name] == "options", name

@@ -8,7 +8,6 @@ import sys
 import pytest
 
 import ivy
-from ivy.core._dispatch import _ALIASES, COMPOSITIONS, DISPATCHED
 
 NATIVE_MODULES = {
     "numpy": "numpy",
@@ -30,18 +29,18 @@ def test_all_namespaces_export_the_same_public_names(request):
 
 
 def test_every_core_function_is_in_every_namespace(xp):
-    for name in list(DISPATCHED) + list(COMPOSITIONS):
-        assert callable(getattr(xp, name)), name
-        assert name in xp.__all__, name
-    for alias, target in _ALIASES.items():
-        assert getattr(xp, alias) is getattr(xp, target)
-        assert getattr(ivy, alias) is getattr(ivy, target)
+    for info in ivy.list_functions():
+        assert callable(getattr(xp, info.name)), info.name
+        assert info.name in xp.__all__, info.name
+    for info in ivy.list_functions(kind="alias"):
+        assert getattr(xp, info.name) is getattr(xp, info.target)
+        assert getattr(ivy, info.name) is getattr(ivy, info.target)
 
 
 def test_agnostic_namespace_lists_every_core_function():
-    for name in list(DISPATCHED) + list(COMPOSITIONS):
-        assert name in ivy.__all__
-        assert getattr(ivy, name) is getattr(ivy.core, name)
+    for info in ivy.list_functions():
+        assert info.name in ivy.__all__
+        assert getattr(ivy, info.name) is getattr(ivy.core, info.name)
 
 
 def test_dtypes_are_native_objects(backend, xp):

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import ast
 import inspect
+import os
 import typing
 from pathlib import Path
 
@@ -150,7 +151,7 @@ def test_the_dispatchers_are_generated_functions():
     # functions written out in full
     kinds = {getattr(_agnostic(n), "__ivy_kind__", None) for n in WRITTEN}
     assert {"dispatch", "composition"} <= kinds
-    assert ivy.sin.__code__.co_filename == "<ivy dispatch sin>"
+    assert ivy.sin.__code__.co_filename.endswith(os.path.join("_dispatchers", "sin.py"))
 
 
 # ------------------------------------------------------------------------------------------------

@@ -137,3 +137,17 @@ def as_inexact(x):
     numbers treat such inputs on every backend (see ``ivy/backends/_reals.py``)."""
     x = jnp.asarray(x)
     return x if x.dtype.kind in "fc" else x.astype(jnp.float32)
+
+
+def dtype_name(dtype) -> str:
+    return np.dtype(dtype).name
+
+
+# What the shared layer's functions find besides ``xp`` (ivy/backends/array_api/_unbound.py).
+SHARED = {
+    "native_dtype": native_dtype,
+    "native_device": native_device,
+    "as_inexact": as_inexact,
+    "dtype_name": dtype_name,
+    "device_name": device_name,
+}

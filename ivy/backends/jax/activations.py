@@ -6,8 +6,6 @@ import jax
 
 from ivy.backends.jax._helpers import as_inexact
 
-__all__ = ["relu", "gelu", "sigmoid", "softmax", "log_softmax"]
-
 relu = jax.nn.relu
 
 

@@ -27,8 +27,6 @@ import jax
 
 from ivy.backends.jax import random as _random
 
-__all__ = ["compile_native"]
-
 _Tracer = jax.core.Tracer
 
 

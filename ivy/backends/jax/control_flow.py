@@ -36,8 +36,6 @@ from ivy.core.control_flow import (
     python_while_loop,
 )
 
-__all__ = ["scan", "fori_loop", "while_loop", "cond"]
-
 _Tracer = jax.core.Tracer
 _state = _random._state
 

@@ -11,16 +11,6 @@ from jax import lax
 
 from ivy.backends import _nn_args as A
 
-__all__ = [
-    "conv1d",
-    "conv2d",
-    "conv3d",
-    "conv1d_transpose",
-    "conv2d_transpose",
-    "conv3d_transpose",
-    "depthwise_conv2d",
-]
-
 _SPATIAL = {1: "W", 2: "HW", 3: "DHW"}
 
 

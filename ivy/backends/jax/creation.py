@@ -15,25 +15,6 @@ from ivy.backends.jax._helpers import (
     native_dtype,
 )
 
-__all__ = [
-    "asarray",
-    "zeros",
-    "ones",
-    "empty",
-    "full",
-    "arange",
-    "linspace",
-    "eye",
-    "zeros_like",
-    "ones_like",
-    "empty_like",
-    "full_like",
-    "from_dlpack",
-    "meshgrid",
-    "tril",
-    "triu",
-]
-
 # Python floats and complexes are float32 / complex64 by default, whatever jax's x64 setting.
 _DOWNCAST = {np.dtype(np.float64): jnp.float32, np.dtype(np.complex128): jnp.complex64}
 

@@ -9,8 +9,6 @@ import jax.numpy as jnp
 
 from ivy.backends.jax._helpers import default_int, native_dtype
 
-__all__ = ["cumsum", "cumprod"]
-
 
 def _accumulator(dtype):
     if jnp.issubdtype(dtype, jnp.unsignedinteger):

@@ -11,8 +11,6 @@ import numpy as np
 from ivy.backends.jax._helpers import NATIVE_DTYPES, native_device, native_dtype
 from ivy.core import _dtype_rules as rules
 
-__all__ = ["astype", "can_cast", "finfo", "iinfo", "isdtype", "result_type"]
-
 result_type = jnp.result_type
 
 

@@ -10,8 +10,6 @@ import jax.numpy as jnp
 
 from ivy.nest import flatten_nest, map_nest, unflatten_nest
 
-__all__ = ["execute_with_gradients", "execute_with_jacobian", "stop_gradient", "variable"]
-
 
 def _stop(nest):
     return map_nest(lambda a: jax.lax.stop_gradient(a) if isinstance(a, jax.Array) else a, nest)

@@ -13,17 +13,6 @@ import jax.numpy as jnp
 
 from ivy.backends.jax._helpers import native_dtype
 
-__all__ = [
-    "take",
-    "take_along_axis",
-    "gather_nd",
-    "scatter_nd",
-    "one_hot",
-    "gather_flat",
-    "scatter_flat",
-    "indices_where",
-]
-
 indices_where = jnp.argwhere
 
 _SCATTER_METHODS = {"sum": "add", "replace": "set", "min": "min", "max": "max"}

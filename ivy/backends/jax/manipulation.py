@@ -7,26 +7,6 @@ import itertools
 import jax.numpy as jnp
 import numpy as np
 
-__all__ = [
-    "reshape",
-    "permute_dims",
-    "transpose",
-    "concat",
-    "stack",
-    "unstack",
-    "split",
-    "squeeze",
-    "expand_dims",
-    "flip",
-    "tile",
-    "repeat",
-    "roll",
-    "swapaxes",
-    "broadcast_to",
-    "broadcast_arrays",
-    "moveaxis",
-]
-
 reshape = jnp.reshape
 permute_dims = jnp.permute_dims
 transpose = jnp.transpose

@@ -14,8 +14,6 @@ from jax import lax
 from ivy.backends import _nn_args as A
 from ivy.backends.jax.convolutions import flatten_batch
 
-__all__ = ["max_pool1d", "max_pool2d", "max_pool3d", "avg_pool1d", "avg_pool2d", "avg_pool3d"]
-
 
 def _pool(x, kernel, strides, padding, nd, fn, average):
     x = jnp.asarray(x)

@@ -23,8 +23,6 @@ import jax.numpy as jnp
 from ivy.backends._sample_args import categorical_args
 from ivy.backends.jax._helpers import default_int, native_device, native_dtype
 
-__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "random_categorical"]
-
 _MASK32 = 0xFFFFFFFF
 
 

@@ -8,15 +8,6 @@ import jax.numpy as jnp
 from ivy.backends.jax._helpers import default_int
 from ivy.errors import UnsupportedError
 
-__all__ = [
-    "argmax",
-    "argmin",
-    "where",
-    "count_nonzero",
-    "nonzero",
-    "searchsorted",
-]
-
 argmax = jnp.argmax
 argmin = jnp.argmin
 count_nonzero = jnp.count_nonzero

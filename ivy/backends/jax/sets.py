@@ -12,8 +12,6 @@ import jax.numpy as jnp
 
 from ivy.errors import UnsupportedError
 
-__all__ = ["unique_all", "unique_counts", "unique_inverse", "unique_values"]
-
 
 def _eager(native, name: str):
     def fn(x, /):

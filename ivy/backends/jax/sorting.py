@@ -11,8 +11,6 @@ from ivy.backends._sample_args import top_k_axis
 from ivy.backends.jax._helpers import default_int
 from ivy.core._results import TopKResult
 
-__all__ = ["argsort", "sort", "top_k"]
-
 argsort = jnp.argsort
 sort = jnp.sort
 

@@ -8,19 +8,6 @@ import jax.numpy as jnp
 from ivy.backends import _reals
 from ivy.backends.jax._helpers import default_int, native_dtype
 
-__all__ = [
-    "sum",
-    "prod",
-    "mean",
-    "min",
-    "max",
-    "var",
-    "std",
-    "cumulative_sum",
-    "cumulative_prod",
-    "logsumexp",
-]
-
 mean = _reals.with_options(jnp.mean, "mean")
 min = jnp.min
 max = jnp.max

@@ -1,7 +1,24 @@
 """ivy's numpy backend: ``ivy.numpy``. Dtypes are numpy's own (``ivy.numpy.float32 is
-numpy.float32``); the default float dtype is float32, as on every backend."""
+numpy.float32``); the default float dtype is float32, as on every backend.
 
+Most functions come from the shared layer (``ivy/backends/array_api/``) bound to numpy; the
+modules here hold only what differs on numpy.
+"""
+
+import sys
+
+import numpy
+
+from ivy.backends import _reals
 from ivy.backends._assemble import assemble
-from ivy.backends.numpy._helpers import NATIVE_DTYPES
+from ivy.backends.numpy import _helpers
 
-assemble(__name__, globals(), NATIVE_DTYPES)
+assemble(
+    sys.modules[__name__],
+    backend="numpy",
+    package=__name__,
+    native_dtypes=_helpers.NATIVE_DTYPES,
+    xp=numpy,
+    bind=_helpers.SHARED,
+    reals=_reals.WRAPPERS,
+)

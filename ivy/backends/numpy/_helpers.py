@@ -58,3 +58,23 @@ def as_inexact(x):
     numbers treat such inputs on every backend (see ``ivy/backends/_reals.py``)."""
     x = np.asarray(x)
     return x if x.dtype.kind in "fc" else x.astype(np.float32)
+
+
+def native_device(device):
+    """numpy's only device: None (numpy's functions take ``device='cpu'`` or None)."""
+    check_device(device)
+    return None if device is None else "cpu"
+
+
+def device_name(device) -> str:
+    return "cpu"
+
+
+# What the shared layer's functions find besides ``xp`` (ivy/backends/array_api/_unbound.py).
+SHARED = {
+    "native_dtype": native_dtype,
+    "native_device": native_device,
+    "as_inexact": as_inexact,
+    "dtype_name": dtype_name,
+    "device_name": device_name,
+}

@@ -12,8 +12,6 @@ import numpy as np
 
 from ivy.backends.numpy._helpers import as_inexact
 
-__all__ = ["relu", "gelu", "sigmoid", "softmax", "log_softmax"]
-
 try:  # scipy is optional for the numpy backend
     from scipy.special import erfc as _erfc
     from scipy.special import expit as _expit

@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import warnings
 
-__all__ = ["compile_native"]
-
 
 def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
     warnings.warn(

@@ -13,8 +13,6 @@ from ivy.core.control_flow import (
     python_while_loop,
 )
 
-__all__ = ["scan", "fori_loop", "while_loop", "cond"]
-
 _OPS = LoopOps(unstack=list, stack=np.stack, zeros=np.zeros, asarray=asarray)
 
 

@@ -10,16 +10,6 @@ import numpy as np
 
 from ivy.backends import _nn_args as A
 
-__all__ = [
-    "conv1d",
-    "conv2d",
-    "conv3d",
-    "conv1d_transpose",
-    "conv2d_transpose",
-    "conv3d_transpose",
-    "depthwise_conv2d",
-]
-
 
 def _windows(offset, dilations, strides, out_sizes):
     """Index of the strided view of the padded input that kernel tap ``offset`` multiplies."""

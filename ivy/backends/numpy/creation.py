@@ -12,25 +12,6 @@ from ivy.backends.numpy._helpers import (
     native_dtype,
 )
 
-__all__ = [
-    "asarray",
-    "zeros",
-    "ones",
-    "empty",
-    "full",
-    "arange",
-    "linspace",
-    "eye",
-    "zeros_like",
-    "ones_like",
-    "empty_like",
-    "full_like",
-    "from_dlpack",
-    "meshgrid",
-    "tril",
-    "triu",
-]
-
 _DOWNCAST = {np.dtype(np.float64): np.float32, np.dtype(np.complex128): np.complex64}
 
 

@@ -6,8 +6,6 @@ import numpy as np
 
 from ivy.backends.numpy._helpers import native_dtype
 
-__all__ = ["cumsum", "cumprod"]
-
 
 def _cumulative(fn, identity, x, axis, exclusive, reverse, dtype):
     x = np.asarray(x)

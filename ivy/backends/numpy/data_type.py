@@ -9,8 +9,6 @@ import numpy as np
 from ivy.backends.numpy._helpers import NATIVE_DTYPES, check_device, dtype_name, native_dtype
 from ivy.core import _dtype_rules as rules
 
-__all__ = ["astype", "can_cast", "finfo", "iinfo", "isdtype", "result_type"]
-
 can_cast = np.can_cast
 result_type = np.result_type
 

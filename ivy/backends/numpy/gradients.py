@@ -8,8 +8,6 @@ from __future__ import annotations
 
 from ivy.errors import UnsupportedError
 
-__all__ = ["execute_with_gradients", "execute_with_jacobian", "stop_gradient", "variable"]
-
 
 def _no_autodiff(name: str) -> UnsupportedError:
     return UnsupportedError(

@@ -7,17 +7,6 @@ import numpy as np
 
 from ivy.backends.numpy._helpers import native_dtype
 
-__all__ = [
-    "take",
-    "take_along_axis",
-    "gather_nd",
-    "scatter_nd",
-    "one_hot",
-    "gather_flat",
-    "scatter_flat",
-    "indices_where",
-]
-
 gather_flat = np.take  # (params, indices): flattened, any index shape, negative from the end
 indices_where = np.argwhere
 

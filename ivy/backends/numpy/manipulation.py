@@ -4,26 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = [
-    "reshape",
-    "permute_dims",
-    "transpose",
-    "concat",
-    "stack",
-    "unstack",
-    "split",
-    "squeeze",
-    "expand_dims",
-    "flip",
-    "tile",
-    "repeat",
-    "roll",
-    "swapaxes",
-    "broadcast_to",
-    "broadcast_arrays",
-    "moveaxis",
-]
-
 
 def reshape(x, /, shape, *, copy=None):
     out = np.reshape(x, shape)

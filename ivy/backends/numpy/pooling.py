@@ -7,8 +7,6 @@ import numpy as np
 from ivy.backends import _nn_args as A
 from ivy.backends.numpy.convolutions import _flatten_batch, _windows
 
-__all__ = ["max_pool1d", "max_pool2d", "max_pool3d", "avg_pool1d", "avg_pool2d", "avg_pool3d"]
-
 
 def _pool(x, kernel, strides, padding, nd, fn, average):
     x = np.asarray(x)

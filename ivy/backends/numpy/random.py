@@ -7,8 +7,6 @@ import numpy as np
 from ivy.backends._sample_args import categorical_args
 from ivy.backends.numpy._helpers import check_device, native_dtype
 
-__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "random_categorical"]
-
 _rng = [np.random.default_rng()]
 
 

@@ -4,15 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = [
-    "argmax",
-    "argmin",
-    "where",
-    "count_nonzero",
-    "nonzero",
-    "searchsorted",
-]
-
 
 def argmax(x, /, *, axis=None, keepdims=False):
     return np.asarray(np.argmax(x, axis=axis, keepdims=keepdims), dtype=np.int64)

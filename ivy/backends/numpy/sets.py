@@ -10,8 +10,6 @@ import numpy as np
 
 from ivy.core._results import UniqueAllResult, UniqueCountsResult, UniqueInverseResult
 
-__all__ = ["unique_all", "unique_counts", "unique_inverse", "unique_values"]
-
 
 def unique_all(x, /):
     values, indices, inverse, counts = np.unique(

@@ -9,8 +9,6 @@ import numpy as np
 from ivy.backends._sample_args import top_k_axis
 from ivy.core._results import TopKResult
 
-__all__ = ["argsort", "sort", "top_k"]
-
 
 def argsort(x, /, *, axis=-1, descending=False, stable=True):
     kind = "stable" if stable else None

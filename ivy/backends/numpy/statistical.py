@@ -6,19 +6,6 @@ import numpy as np
 
 from ivy.backends.numpy._helpers import as_inexact, native_dtype
 
-__all__ = [
-    "sum",
-    "prod",
-    "mean",
-    "min",
-    "max",
-    "var",
-    "std",
-    "cumulative_sum",
-    "cumulative_prod",
-    "logsumexp",
-]
-
 
 def sum(x, /, *, axis=None, dtype=None, keepdims=False):
     return np.sum(x, axis=axis, dtype=native_dtype(dtype), keepdims=keepdims)

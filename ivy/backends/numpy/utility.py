@@ -1,19 +1,28 @@
-"""numpy backend: truth tests and differences."""
+"""numpy backend: utilities (truth tests, differences, conversion to numpy and lists, shape,
+dtype, device)."""
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["all", "any", "diff"]
-
-all = np.all  # noqa: A001 - the Array API names
-any = np.any  # noqa: A001
+from ivy.backends.numpy._helpers import dtype_name
 
 
-def diff(x, /, *, axis=-1, n=1, prepend=None, append=None):
-    extra = {}
-    if prepend is not None:
-        extra["prepend"] = prepend
-    if append is not None:
-        extra["append"] = append
-    return np.diff(x, n=n, axis=axis, **extra)
+def to_numpy(x, /):
+    return np.asarray(x)
+
+
+def to_list(x, /):
+    return np.asarray(x).tolist()
+
+
+def shape(x, /):
+    return tuple(np.shape(x))
+
+
+def dtype(x, /, *, as_str=False):
+    return dtype_name(x.dtype) if as_str else x.dtype
+
+
+def dev(x, /):
+    return "cpu"

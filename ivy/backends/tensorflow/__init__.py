@@ -2,7 +2,15 @@
 tf.float32``); the default float dtype is float32 and the default int dtype int64 (not tf's
 int32)."""
 
-from ivy.backends._assemble import assemble
-from ivy.backends.tensorflow._helpers import NATIVE_DTYPES
+import sys
 
-assemble(__name__, globals(), NATIVE_DTYPES)
+from ivy.backends._assemble import assemble
+from ivy.backends.tensorflow._helpers import NATIVE_DTYPES, REALS
+
+assemble(
+    sys.modules[__name__],
+    backend="tensorflow",
+    package=__name__,
+    native_dtypes=NATIVE_DTYPES,
+    reals=REALS,
+)

@@ -23,7 +23,9 @@ TENSOR_TYPES = (tf.Tensor, tf.Variable)
 # only while small (tf wraps an out-of-range int silently: int8 * 300); numpy objects are not safe
 # (tf casts them to the tensor's dtype silently: int64 * np.float64(2.5)). Tensor types are added
 # as they are met.
-FAST_TYPES = {type(tf.constant(0.0)), float, bool}
+with tf.init_scope():  # eager even when the backend is first loaded inside a tf.function
+    EAGER_TENSOR = type(tf.constant(0.0))
+FAST_TYPES = {EAGER_TENSOR, float, bool}
 
 # Errors by which tf's functions refuse inputs (other dtypes, or a dtype without a kernel), eager
 # and inside tf.function.
@@ -283,3 +285,30 @@ def as_inexact(x):
     numbers treat such inputs on every backend (see ``ivy/backends/_reals.py``)."""
     x = tensor(x)
     return x if x.dtype.is_floating or x.dtype.is_complex else tf.cast(x, tf.float32)
+
+
+def _of_reals(native, name: str):
+    """tf's function of real numbers ``native``, which refuses integers and bools: those are
+    computed in float32 (ivy's rule for every backend, ``ivy/backends/_reals.py``)."""
+
+    def fn(x, /):
+        try:
+            return native(x)
+        except REFUSED:
+            x = tensor(x)
+            if x.dtype.is_floating or x.dtype.is_complex:
+                raise
+            return native(tf.cast(x, tf.float32))
+
+    fn.__name__ = fn.__qualname__ = name
+    fn.__ivy_reals__ = True
+    return fn
+
+
+def _as_is(native, name: str):
+    return native  # the shims of these convert integer inputs themselves
+
+
+# ivy's rule for the functions of real numbers that the core declares (@dispatch(reals=True)),
+# applied by the assembly.
+REALS = {"unary": _of_reals, "binary": _as_is, "options": _as_is}

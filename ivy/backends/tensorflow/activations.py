@@ -12,8 +12,6 @@ import tensorflow as tf
 
 from ivy.backends.tensorflow._helpers import as_inexact
 
-__all__ = ["relu", "gelu", "sigmoid", "softmax", "log_softmax"]
-
 _SQRT_HALF = math.sqrt(0.5)
 _SQRT_2_OVER_PI = math.sqrt(2 / math.pi)
 

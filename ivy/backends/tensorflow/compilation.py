@@ -21,8 +21,9 @@ third of the step. ``compile_native`` therefore keeps its own table from a cheap
 only after checking, at its first call, that tf itself flattens the arguments into exactly the
 same tensors in the same order; calls with variables, symbolic tensors (inside another graph)
 or unhashable static values always take ``tf.function``'s own path. This uses
-``ConcreteFunction._call_flat``, a private method of tensorflow; where it is missing the fast
-path is off and only the speed changes.
+``ConcreteFunction._call_flat`` and ``function_type_utils``, private parts of tensorflow, imported
+under a guard: where they are missing or moved, ``compile_fn`` is plain ``tf.function`` and only
+the speed changes.
 """
 
 from __future__ import annotations
@@ -31,18 +32,28 @@ import functools
 
 import optree
 import tensorflow as tf
-from tensorflow.python.eager.polymorphic_function import concrete_function, function_type_utils
 
-__all__ = ["compile_native"]
+from ivy.backends.tensorflow._helpers import EAGER_TENSOR as _EagerTensor
 
-_EagerTensor = type(tf.constant(0.0))
+try:  # private: the fast path is an optimisation, never a requirement
+    from tensorflow.python.eager.polymorphic_function import (
+        concrete_function,
+        function_type_utils,
+    )
+
+    _FAST_PATH = hasattr(concrete_function.ConcreteFunction, "_call_flat") and hasattr(
+        function_type_utils, "canonicalize_function_inputs"
+    )
+except ImportError:  # tensorflow moved them: plain tf.function
+    _FAST_PATH = False
+
 _MAX_FAST_TRACES = 64  # beyond this many argument signatures, tf.function's own cache serves
 _UNCHECKED, _REFUSED = object(), object()
 
 
 def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
     function = tf.function(fn, autograph=False)
-    if not hasattr(concrete_function.ConcreteFunction, "_call_flat"):
+    if not _FAST_PATH:
         return function
     return _FastCall(function)
 

@@ -33,8 +33,6 @@ from ivy.core.control_flow import (
 )
 from ivy.nest import flatten_nest, unflatten_nest
 
-__all__ = ["scan", "fori_loop", "while_loop", "cond"]
-
 
 def _zeros(shape, dtype):
     return tf.zeros(shape, dtype=dtype)

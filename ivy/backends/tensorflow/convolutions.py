@@ -13,17 +13,6 @@ import tensorflow as tf
 
 from ivy.backends import _nn_args as A
 
-__all__ = [
-    "conv1d",
-    "conv2d",
-    "conv3d",
-    "conv1d_transpose",
-    "conv2d_transpose",
-    "conv3d_transpose",
-    "depthwise_conv2d",
-]
-
-
 # The rank-specific functions: ``tf.nn.convolution`` builds 3-D ops whose gradient fails
 # (their ``data_format`` attribute is unset).
 _CONV = {

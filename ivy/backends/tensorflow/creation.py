@@ -15,25 +15,6 @@ from ivy.backends.tensorflow._helpers import (
     to_tensor,
 )
 
-__all__ = [
-    "asarray",
-    "zeros",
-    "ones",
-    "empty",
-    "full",
-    "arange",
-    "linspace",
-    "eye",
-    "zeros_like",
-    "ones_like",
-    "empty_like",
-    "full_like",
-    "from_dlpack",
-    "meshgrid",
-    "tril",
-    "triu",
-]
-
 
 def asarray(obj, /, *, dtype=None, device=None, copy=None):
     """tf tensors are immutable, so ``copy`` changes nothing; a variable is read into a tensor."""

@@ -8,8 +8,6 @@ import tensorflow as tf
 
 from ivy.backends.tensorflow._helpers import native_dtype, tensor
 
-__all__ = ["cumsum", "cumprod"]
-
 
 def _accumulated(x, dtype):
     x = tensor(x)

@@ -8,8 +8,6 @@ import tensorflow as tf
 from ivy.backends.tensorflow._helpers import NATIVE_DTYPES, native_dtype, placed
 from ivy.core import _dtype_rules as rules
 
-__all__ = ["astype", "can_cast", "finfo", "iinfo", "isdtype", "result_type"]
-
 _SCALARS = (bool, int, float, complex)
 
 

@@ -29,121 +29,33 @@ from ivy.backends.tensorflow._helpers import (
     tensor_of,
 )
 
-__all__ = [
-    "abs",
-    "acos",
-    "acosh",
-    "add",
-    "asin",
-    "asinh",
-    "atan",
-    "atan2",
-    "atanh",
-    "bitwise_and",
-    "bitwise_invert",
-    "bitwise_left_shift",
-    "bitwise_or",
-    "bitwise_right_shift",
-    "bitwise_xor",
-    "ceil",
-    "clip",
-    "conj",
-    "copysign",
-    "cos",
-    "cosh",
-    "divide",
-    "equal",
-    "exp",
-    "expm1",
-    "floor",
-    "floor_divide",
-    "greater",
-    "greater_equal",
-    "hypot",
-    "imag",
-    "isfinite",
-    "isinf",
-    "isnan",
-    "less",
-    "less_equal",
-    "log",
-    "log10",
-    "log1p",
-    "log2",
-    "logaddexp",
-    "logical_and",
-    "logical_not",
-    "logical_or",
-    "logical_xor",
-    "maximum",
-    "minimum",
-    "multiply",
-    "nan_to_num",
-    "negative",
-    "nextafter",
-    "not_equal",
-    "positive",
-    "pow",
-    "real",
-    "reciprocal",
-    "remainder",
-    "round",
-    "sign",
-    "signbit",
-    "sin",
-    "sinh",
-    "sqrt",
-    "square",
-    "subtract",
-    "tan",
-    "tanh",
-    "trunc",
-]
-
-
-def _of_reals(native, name: str):
-    """tf's function of real numbers ``native``, which refuses integers and bools: those are
-    computed in float32 (ivy's rule for every backend, ``ivy/backends/_reals.py``)."""
-
-    def fn(x, /):
-        try:
-            return native(x)
-        except REFUSED:
-            x = tensor(x)
-            if x.dtype.is_floating or x.dtype.is_complex:
-                raise
-            return native(tf.cast(x, tf.float32))
-
-    fn.__name__ = fn.__qualname__ = name
-    return fn
-
 
 abs = tf.math.abs
-acos = _of_reals(tf.math.acos, "acos")
-acosh = _of_reals(tf.math.acosh, "acosh")
-asin = _of_reals(tf.math.asin, "asin")
-asinh = _of_reals(tf.math.asinh, "asinh")
-atan = _of_reals(tf.math.atan, "atan")
-atanh = _of_reals(tf.math.atanh, "atanh")
+acos = tf.math.acos
+acosh = tf.math.acosh
+asin = tf.math.asin
+asinh = tf.math.asinh
+atan = tf.math.atan
+atanh = tf.math.atanh
 conj = tf.math.conj
-cos = _of_reals(tf.math.cos, "cos")
-cosh = _of_reals(tf.math.cosh, "cosh")
-exp = _of_reals(tf.math.exp, "exp")
-expm1 = _of_reals(tf.math.expm1, "expm1")
+cos = tf.math.cos
+cosh = tf.math.cosh
+exp = tf.math.exp
+expm1 = tf.math.expm1
 imag = tf.math.imag
-log = _of_reals(tf.math.log, "log")
-log1p = _of_reals(tf.math.log1p, "log1p")
+log = tf.math.log
+log1p = tf.math.log1p
 negative = tf.math.negative
 positive = tf.identity
 real = tf.math.real
 round = tf.math.round
 sign = tf.math.sign
-sin = _of_reals(tf.math.sin, "sin")
-sinh = _of_reals(tf.math.sinh, "sinh")
-sqrt = _of_reals(tf.math.sqrt, "sqrt")
+sin = tf.math.sin
+sinh = tf.math.sinh
+sqrt = tf.math.sqrt
 square = tf.math.square
-tan = _of_reals(tf.math.tan, "tan")
-tanh = _of_reals(tf.math.tanh, "tanh")
+tan = tf.math.tan
+tanh = tf.math.tanh
 
 
 def log2(x, /):

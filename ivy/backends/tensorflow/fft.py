@@ -17,23 +17,6 @@ import tensorflow as tf
 from ivy.backends._fft_args import SWAPPED_NORM, axis_of, check_norm, size_of, sizes_and_axes
 from ivy.backends.tensorflow._helpers import native_dtype, placed, static_rank, tensor
 
-__all__ = [
-    "fft",
-    "ifft",
-    "fftn",
-    "ifftn",
-    "rfft",
-    "irfft",
-    "rfftn",
-    "irfftn",
-    "hfft",
-    "ihfft",
-    "fftfreq",
-    "rfftfreq",
-    "fftshift",
-    "ifftshift",
-]
-
 fftshift = tf.signal.fftshift
 ifftshift = tf.signal.ifftshift
 

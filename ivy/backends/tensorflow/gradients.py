@@ -11,8 +11,6 @@ import tensorflow as tf
 
 from ivy.nest import flatten_nest, map_nest, unflatten_nest
 
-__all__ = ["execute_with_gradients", "execute_with_jacobian", "stop_gradient", "variable"]
-
 _ZERO = tf.UnconnectedGradients.ZERO
 
 

@@ -6,17 +6,6 @@ import tensorflow as tf
 
 from ivy.backends.tensorflow._helpers import native_dtype, tensor
 
-__all__ = [
-    "take",
-    "take_along_axis",
-    "gather_nd",
-    "scatter_nd",
-    "one_hot",
-    "gather_flat",
-    "scatter_flat",
-    "indices_where",
-]
-
 gather_nd = tf.gather_nd
 
 _SCATTERS = {

@@ -22,32 +22,6 @@ from ivy.backends.tensorflow._helpers import (
 )
 from ivy.core.linalg import EighResult, QRResult, SlogdetResult, SVDResult
 
-__all__ = [
-    "cholesky",
-    "cross",
-    "det",
-    "diagonal",
-    "eigh",
-    "eigvalsh",
-    "inv",
-    "matmul",
-    "matrix_norm",
-    "matrix_power",
-    "matrix_rank",
-    "matrix_transpose",
-    "outer",
-    "pinv",
-    "qr",
-    "slogdet",
-    "solve",
-    "svd",
-    "svdvals",
-    "tensordot",
-    "trace",
-    "vecdot",
-    "vector_norm",
-]
-
 matrix_transpose = tf.linalg.matrix_transpose
 
 

@@ -7,8 +7,6 @@ import tensorflow as tf
 
 from ivy.backends.tensorflow._helpers import promote
 
-__all__ = ["einsum"]
-
 
 def einsum(equation, /, *operands):
     return tf.einsum(equation, *promote(*operands))

@@ -14,26 +14,6 @@ from ivy.backends.tensorflow._helpers import (
     tensor,
 )
 
-__all__ = [
-    "reshape",
-    "permute_dims",
-    "transpose",
-    "concat",
-    "stack",
-    "unstack",
-    "split",
-    "squeeze",
-    "expand_dims",
-    "flip",
-    "tile",
-    "repeat",
-    "roll",
-    "swapaxes",
-    "broadcast_to",
-    "broadcast_arrays",
-    "moveaxis",
-]
-
 stack = tf.stack
 squeeze = tf.squeeze
 repeat = tf.repeat

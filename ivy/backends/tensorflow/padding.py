@@ -7,8 +7,6 @@ import tensorflow as tf
 from ivy.backends._pad_args import pad_pairs
 from ivy.backends.tensorflow._helpers import static_rank, tensor
 
-__all__ = ["constant_pad"]
-
 
 def constant_pad(x, /, pad_width, *, value=0):
     x = tensor(x)

@@ -16,8 +16,6 @@ import tensorflow as tf
 from ivy.backends import _nn_args as A
 from ivy.backends.tensorflow.convolutions import flatten_batch, pad_spatial
 
-__all__ = ["max_pool1d", "max_pool2d", "max_pool3d", "avg_pool1d", "avg_pool2d", "avg_pool3d"]
-
 
 def _native(x, k, s, padding, average):
     op = tf.nn.avg_pool if average else tf.nn.max_pool

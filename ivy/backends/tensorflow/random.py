@@ -11,8 +11,6 @@ import tensorflow as tf
 from ivy.backends._sample_args import categorical_args
 from ivy.backends.tensorflow._helpers import native_dtype, placed, tensor, tensor_of
 
-__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "random_categorical"]
-
 _generator: list[tf.random.Generator] = []  # created on first use
 
 

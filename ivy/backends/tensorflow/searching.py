@@ -6,15 +6,6 @@ import tensorflow as tf
 
 from ivy.backends.tensorflow._helpers import FAST_TYPES, REFUSED, fast, promote, static_rank, tensor
 
-__all__ = [
-    "argmax",
-    "argmin",
-    "where",
-    "count_nonzero",
-    "nonzero",
-    "searchsorted",
-]
-
 
 def _arg_reduce(native, x, axis, keepdims, name):
     x = tensor(x)

@@ -13,8 +13,6 @@ from ivy.backends.tensorflow._helpers import tensor
 from ivy.backends.tensorflow.sorting import argsort
 from ivy.core._results import UniqueAllResult, UniqueCountsResult, UniqueInverseResult
 
-__all__ = ["unique_all", "unique_counts", "unique_inverse", "unique_values"]
-
 
 def _groups(x):
     """``(flat, order, ordered, starts, group)``: the flattened ``x``, its stable sorting order,

@@ -14,8 +14,6 @@ from ivy.backends._sample_args import top_k_axis
 from ivy.backends.tensorflow._helpers import normalize_axis, static_rank, tensor
 from ivy.core._results import TopKResult
 
-__all__ = ["argsort", "sort", "top_k"]
-
 _BITS = {tf.float16: tf.int16, tf.bfloat16: tf.int16, tf.float32: tf.int32, tf.float64: tf.int64}
 
 

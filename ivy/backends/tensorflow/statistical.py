@@ -12,19 +12,6 @@ from ivy.backends.tensorflow._helpers import (
     tensor,
 )
 
-__all__ = [
-    "sum",
-    "prod",
-    "mean",
-    "min",
-    "max",
-    "var",
-    "std",
-    "cumulative_sum",
-    "cumulative_prod",
-    "logsumexp",
-]
-
 min = tf.math.reduce_min
 max = tf.math.reduce_max
 

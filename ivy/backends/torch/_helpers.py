@@ -98,3 +98,14 @@ def as_inexact(x):
     if not isinstance(x, torch.Tensor):
         x = torch.as_tensor(x)
     return x if x.is_floating_point() or x.is_complex() else x.to(torch.float32)
+
+
+def _as_is(native, name: str):
+    return native
+
+
+# ivy's rule for the functions of real numbers that the core declares (@dispatch(reals=True)),
+# applied by the assembly: torch computes integer inputs of its unary and binary functions of
+# real numbers in its default float dtype, float32, by itself; the shims of the others
+# (reductions, activations) convert them.
+REALS = {"unary": _as_is, "binary": _as_is, "options": _as_is}

@@ -7,8 +7,6 @@ import torch.nn.functional as F
 
 from ivy.backends.torch._helpers import as_inexact
 
-__all__ = ["relu", "gelu", "sigmoid", "softmax", "log_softmax"]
-
 relu = torch.relu
 sigmoid = torch.sigmoid
 

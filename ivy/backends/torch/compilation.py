@@ -11,9 +11,11 @@ generator on every call, so draws differ from call to call and ``ivy.seed`` (``t
 Gradients: by default dynamo does not trace ``torch.autograd.grad`` (what
 ``ivy.execute_with_gradients`` uses); it splits the graph there, once per differentiated leaf.
 The compiled function therefore runs with dynamo's ``trace_autograd_ops`` switched on for the
-duration of each call (and restored after it, so other ``torch.compile`` users in the process
-are unaffected): the forward pass, the gradients and the optimizer update of a training step
-become one graph, about 25% faster than the split one.
+duration of each call: the forward pass, the gradients and the optimizer update of a training
+step become one graph, about 25% faster than the split one. The flag is global, so it is saved
+and restored under a lock: the first of the compiled calls running at once (in any thread)
+saves it and switches it on, the last one to finish restores it, and other ``torch.compile``
+users in the process find it as they left it once no ivy-compiled call runs.
 
 Fallback: where ``torch.compile`` cannot run (dynamo unsupported on this Python or platform, or
 the inductor backend fails to build, e.g. without a C++ compiler), the function runs eagerly
@@ -23,11 +25,13 @@ instead, with one warning; its results are the same, only slower.
 from __future__ import annotations
 
 import functools
+import threading
 import warnings
 
 import torch
 
-__all__ = ["compile_native"]
+_flag_lock = threading.Lock()
+_flag_state = {"calls": 0, "saved": None}  # ivy-compiled calls running now, the user's value
 
 
 def _warn_fallback(reason: str) -> None:
@@ -49,8 +53,11 @@ def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
     @functools.wraps(fn)
     def compiled(*args, **kwargs):
         # Read when dynamo traces, which happens inside the call (first call, recompiles).
-        traced_autograd = config.trace_autograd_ops
-        config.trace_autograd_ops = True
+        with _flag_lock:
+            if _flag_state["calls"] == 0:
+                _flag_state["saved"] = config.trace_autograd_ops
+                config.trace_autograd_ops = True
+            _flag_state["calls"] += 1
         try:
             return current[0](*args, **kwargs)
         except torch._dynamo.exc.BackendCompilerFailed as error:
@@ -60,7 +67,10 @@ def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
             current[0] = fn
             return fn(*args, **kwargs)
         finally:
-            config.trace_autograd_ops = traced_autograd
+            with _flag_lock:
+                _flag_state["calls"] -= 1
+                if _flag_state["calls"] == 0:
+                    config.trace_autograd_ops = _flag_state["saved"]
 
     compiled.__wrapped__ = fn
     return compiled

@@ -19,8 +19,6 @@ from ivy.core.control_flow import (
     python_while_loop,
 )
 
-__all__ = ["scan", "fori_loop", "while_loop", "cond"]
-
 
 def _unstack(a):
     return torch.unbind(a, 0)

@@ -13,25 +13,6 @@ from ivy.backends.torch._helpers import (
     native_dtype,
 )
 
-__all__ = [
-    "asarray",
-    "zeros",
-    "ones",
-    "empty",
-    "full",
-    "arange",
-    "linspace",
-    "eye",
-    "zeros_like",
-    "ones_like",
-    "empty_like",
-    "full_like",
-    "from_dlpack",
-    "meshgrid",
-    "tril",
-    "triu",
-]
-
 # torch's default dtypes can be changed by the user; ivy's cannot.
 _DOWNCAST = {torch.float64: torch.float32, torch.complex128: torch.complex64}
 

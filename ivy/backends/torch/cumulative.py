@@ -10,8 +10,6 @@ import torch
 
 from ivy.backends.torch._helpers import native_dtype
 
-__all__ = ["cumsum", "cumprod"]
-
 _UNSIGNED = (torch.uint8, torch.uint16, torch.uint32, torch.uint64)
 
 

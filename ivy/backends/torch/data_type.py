@@ -10,8 +10,6 @@ import torch
 from ivy.backends.torch._helpers import NATIVE_DTYPES, dtype_name, native_device, native_dtype
 from ivy.core import _dtype_rules as rules
 
-__all__ = ["astype", "can_cast", "finfo", "iinfo", "isdtype", "result_type"]
-
 _SCALARS = (bool, int, float, complex)
 
 

@@ -12,23 +12,6 @@ import torch
 from ivy.backends._fft_args import sizes_and_axes
 from ivy.backends.torch._helpers import as_inexact, native_device, native_dtype
 
-__all__ = [
-    "fft",
-    "ifft",
-    "fftn",
-    "ifftn",
-    "rfft",
-    "irfft",
-    "rfftn",
-    "irfftn",
-    "hfft",
-    "ihfft",
-    "fftfreq",
-    "rfftfreq",
-    "fftshift",
-    "ifftshift",
-]
-
 
 def fft(x, /, *, n=None, axis=-1, norm="backward"):
     return torch.fft.fft(as_inexact(x), n=n, dim=axis, norm=norm)

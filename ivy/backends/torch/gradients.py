@@ -13,8 +13,6 @@ import torch
 
 from ivy.nest import flatten_nest, map_nest, unflatten_nest
 
-__all__ = ["execute_with_gradients", "execute_with_jacobian", "stop_gradient", "variable"]
-
 
 def _input(x, retain_grads):
     """The tensor to differentiate with respect to, in place of the leaf ``x``."""

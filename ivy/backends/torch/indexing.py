@@ -8,17 +8,6 @@ import torch
 
 from ivy.backends.torch._helpers import native_dtype
 
-__all__ = [
-    "take",
-    "take_along_axis",
-    "gather_nd",
-    "scatter_nd",
-    "one_hot",
-    "gather_flat",
-    "scatter_flat",
-    "indices_where",
-]
-
 indices_where = torch.argwhere
 
 _REDUCE = {"min": "amin", "max": "amax"}

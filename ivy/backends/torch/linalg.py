@@ -12,32 +12,6 @@ import torch
 
 from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
 
-__all__ = [
-    "cholesky",
-    "cross",
-    "det",
-    "diagonal",
-    "eigh",
-    "eigvalsh",
-    "inv",
-    "matmul",
-    "matrix_norm",
-    "matrix_power",
-    "matrix_rank",
-    "matrix_transpose",
-    "outer",
-    "pinv",
-    "qr",
-    "slogdet",
-    "solve",
-    "svd",
-    "svdvals",
-    "tensordot",
-    "trace",
-    "vecdot",
-    "vector_norm",
-]
-
 matmul = torch.matmul
 diagonal = torch.linalg.diagonal  # (x, *, offset=0) over the last two axes
 outer = torch.outer  # promotes mixed dtypes itself

@@ -7,8 +7,6 @@ from functools import reduce
 
 import torch
 
-__all__ = ["einsum"]
-
 
 def einsum(equation, /, *operands):
     dtypes = {o.dtype for o in operands}

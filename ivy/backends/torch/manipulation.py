@@ -6,26 +6,6 @@ import torch
 
 from ivy.backends.torch.creation import asarray
 
-__all__ = [
-    "reshape",
-    "permute_dims",
-    "transpose",
-    "concat",
-    "stack",
-    "unstack",
-    "split",
-    "squeeze",
-    "expand_dims",
-    "flip",
-    "tile",
-    "repeat",
-    "roll",
-    "swapaxes",
-    "broadcast_to",
-    "broadcast_arrays",
-    "moveaxis",
-]
-
 # torch accepts ``axis`` for ``dim``: stack(arrays, axis=1), unbind(x, axis=1) (a tuple),
 # repeat_interleave(x, 2, axis=None) (flattens first, as numpy's repeat).
 permute_dims = torch.permute

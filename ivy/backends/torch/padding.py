@@ -6,8 +6,6 @@ import torch
 
 from ivy.backends._pad_args import pad_pairs
 
-__all__ = ["constant_pad"]
-
 
 def constant_pad(x, /, pad_width, *, value=0):
     pairs = pad_pairs(pad_width, x.ndim)

@@ -15,8 +15,6 @@ import torch.nn.functional as F
 from ivy.backends import _nn_args as A
 from ivy.backends.torch.convolutions import channels_first, channels_last, tensors, torch_pads
 
-__all__ = ["max_pool1d", "max_pool2d", "max_pool3d", "avg_pool1d", "avg_pool2d", "avg_pool3d"]
-
 _MAX = {1: F.max_pool1d, 2: F.max_pool2d, 3: F.max_pool3d}
 _AVG = {1: F.avg_pool1d, 2: F.avg_pool2d, 3: F.avg_pool3d}
 

@@ -8,8 +8,6 @@ import torch
 from ivy.backends._sample_args import categorical_args
 from ivy.backends.torch._helpers import device_of, native_device, native_dtype
 
-__all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "random_categorical"]
-
 
 def seed(seed_value=0):
     torch.manual_seed(seed_value)

@@ -7,15 +7,6 @@ import torch
 
 from ivy.backends.torch._helpers import reduction_args
 
-__all__ = [
-    "argmax",
-    "argmin",
-    "where",
-    "count_nonzero",
-    "nonzero",
-    "searchsorted",
-]
-
 argmax = torch.argmax
 argmin = torch.argmin
 where = torch.where

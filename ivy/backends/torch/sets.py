@@ -8,8 +8,6 @@ import torch
 
 from ivy.core._results import UniqueAllResult, UniqueCountsResult, UniqueInverseResult
 
-__all__ = ["unique_all", "unique_counts", "unique_inverse", "unique_values"]
-
 
 def unique_all(x, /):
     values, inverse, counts = torch.unique(x, return_inverse=True, return_counts=True)

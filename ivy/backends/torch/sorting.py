@@ -8,8 +8,6 @@ import torch
 from ivy.backends._sample_args import top_k_axis
 from ivy.core._results import TopKResult
 
-__all__ = ["argsort", "sort", "top_k"]
-
 
 def argsort(x, /, *, axis=-1, descending=False, stable=True):
     return torch.argsort(x, dim=axis, descending=descending, stable=stable)

@@ -6,19 +6,6 @@ import torch
 
 from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
 
-__all__ = [
-    "sum",
-    "prod",
-    "mean",
-    "min",
-    "max",
-    "var",
-    "std",
-    "cumulative_sum",
-    "cumulative_prod",
-    "logsumexp",
-]
-
 
 def sum(x, /, *, axis=None, dtype=None, keepdims=False):
     x, dim, keepdim = reduction_args(x, axis, keepdims)

@@ -1,12 +1,11 @@
-"""torch backend: truth tests and differences."""
+"""torch backend: utilities (truth tests, differences, conversion to numpy and lists, shape,
+dtype, device)."""
 
 from __future__ import annotations
 
 import torch
 
-from ivy.backends.torch._helpers import reduction_args
-
-__all__ = ["all", "any", "diff"]
+from ivy.backends.torch._helpers import device_name, dtype_name, reduction_args
 
 
 def all(x, /, *, axis=None, keepdims=False):  # noqa: A001 - the Array API name
@@ -34,3 +33,22 @@ def _edge(value, x, axis):
         shape[axis] = 1
         value = value.expand(shape)
     return value
+
+
+to_list = torch.Tensor.tolist
+
+
+def to_numpy(x, /):
+    return x.numpy(force=True)  # detached, on the CPU, conjugation resolved
+
+
+def shape(x, /):
+    return tuple(x.shape)
+
+
+def dtype(x, /, *, as_str=False):
+    return dtype_name(x.dtype) if as_str else x.dtype
+
+
+def dev(x, /):
+    return device_name(x.device)

@@ -1,0 +1,68 @@
+"""Assemble the namespace of a library registered with :func:`ivy.register_framework`: the shared
+layer bound to its Array API namespace, and the host bridge for what the standard lacks."""
+
+from __future__ import annotations
+
+import importlib
+import sys
+import types
+from typing import Any
+
+from ivy.backends._assemble import assemble
+from ivy.backends.array_api._helpers import helpers_for, host_bridge
+
+# Functions that take the user's callables or change global state cannot run through numpy:
+# the shared layer has them all (control_flow, gradients, compilation); never bridge these.
+_NEVER_BRIDGED = frozenset(
+    {
+        "scan",
+        "fori_loop",
+        "while_loop",
+        "cond",
+        "execute_with_gradients",
+        "execute_with_jacobian",
+        "compile_native",
+    }
+)
+
+
+def assemble_registered(name: str, spec: Any) -> types.ModuleType:
+    """Build, register and return ``ivy.backends.<name>`` for the registered library ``spec``."""
+    xp = spec.namespace
+    if isinstance(xp, str):
+        xp = importlib.import_module(xp)
+    module = types.ModuleType(
+        spec.module,
+        f"ivy's {name} backend: ivy's shared layer bound to the Array API namespace "
+        f"{xp.__name__} (registered with ivy.register_framework).",
+    )
+    sys.modules[spec.module] = module
+    helpers = helpers_for(xp, name)
+    array_type = type(xp.asarray(0))
+
+    def is_array(value: Any) -> bool:
+        return isinstance(value, array_type)
+
+    def fallback(fn_name: str):
+        if fn_name in _NEVER_BRIDGED:
+            return None
+        return host_bridge(fn_name, xp, is_array, helpers["dtype_name"])
+
+    module.host_bridged = []  # the names that run through numpy, for the docs and the curious
+
+    def recorded(fn_name: str):
+        fn = fallback(fn_name)
+        if fn is not None:
+            module.host_bridged.append(fn_name)
+        return fn
+
+    return assemble(
+        module,
+        backend=name,
+        native_dtypes=helpers["native_dtypes"],
+        xp=xp,
+        bind=helpers,
+        reals=helpers["reals"],
+        capabilities=spec.capabilities,
+        fallback=recorded,
+    )
