@@ -129,7 +129,7 @@ def test_the_rule_is_declared_on_the_core_stubs_and_tested_here():
     """The functions of real numbers are declared once, on the core's stubs
     (``@dispatch(reals=True)``, read with ``ivy.function_info``); every one is tested above."""
     declared = {i.name: i.reals for i in ivy.list_functions() if i.reals}
-    tested = {u[0] for u in UNARY} | {b[0] for b in BINARY}
+    tested = {u[0] for u in UNARY} | {b[0] for b in BINARY} | {"nextafter"}  # (its own test)
     assert set(declared) <= tested, sorted(set(declared) - tested)
     for name, *_ in BINARY:
         assert declared[name] == "binary", name
@@ -137,3 +137,10 @@ def test_the_rule_is_declared_on_the_core_stubs_and_tested_here():
         assert declared[name] == "unary", name
     for name in ("mean", "var", "std", "softmax"):
         assert declared[name] == "options", name
+
+
+def test_nextafter_of_integers_steps_in_float32(backend):
+    a, b = np.array([-3, 0, 7], np.int8), np.array([2, -1, 0], np.int8)
+    expected = np.nextafter(a.astype(np.float32), b.astype(np.float32))
+    for fn in api(backend, "nextafter"):
+        check(fn(_native(a, backend), _native(b, backend)), expected, backend, rtol=0, atol=0)

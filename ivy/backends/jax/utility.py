@@ -9,7 +9,6 @@ import numpy as np
 
 from ivy.backends.jax._helpers import default_device, device_name
 
-
 shape = jnp.shape
 
 

@@ -29,7 +29,6 @@ from ivy.backends.tensorflow._helpers import (
     tensor_of,
 )
 
-
 abs = tf.math.abs
 acos = tf.math.acos
 acosh = tf.math.acosh
