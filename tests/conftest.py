@@ -7,26 +7,87 @@ over subsets of them that have a property a test needs:
   ``torch.compile`` takes about 17 s to start, so a few tests compile with it on purpose;
 - ``mutable_backend``: arrays written in place (numpy, torch), where shared memory shows.
 
+The backends and what each can do are listed once, in :data:`BACKENDS`; tests ask for a
+capability (``capable(backend, "autodiff")``, the subset fixtures), never for a backend's name.
+
 Narrow it with ``--backends numpy,torch`` or the environment variable ``IVY_BACKENDS``.
 jax runs with 64-bit types enabled so that float64 works on every backend.
+
+Opt-in backends. ``array_api_strict`` (a library registered with ``ivy.register_framework``, the
+reference implementation of the Array API standard) joins the matrix only in the test
+directories that opt in: the core's (``tests/ivy``) and ``ivy_mechanics``' (``tests/ivy_mechanics``).
+A package opts in with one line in its directory's ``conftest.py``::
+
+    IVY_OPT_IN_BACKENDS = ("array_api_strict",)
+
+(a test module may set the same name for itself). Everywhere else ``backend`` stays the four
+frameworks, so an applied library's tests do not meet a fifth backend before they opt in.
 """
 
 from __future__ import annotations
 
 import importlib.util
 import os
+import sys
 
 import pytest
 
 import ivy
 
-ALL_BACKENDS = ("numpy", "torch", "jax", "tensorflow")
-DIFFERENTIABLE = ("torch", "jax", "tensorflow")
-SUBSETS = {
-    "diff_backend": DIFFERENTIABLE,
-    "graph_backend": ("jax", "tensorflow"),
-    "mutable_backend": ("numpy", "torch"),
+# One table: every backend the tests know, and what it can do (ivy's own Capabilities, plus
+# what the tests need to know of it). ``opt_in``: only where a test directory asks for it.
+BACKENDS = {
+    "numpy": dict(
+        autodiff=False,
+        compilation=False,
+        fast_graph=False,
+        mutable=True,
+        float16=True,
+        opt_in=False,
+    ),
+    "torch": dict(
+        autodiff=True, compilation=True, fast_graph=False, mutable=True, float16=True, opt_in=False
+    ),
+    "jax": dict(
+        autodiff=True, compilation=True, fast_graph=True, mutable=False, float16=True, opt_in=False
+    ),
+    "tensorflow": dict(
+        autodiff=True, compilation=True, fast_graph=True, mutable=False, float16=True, opt_in=False
+    ),
+    # the standard has no float16: array_api_strict refuses it
+    "array_api_strict": dict(
+        autodiff=False,
+        compilation=False,
+        fast_graph=False,
+        mutable=False,
+        float16=False,
+        opt_in=True,
+    ),
 }
+ALL_BACKENDS = tuple(n for n, c in BACKENDS.items() if not c["opt_in"])  # the four frameworks
+OPT_IN_BACKENDS = tuple(n for n, c in BACKENDS.items() if c["opt_in"])
+DIFFERENTIABLE = tuple(n for n, c in BACKENDS.items() if c["autodiff"])
+SUBSETS = {
+    "diff_backend": lambda c: c["autodiff"],
+    "graph_backend": lambda c: c["fast_graph"],
+    "mutable_backend": lambda c: c["mutable"],
+}
+
+
+def capable(backend: str, capability: str) -> bool:
+    """Whether ``backend`` has ``capability`` (a key of :data:`BACKENDS`' rows)."""
+    return BACKENDS[backend][capability]
+
+
+def require(backend: str, capability: str) -> None:
+    """Skip the running test where ``backend`` lacks ``capability`` (a property of the library,
+    such as float16 on array_api_strict, never a missing ivy feature)."""
+    if not capable(backend, capability):
+        pytest.skip(f"{backend} has no {capability}")
+
+
+if importlib.util.find_spec("array_api_strict") is not None:
+    ivy.register_framework("array_api_strict", "array_api_strict", mutable_arrays=True)
 
 
 def pytest_addoption(parser):
@@ -39,10 +100,10 @@ def pytest_addoption(parser):
 
 def _selected(config) -> tuple[str, ...]:
     chosen = config.getoption("--backends") or os.environ.get("IVY_BACKENDS")
-    names = ALL_BACKENDS if not chosen else tuple(n.strip() for n in chosen.split(","))
-    unknown = set(names) - set(ALL_BACKENDS)
+    names = tuple(BACKENDS) if not chosen else tuple(n.strip() for n in chosen.split(","))
+    unknown = set(names) - set(BACKENDS)
     if unknown:
-        raise pytest.UsageError(f"unknown backends {sorted(unknown)}; choose from {ALL_BACKENDS}")
+        raise pytest.UsageError(f"unknown backends {sorted(unknown)}; choose from {BACKENDS}")
     return tuple(n for n in names if importlib.util.find_spec(n) is not None)
 
 
@@ -54,13 +115,31 @@ def pytest_configure(config):
         jax.config.update("jax_enable_x64", True)
 
 
+def _opted_in(metafunc) -> tuple[str, ...]:
+    """The opt-in backends that the test's module or one of its directories' conftest asks for."""
+    module = metafunc.module
+    found = getattr(module, "IVY_OPT_IN_BACKENDS", None)
+    package = module.__name__.rpartition(".")[0]
+    while found is None and package:
+        conftest = sys.modules.get(f"{package}.conftest")
+        found = getattr(conftest, "IVY_OPT_IN_BACKENDS", None)
+        package = package.rpartition(".")[0]
+    return tuple(found or ())
+
+
+def backends_for(metafunc) -> list[str]:
+    """The backends a test runs on: the selected ones, opt-in ones only where opted in."""
+    opted = _opted_in(metafunc)
+    return [b for b in metafunc.config.ivy_backends if not BACKENDS[b]["opt_in"] or b in opted]
+
+
 def pytest_generate_tests(metafunc):
-    backends = metafunc.config.ivy_backends
+    backends = backends_for(metafunc)
     if "backend" in metafunc.fixturenames:
         metafunc.parametrize("backend", backends)
-    for fixture, subset in SUBSETS.items():
+    for fixture, has in SUBSETS.items():
         if fixture in metafunc.fixturenames:
-            metafunc.parametrize(fixture, [b for b in backends if b in subset])
+            metafunc.parametrize(fixture, [b for b in backends if has(BACKENDS[b])])
 
 
 @pytest.fixture

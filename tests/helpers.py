@@ -35,27 +35,59 @@ _TYPE_ROOTS = {
     "torch": ("torch",),
     "jax": ("jax", "jaxlib"),
     "tensorflow": ("tensorflow",),
+    "array_api_strict": ("array_api_strict",),
+}
+
+
+def _torch_native(a):
+    import torch
+
+    return torch.from_numpy(a)
+
+
+def _jax_native(a):
+    import jax.numpy as jnp
+
+    return jnp.asarray(a)
+
+
+def _tf_native(a):
+    import tensorflow as tf
+
+    return tf.convert_to_tensor(a)
+
+
+def _strict_native(a):
+    import array_api_strict
+
+    return array_api_strict.asarray(a)
+
+
+# backend -> (numpy array -> native array of the same dtype), with each framework's own API
+_NATIVE = {
+    "numpy": lambda a: a,
+    "torch": _torch_native,
+    "jax": _jax_native,
+    "tensorflow": _tf_native,
+    "array_api_strict": _strict_native,
+}
+# root module of an array's type -> (native array -> numpy array), likewise
+_TO_NUMPY = {
+    "torch": lambda x: x.detach().cpu().resolve_conj().numpy(),
+    "tensorflow": lambda x: x.numpy(),
+    "jax": np.asarray,
+    "jaxlib": np.asarray,
+    "array_api_strict": lambda x: np.asarray(x),
 }
 
 
 def native(a, backend: str):
     """A numpy array (or nested list / scalar) as a native array of ``backend``, same dtype."""
-    a = np.array(a)
-    if backend == "numpy":
-        return a
-    if backend == "torch":
-        import torch
-
-        return torch.from_numpy(a)
-    if backend == "jax":
-        import jax.numpy as jnp
-
-        return jnp.asarray(a)
-    if backend == "tensorflow":
-        import tensorflow as tf
-
-        return tf.convert_to_tensor(a)
-    raise ValueError(f"unknown backend {backend!r}")
+    try:
+        make = _NATIVE[backend]
+    except KeyError:
+        raise ValueError(f"unknown backend {backend!r}") from None
+    return make(np.array(a))
 
 
 def is_native(x, backend: str) -> bool:
@@ -69,20 +101,18 @@ def numpy_of(x) -> np.ndarray:
     if isinstance(x, (np.ndarray, np.generic)):
         return np.asarray(x)
     root = type(x).__module__.partition(".")[0]
-    if root == "torch":
-        return x.detach().cpu().resolve_conj().numpy()
-    if root == "tensorflow":
-        return x.numpy()
-    if root in ("jax", "jaxlib"):
-        return np.asarray(x)
-    raise TypeError(f"not an array of a known framework: {type(x)!r}")
+    try:
+        return _TO_NUMPY[root](x)
+    except KeyError:
+        raise TypeError(f"not an array of a known framework: {type(x)!r}") from None
 
 
 def dtype_name(x) -> str:
     """Name ('float32', 'int64', 'bool', ...) of the dtype of a native array of any backend."""
     name = str(x.dtype)
-    if name.startswith("torch."):
-        name = name[len("torch.") :]
+    for prefix in ("torch.", "array_api_strict."):
+        if name.startswith(prefix):
+            name = name[len(prefix) :]
     if name.startswith("<dtype: "):  # tf.DType repr
         name = x.dtype.name
     return np.dtype(name).name if name != "bool" else "bool"

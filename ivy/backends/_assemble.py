@@ -94,6 +94,8 @@ def assemble(
         namespace if isinstance(namespace, types.ModuleType) else sys.modules[namespace["__name__"]]
     )
     ns = module.__dict__
+    ns["backend"] = backend
+    bind = {"backend_name": backend, "backend_ns": module, **(bind or {})}
     shared_bound: dict[str, dict[str, Any]] = {}
     exported: set[str] = set()
     missing: list[str] = []

@@ -12,7 +12,7 @@ from ivy.core._dispatch import dispatch
 from ivy.core._results import UniqueAllResult, UniqueCountsResult, UniqueInverseResult
 from ivy.typing import Array, Framework
 
-__all__ = ["unique_all", "unique_counts", "unique_inverse", "unique_values"]
+__all__ = ["isin", "unique_all", "unique_counts", "unique_inverse", "unique_values"]
 
 
 @dispatch
@@ -39,3 +39,12 @@ def unique_inverse(x: Array, /, *, f: Framework = None) -> UniqueInverseResult:
 @dispatch
 def unique_values(x: Array, /, *, f: Framework = None) -> Array:
     """The sorted unique values of ``x`` (flattened)."""
+
+
+@dispatch("x1", "x2")
+def isin(x1: Array, x2: Array, /, *, invert: bool = False, f: Framework = None) -> Array:
+    """Whether each element of ``x1`` is among the elements of ``x2`` (Array API 2025.12): a bool
+    array shaped like ``x1``; with ``invert=True``, whether it is not. NaN is in no array.
+
+    Example: ``ivy.isin(np.array([1, 2, 3]), np.array([3, 1]))`` -> ``[True, False, True]``.
+    """

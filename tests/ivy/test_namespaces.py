@@ -10,6 +10,7 @@ import pytest
 import ivy
 
 NATIVE_MODULES = {
+    "array_api_strict": "array_api_strict",
     "numpy": "numpy",
     "torch": "torch",
     "jax": "jax.numpy",

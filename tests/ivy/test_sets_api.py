@@ -99,3 +99,15 @@ def test_unique_inside_tf_function():
     check(out.indices, np.array([1, 0, 4]), "tensorflow")
     check(out.inverse_indices, np.array([1, 0, 1, 0, 2]), "tensorflow")
     check(out.counts, np.array([2, 2, 1]), "tensorflow")
+
+
+@pytest.mark.parametrize("invert", [False, True])
+@pytest.mark.parametrize("dtype", ["int64", "float32"])
+def test_isin(backend, invert, dtype):
+    x1 = np.array([[1, 2, 3], [4, 5, 1]], dtype)
+    x2 = np.array([3, 1, 7], dtype)
+    expected = np.isin(x1, x2, invert=invert)
+    for fn in api(backend, "isin"):
+        check(fn(native(x1, backend), native(x2, backend), invert=invert), expected, backend)
+    nan = np.array([np.nan, 1.0], np.float32)  # NaN is in no array, itself included
+    check(ivy.isin(native(nan, backend), native(nan, backend)), [False, True], backend)

@@ -134,7 +134,7 @@ def host_bridge(name: str, xp: Any, is_array: Callable[[Any], bool], dtype_name)
 
     def back(v):
         if isinstance(v, (np.ndarray, np.generic)):
-            return xp.asarray(np.ascontiguousarray(v))
+            return xp.asarray(np.asarray(v))
         if isinstance(v, tuple) and hasattr(v, "_fields"):  # a namedtuple (e.g. SVDResult)
             return type(v)(*(back(i) for i in v))
         if isinstance(v, (list, tuple)):

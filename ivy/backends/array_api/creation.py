@@ -3,6 +3,7 @@ Python values keep ivy's default dtypes (bool, int64, float32, complex64)."""
 
 from __future__ import annotations
 
+from ivy.backends._dlpack import exportable
 from ivy.backends.array_api._unbound import native_device, native_dtype, xp
 
 
@@ -99,6 +100,10 @@ def triu(x, /, *, k=0):
 
 
 def from_dlpack(x, /, *, device=None, copy=None):
+    x, copy_after = exportable(x)
+    if copy_after:
+        out = xp.from_dlpack(x, device=native_device(device))
+        return xp.asarray(out, copy=True) if copy else out
     return xp.from_dlpack(x, device=native_device(device), copy=copy)
 
 

@@ -11,25 +11,48 @@ from __future__ import annotations
 from ivy.backends._fft_args import sizes_and_axes
 from ivy.backends.array_api._unbound import as_inexact, native_device, native_dtype, xp
 
-NATIVE = {"fftshift": "fft.fftshift", "ifftshift": "fft.ifftshift"}
+
+def _complex(x):
+    """``x`` as a complex array: the standard's ``fft``, ``ifft``, ``fftn``, ``ifftn`` and ``hfft``
+    take complex input (numpy and jax convert real input themselves, to the same values)."""
+    x = as_inexact(x)
+    if xp.isdtype(x.dtype, "complex floating"):
+        return x
+    return xp.astype(x, xp.complex128 if x.dtype == xp.float64 else xp.complex64)
+
+
+def _shifted_axes(x, axes):
+    if axes is None:
+        return tuple(range(x.ndim))
+    return (axes,) if isinstance(axes, int) else tuple(axes)
+
+
+def fftshift(x, /, *, axes=None):
+    axes = _shifted_axes(x, axes)
+    return xp.roll(x, tuple(x.shape[a] // 2 for a in axes), axis=axes) if axes else x
+
+
+def ifftshift(x, /, *, axes=None):
+    axes = _shifted_axes(x, axes)
+    return xp.roll(x, tuple(-(x.shape[a] // 2) for a in axes), axis=axes) if axes else x
 
 
 def fft(x, /, *, n=None, axis=-1, norm="backward"):
-    return xp.fft.fft(as_inexact(x), n=n, axis=axis, norm=norm)
+    return xp.fft.fft(_complex(x), n=n, axis=axis, norm=norm)
 
 
 def ifft(x, /, *, n=None, axis=-1, norm="backward"):
-    return xp.fft.ifft(as_inexact(x), n=n, axis=axis, norm=norm)
+    return xp.fft.ifft(_complex(x), n=n, axis=axis, norm=norm)
 
 
 def fftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = as_inexact(x)
+    x = _complex(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "fftn")
     return xp.fft.fftn(x, s=s, axes=axes, norm=norm)
 
 
 def ifftn(x, /, *, s=None, axes=None, norm="backward"):
-    x = as_inexact(x)
+    x = _complex(x)
     s, axes = sizes_and_axes(x.shape, s, axes, "ifftn")
     return xp.fft.ifftn(x, s=s, axes=axes, norm=norm)
 
@@ -55,7 +78,7 @@ def irfftn(x, /, *, s=None, axes=None, norm="backward"):
 
 
 def hfft(x, /, *, n=None, axis=-1, norm="backward"):
-    return xp.fft.hfft(as_inexact(x), n=n, axis=axis, norm=norm)
+    return xp.fft.hfft(_complex(x), n=n, axis=axis, norm=norm)
 
 
 def ihfft(x, /, *, n=None, axis=-1, norm="backward"):

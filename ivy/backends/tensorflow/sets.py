@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import tensorflow as tf
 
-from ivy.backends.tensorflow._helpers import tensor
+from ivy.backends.tensorflow._helpers import promote, tensor
 from ivy.backends.tensorflow.sorting import argsort
 from ivy.core._results import UniqueAllResult, UniqueCountsResult, UniqueInverseResult
 
@@ -55,3 +55,9 @@ def unique_all(x, /):
     return UniqueAllResult(
         tf.boolean_mask(ordered, starts), first, tf.reshape(inverse, tf.shape(x)), counts
     )
+
+
+def isin(x1, x2, /, *, invert=False):
+    x1, x2 = promote(x1, x2)
+    found = tf.reduce_any(tf.equal(x1[..., None], tf.reshape(x2, [-1])), axis=-1)
+    return tf.logical_not(found) if invert else found

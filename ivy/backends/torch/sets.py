@@ -31,3 +31,7 @@ def unique_inverse(x, /):
 
 def unique_values(x, /):
     return torch.unique(x)
+
+
+def isin(x1, x2, /, *, invert=False):
+    return torch.isin(x1, x2, invert=invert)

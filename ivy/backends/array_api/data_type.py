@@ -1,0 +1,53 @@
+"""Data types, written once: ``xp.astype``, ``xp.can_cast`` and ``xp.result_type`` with dtype
+names accepted, and ``finfo``, ``iinfo`` and ``isdtype`` by ivy's own rules
+(``ivy/core/_dtype_rules.py``), which return Python numbers and the backend's dtype objects."""
+
+from __future__ import annotations
+
+from ivy.backends.array_api._unbound import (
+    dtype_name,
+    native_device,
+    native_dtype,
+    native_dtypes,
+    xp,
+)
+from ivy.core import _dtype_rules as rules
+
+
+def _native(value):
+    """An array as it is; a dtype (name or object) as the native dtype."""
+    return value if hasattr(value, "shape") else native_dtype(value)
+
+
+def astype(x, dtype, /, *, copy=True, device=None):
+    out = xp.astype(x, native_dtype(dtype), copy=copy)
+    if device is not None:
+        out = xp.asarray(out, device=native_device(device))
+    return out
+
+
+def can_cast(from_, to, /):
+    return xp.can_cast(_native(from_), native_dtype(to))
+
+
+def result_type(*arrays_and_dtypes):
+    return xp.result_type(*(_native(a) for a in arrays_and_dtypes))
+
+
+def _name(dtype_or_array) -> str:
+    dt = getattr(dtype_or_array, "dtype", None)
+    if dt is not None and hasattr(dtype_or_array, "shape"):
+        return dtype_name(dt)
+    return dtype_name(native_dtype(dtype_or_array))
+
+
+def finfo(type, /):  # noqa: A002 - the Array API name
+    return rules.finfo(_name(type), native_dtypes.__getitem__)
+
+
+def iinfo(type, /):  # noqa: A002
+    return rules.iinfo(_name(type), native_dtypes.__getitem__)
+
+
+def isdtype(dtype, kind):
+    return rules.isdtype(_name(dtype), kind, _name)
