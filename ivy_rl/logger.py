@@ -173,27 +173,36 @@ def read_log(path: str) -> list[dict[str, Any]]:
 
 
 class _TensorBoard:
-    """Scalars as TensorBoard event files, with the ``tensorboard`` package's writer (no deep
-    learning framework is imported)."""
+    """Scalars as TensorBoard event files, written with the ``tensorboard`` package's record
+    writer and protocol buffers (neither tensorflow nor torch is imported)."""
 
     def __init__(self, folder: str) -> None:
         try:
             from tensorboard.compat.proto.event_pb2 import Event
             from tensorboard.compat.proto.summary_pb2 import Summary
-            from tensorboard.summary.writer.event_file_writer import EventFileWriter
+            from tensorboard.summary.writer.record_writer import RecordWriter
         except ImportError as error:
             raise ImportError(
                 "--tensorboard needs the 'tensorboard' package: pip install 'ivy[rl]'"
             ) from error
+        import socket
+
+        os.makedirs(folder, exist_ok=True)
+        name = f"events.out.tfevents.{int(time.time())}.{socket.gethostname()}.{os.getpid()}"
+        self._file = open(os.path.join(folder, name), "wb")  # noqa: SIM115 - closed in close()
+        self._records = RecordWriter(self._file)
         self._event, self._summary = Event, Summary
-        self._writer = EventFileWriter(folder)
+        self._write(Event(wall_time=time.time(), file_version="brain.Event:2"))
+
+    def _write(self, event) -> None:
+        self._records.write(event.SerializeToString())
+        self._file.flush()
 
     def scalars(self, step: int, values: dict[str, float]) -> None:
         summary = self._summary(
             value=[self._summary.Value(tag=k, simple_value=float(v)) for k, v in values.items()]
         )
-        self._writer.add_event(self._event(wall_time=time.time(), step=step, summary=summary))
-        self._writer.flush()
+        self._write(self._event(wall_time=time.time(), step=step, summary=summary))
 
     def close(self) -> None:
-        self._writer.close()
+        self._file.close()

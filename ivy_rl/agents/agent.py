@@ -239,14 +239,20 @@ class Agent:
         """Numpy arrays ``stored`` as arrays of the framework, dtype of the nest ``like``."""
         xp = self.xp
 
-        def convert(old, new):
+        def rebuild(old, new, path):
+            if isinstance(old, dict):
+                new = new if isinstance(new, dict) else {}
+                return {k: rebuild(o, new.get(k), f"{path}/{k}") for k, o in old.items()}
+            if new is None:
+                raise KeyError(f"the checkpoint has no array {path}")
             if tuple(np.shape(new)) != tuple(xp.shape(old)):
                 raise ValueError(
-                    f"checkpoint array of shape {np.shape(new)} does not fit {tuple(xp.shape(old))}"
+                    f"checkpoint array {path} of shape {np.shape(new)} does not fit "
+                    f"{tuple(xp.shape(old))}"
                 )
             return xp.asarray(new, dtype=xp.dtype(old))
 
-        return ivy.nest.multi_map_nest(convert, like, stored)
+        return rebuild(like, stored, "")
 
     def __repr__(self) -> str:
         where = f", f={self.xp.backend}" if self.xp is not None else ""
