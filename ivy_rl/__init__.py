@@ -21,8 +21,17 @@ Example:
     >>> trainer.run(agent, "CartPole-v1", workers=8, seed=0, f="torch", out="runs/ppo")
 """
 
-from ivy_rl import agents, distributions, environments, models, normalizers, replays, returns, updaters
-from ivy_rl.agents import AGENTS, A2C, PPO, TRPO, Agent, Constant, Uniform
+from ivy_rl import (
+    agents,
+    distributions,
+    environments,
+    models,
+    normalizers,
+    replays,
+    returns,
+    updaters,
+)
+from ivy_rl.agents import A2C, AGENTS, PPO, TRPO, Agent, Constant, Uniform
 from ivy_rl.returns import generalized_advantages, lambda_returns, n_step_returns
 
 __all__ = [

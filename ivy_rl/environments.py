@@ -49,7 +49,9 @@ class TimeFeature(gym.ObservationWrapper):
         super().__init__(env)
         space = env.observation_space
         if not isinstance(space, gym.spaces.Box) or len(space.shape) != 1:
-            raise TypeError(f"TimeFeature needs a Box observation space of one dimension, got {space}")
+            raise TypeError(
+                f"TimeFeature needs a Box observation space of one dimension, got {space}"
+            )
         if max_steps is None:
             spec = env.spec
             max_steps = spec.max_episode_steps if spec is not None else None
@@ -274,7 +276,9 @@ class Workers:
         arrays = {}
         for i, history in enumerate(self.histories):
             shape = (0,) + tuple(self.action_space.shape)
-            arrays[str(i)] = np.stack(history) if history else np.zeros(shape, self.action_space.dtype)
+            arrays[str(i)] = (
+                np.stack(history) if history else np.zeros(shape, self.action_space.dtype)
+            )
         meta = {
             "episode_seeds": [int(s) for s in self.episode_seeds],
             "seed_rng": self.seed_rng.bit_generator.state,

@@ -232,7 +232,9 @@ class GaussianHead(ivy.Module):
         if state_dependent_scale:
             self.scale_layer = ivy.Linear(in_size, action_size, weight_init=init, **self.build_args)
         else:
-            self.add_variable("log_std", ivy.stateful.initializers.constant(log_std_init), (action_size,))
+            self.add_variable(
+                "log_std", ivy.stateful.initializers.constant(log_std_init), (action_size,)
+            )
         self.loc_activation = None if loc_activation is None else getattr(self._f, loc_activation)
         self.log_scale_bounds = (math.log(scale_min), math.log(scale_max))
         self.action_size = action_size

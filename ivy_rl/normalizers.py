@@ -67,7 +67,9 @@ class MeanStd:
         w_old, w_new = self.count / total, self.new_count / total
         self.mean = w_old * self.mean + w_new * self.new_sum / self.new_count
         self.mean_sq = w_old * self.mean_sq + w_new * self.new_sum_sq / self.new_count
-        self.std = np.maximum(np.sqrt(np.maximum(self.mean_sq - np.square(self.mean), 0.0)), self.epsilon)
+        self.std = np.maximum(
+            np.sqrt(np.maximum(self.mean_sq - np.square(self.mean), 0.0)), self.epsilon
+        )
         self.count = total
         self._reset_pending()
 

@@ -70,8 +70,12 @@ def play(
     )
     agent = make(config["agent"], **config.get("agent_kwargs", {}))
     agent.initialize(
-        env.observation_space, env.action_space, seed=config["seed"], f=framework,
-        dtype=config["dtype"], compile=False,
+        env.observation_space,
+        env.action_space,
+        seed=config["seed"],
+        f=framework,
+        dtype=config["dtype"],
+        compile=False,
     )
     agent.load(os.path.join(checkpoint, "agent"))
     frames, results = [], []
@@ -126,8 +130,13 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
     p.add_argument("--fps", type=int, default=30)
     args = p.parse_args(argv)
     return play(
-        args.run, episodes=args.episodes, video=args.video, framework=args.framework,
-        seed=args.seed, render=args.render, fps=args.fps,
+        args.run,
+        episodes=args.episodes,
+        video=args.video,
+        framework=args.framework,
+        seed=args.seed,
+        render=args.render,
+        fps=args.fps,
     )
 
 

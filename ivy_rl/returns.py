@@ -87,7 +87,9 @@ def lambda_returns(
         >>> ivy_rl.lambda_returns(r, nv, resets, terms, discount=0.99, trace_decay=0.95)
     """
     xp = ivy.get_framework(rewards, f=f)
-    _check(rewards, ("next_values", next_values), ("resets", resets), ("terminations", terminations))
+    _check(
+        rewards, ("next_values", next_values), ("resets", resets), ("terminations", terminations)
+    )
     return _lambda_returns(xp, rewards, next_values, resets, terminations, discount, trace_decay)
 
 
@@ -189,5 +191,7 @@ def n_step_returns(
     if int(steps) != steps or steps < 1:
         raise ValueError(f"n_step_returns: steps must be an integer >= 1, got {steps!r}")
     xp = ivy.get_framework(rewards, f=f)
-    _check(rewards, ("next_values", next_values), ("resets", resets), ("terminations", terminations))
+    _check(
+        rewards, ("next_values", next_values), ("resets", resets), ("terminations", terminations)
+    )
     return _n_step(xp, rewards, next_values, resets, terminations, discount, int(steps))

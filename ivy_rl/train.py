@@ -46,13 +46,19 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     p.add_argument("--test-episodes", type=int, default=5)
     p.add_argument("--workers", type=int, default=8, help="parallel environments")
     p.add_argument(
-        "--vectorization", default="sync", choices=("sync", "async", "ray"),
+        "--vectorization",
+        default="sync",
+        choices=("sync", "async", "ray"),
         help="environment workers: one process, subprocesses, or Ray actors",
     )
-    p.add_argument("--ray-groups", type=int, default=None, help="Ray actors (with --vectorization ray)")
+    p.add_argument(
+        "--ray-groups", type=int, default=None, help="Ray actors (with --vectorization ray)"
+    )
     p.add_argument("--time-feature", action="store_true", help="append the remaining time")
     p.add_argument("--seed", type=int, default=0)
-    p.add_argument("--out", default=None, help="the run's folder (default: runs/<agent>-<env>-<seed>)")
+    p.add_argument(
+        "--out", default=None, help="the run's folder (default: runs/<agent>-<env>-<seed>)"
+    )
     p.add_argument("--eager", action="store_true", help="do not compile the agent's functions")
     p.add_argument("--tensorboard", action="store_true", help="also log to TensorBoard")
     p.add_argument("--resume", action="store_true", help="continue from the last checkpoint")
@@ -80,14 +86,24 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
 
     agent = make(args.agent, **args.agent_kwargs)  # unknown agents fail before any work
     check_environment_id(args.environment)
-    out = args.out or os.path.join("runs", f"{args.agent}-{args.environment}-{args.seed}".replace("/", "_"))
+    out = args.out or os.path.join(
+        "runs", f"{args.agent}-{args.environment}-{args.seed}".replace("/", "_")
+    )
     config = {k: v for k, v in vars(args).items() if k not in ("resume", "quiet")}
     config["out"] = out
     if args.resume:
         with open(os.path.join(out, "config.json")) as fh:
             saved = json.load(fh)
-        for key in ("agent", "agent_kwargs", "environment", "env_kwargs", "workers", "seed",
-                    "time_feature", "dtype"):
+        for key in (
+            "agent",
+            "agent_kwargs",
+            "environment",
+            "env_kwargs",
+            "workers",
+            "seed",
+            "time_feature",
+            "dtype",
+        ):
             if saved.get(key) != config.get(key):
                 raise ValueError(
                     f"--resume: {key} is {config.get(key)!r} but the run {out!r} used "

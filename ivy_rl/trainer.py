@@ -148,7 +148,9 @@ class Trainer:
         self.scores, self.lengths = np.zeros(num), np.zeros(num, np.int64)
         checkpoint = latest_checkpoint(out) if (resume and out) else None
         if resume and out and checkpoint is None:
-            raise FileNotFoundError(f"cannot resume: no checkpoint in {os.path.join(out, 'checkpoints')}")
+            raise FileNotFoundError(
+                f"cannot resume: no checkpoint in {os.path.join(out, 'checkpoints')}"
+            )
         if checkpoint is not None:
             observations = self._load(checkpoint)
         else:

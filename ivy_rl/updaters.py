@@ -109,11 +109,11 @@ def conjugate_gradient(
     for _ in range(steps):
         z = matvec(p)
         alpha = xp.safe_divide(r_dot, nest_dot(xp, p, z) + eps)
-        x = multi_map_nest(lambda xi, pi: xi + alpha * pi, x, p)
-        r = multi_map_nest(lambda ri, zi: ri - alpha * zi, r, z)
+        x = multi_map_nest(lambda xi, pi, a=alpha: xi + a * pi, x, p)
+        r = multi_map_nest(lambda ri, zi, a=alpha: ri - a * zi, r, z)
         new_r_dot = nest_dot(xp, r, r)
         beta = xp.safe_divide(new_r_dot, r_dot)
-        p = multi_map_nest(lambda ri, pi: ri + beta * pi, r, p)
+        p = multi_map_nest(lambda ri, pi, b=beta: ri + b * pi, r, p)
         r_dot = new_r_dot
     return x
 
@@ -165,11 +165,11 @@ def trust_region_step(
     tries = xp.zeros_like(start_loss) + float(backtrack_steps + 1)
     for i in range(backtrack_steps):
         scale = step_size * backtrack_coefficient**i
-        candidate = multi_map_nest(lambda p, d: p - scale * d, v, direction)
+        candidate = multi_map_nest(lambda p, d, s=scale: p - s * d, v, direction)
         loss, kl = loss_fn(candidate), kl_fn(candidate)
         ok = xp.logical_and(kl <= max_kl, loss <= start_loss)
         take = ok if found is None else xp.logical_and(ok, xp.logical_not(found))
-        chosen = multi_map_nest(lambda c, n: xp.where(take, n, c), chosen, candidate)
+        chosen = multi_map_nest(lambda c, n, t=take: xp.where(t, n, c), chosen, candidate)
         chosen_loss = xp.where(take, loss, chosen_loss)
         chosen_kl = xp.where(take, kl, chosen_kl)
         tries = xp.where(take, xp.zeros_like(tries) + float(i + 1), tries)

@@ -13,7 +13,6 @@ Example:
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -135,7 +134,9 @@ class A2C(Agent):
             batch_iterations=self._passes(),
         )
         self._noise_shape = (
-            (int(self.action_space.n),) if self.action_kind == "Discrete" else self.action_space.shape
+            (int(self.action_space.n),)
+            if self.action_kind == "Discrete"
+            else self.action_space.shape
         )
         self._pending: dict[str, np.ndarray] | None = None
         self.updates = 0
@@ -305,9 +306,14 @@ class A2C(Agent):
         b = self.replay.buffers
         size, workers = b["rewards"].shape
         obs = np.concatenate(
-            [b["observations"].reshape(size * workers, -1), b["next_observations"].reshape(size * workers, -1)]
+            [
+                b["observations"].reshape(size * workers, -1),
+                b["next_observations"].reshape(size * workers, -1),
+            ]
         )
-        values = np.asarray(xp.to_numpy(self._values(self.v["critic"], self.stats, xp.asarray(obs))))
+        values = np.asarray(
+            xp.to_numpy(self._values(self.v["critic"], self.stats, xp.asarray(obs)))
+        )
         values = values.astype(np.float64)
         self.replay.compute_returns(values[: size * workers], values[size * workers :])
         if self.return_normalizer is not None:
@@ -335,10 +341,16 @@ class A2C(Agent):
         batch = self._device_batch("observations", "actions", "advantages", "returns")
         logs = _Logs()
         v, states = self.v, self.optimizer_states
-        v, states, infos = self._train_actor_critic(v, states, self.stats, batch, self._all_indices())
+        v, states, infos = self._train_actor_critic(
+            v, states, self.stats, batch, self._all_indices()
+        )
         logs.add(infos)
         for indices in self.replay.batch_indices(self.rng):
-            idx = self._all_indices() if indices is None else self.xp.asarray(indices.astype(np.int32))
+            idx = (
+                self._all_indices()
+                if indices is None
+                else self.xp.asarray(indices.astype(np.int32))
+            )
             v, states, infos = self._train_critic(v, states, self.stats, batch, idx)
             logs.add(infos)
         self.v, self.optimizer_states = v, states
@@ -360,9 +372,7 @@ class A2C(Agent):
             arrays["observation_normalizer"] = self.observation_normalizer.state_dict()
         if self.return_normalizer is not None:
             arrays["return_normalizer"] = self.return_normalizer.state_dict()
-        arrays["replay"] = {
-            k.replace("/", "."): a for k, a in self.replay.state_dict().items()
-        }
+        arrays["replay"] = {k.replace("/", "."): a for k, a in self.replay.state_dict().items()}
         if self._pending is not None:
             arrays["pending"] = dict(self._pending)
         return arrays

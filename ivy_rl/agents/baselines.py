@@ -67,7 +67,9 @@ class Constant(Agent):
                 low, high = self._action_bounds
                 action = ((low + high) / 2).astype(space.dtype)
         else:
-            action = np.asarray(value, dtype=np.int64 if self.action_kind == "Discrete" else space.dtype)
+            action = np.asarray(
+                value, dtype=np.int64 if self.action_kind == "Discrete" else space.dtype
+            )
             if not space.contains(action):
                 raise ValueError(f"Constant: value {value!r} is not in the action space {space}")
         self._action = action

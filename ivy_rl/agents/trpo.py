@@ -87,10 +87,14 @@ class TRPO(A2C):
         batch = self._device_batch(*keys)
         logs = _Logs()
         v, states = self.v, self.optimizer_states
-        v, states, infos = self._train_actor_critic(v, states, self.stats, batch, self._all_indices())
+        v, states, infos = self._train_actor_critic(
+            v, states, self.stats, batch, self._all_indices()
+        )
         logs.add({k: x for k, x in infos.items() if k.startswith("actor/")})
         for indices in self.replay.batch_indices(self.rng):
-            idx = self._all_indices() if indices is None else self.xp.asarray(indices.astype("int32"))
+            idx = (
+                self._all_indices() if indices is None else self.xp.asarray(indices.astype("int32"))
+            )
             v, states, infos = self._train_critic(v, states, self.stats, batch, idx)
             logs.add(infos)
         self.v, self.optimizer_states = v, states

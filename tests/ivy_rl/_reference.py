@@ -46,10 +46,14 @@ def lambda_return(rewards, next_values, resets, terminations, discount, lam):
             N = end - t
             total = 0.0
             for n in range(1, N):
-                total += (1 - lam) * lam ** (n - 1) * n_step(
-                    rewards, next_values, resets, terminations, discount, n
-                )[t]
-            total += lam ** (N - 1) * n_step(rewards, next_values, resets, terminations, discount, N)[t]
+                total += (
+                    (1 - lam)
+                    * lam ** (n - 1)
+                    * n_step(rewards, next_values, resets, terminations, discount, n)[t]
+                )
+            total += (
+                lam ** (N - 1) * n_step(rewards, next_values, resets, terminations, discount, N)[t]
+            )
             out[t] = total
     return out
 

@@ -83,8 +83,13 @@ def test_same_update_on_torch_jax_and_tensorflow_in_float64(agent_name, space):
     ref_v, ref_logs = results["torch"]
     initial = ivy.nest.flatten_nest(
         ivy_rl.models.actor_critic(
-            gym.spaces.Box(-5, 5, (3,)), SPACES[space], rng=np.random.default_rng(7),
-            actor_sizes=(16,), critic_sizes=(16,), f="numpy", dtype="float64",
+            gym.spaces.Box(-5, 5, (3,)),
+            SPACES[space],
+            rng=np.random.default_rng(7),
+            actor_sizes=(16,),
+            critic_sizes=(16,),
+            f="numpy",
+            dtype="float64",
         ).v
     )[0]
     moved = [np.max(np.abs(a - b)) for a, b in zip(ivy.nest.flatten_nest(ref_v)[0], initial)]

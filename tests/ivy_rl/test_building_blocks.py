@@ -21,7 +21,9 @@ LOGITS = RNG.normal(size=(4, 5))
 
 def test_normal_matches_scipy(backend, xp):
     d = D.Normal(xp, native(LOC, backend), native(SCALE, backend))
-    assert_close(d.log_prob(native(ACTIONS, backend)), scipy.stats.norm.logpdf(ACTIONS, LOC, SCALE).sum(-1))
+    assert_close(
+        d.log_prob(native(ACTIONS, backend)), scipy.stats.norm.logpdf(ACTIONS, LOC, SCALE).sum(-1)
+    )
     assert_close(d.entropy(), scipy.stats.norm.entropy(LOC, SCALE).sum(-1))
     other = D.Normal(xp, native(LOC * 0.5, backend), native(SCALE * 1.5, backend))
     # KL of Gaussians by numerical integration over each dimension
@@ -40,7 +42,7 @@ def test_normal_matches_scipy(backend, xp):
 def test_squashed_normal_log_prob_is_change_of_variables(backend, xp):
     d = D.SquashedNormal(xp, native(LOC, backend), native(SCALE, backend))
     raw = ACTIONS * 3.0  # large values test the stable log(1 - tanh^2)
-    expected = (scipy.stats.norm.logpdf(raw, LOC, SCALE) - np.log1p(-np.tanh(raw) ** 2)).sum(-1)
+    expected = (scipy.stats.norm.logpdf(raw, LOC, SCALE) - np.log1p(-(np.tanh(raw) ** 2))).sum(-1)
     assert_close(d.log_prob_raw(native(raw, backend)), expected, rtol=1e-9, atol=1e-9)
     assert_close(d.raw_to_action(native(raw, backend)), np.tanh(raw))
 
@@ -55,7 +57,9 @@ def test_categorical_matches_numpy(backend, xp):
     p = np.exp(logp)
     assert_close(d.kl(other), (p * (logp - logp[::-1])).sum(-1))
     gumbel = RNG.gumbel(size=(4, 5))
-    assert np.array_equal(ivy.to_numpy(d.sample(native(gumbel, backend))), np.argmax(logp + gumbel, -1))
+    assert np.array_equal(
+        ivy.to_numpy(d.sample(native(gumbel, backend))), np.argmax(logp + gumbel, -1)
+    )
 
 
 def test_gumbel_sampling_follows_the_probabilities():
@@ -94,7 +98,9 @@ def test_segment_stores_returns_and_minibatches():
     assert seg.ready()
     values, next_values = np.zeros((4, 2)), np.ones((4, 2))
     seg.compute_returns(values, next_values)
-    expected = ivy_rl_lambda(np.ones((4, 2)), next_values, seg.buffers["resets"], seg.buffers["terminations"])
+    expected = ivy_rl_lambda(
+        np.ones((4, 2)), next_values, seg.buffers["resets"], seg.buffers["terminations"]
+    )
     np.testing.assert_allclose(seg.buffers["returns"], expected)
     batch = seg.get_full("observations", "advantages")
     assert batch["observations"].shape == (8, 1)
@@ -120,9 +126,14 @@ def ivy_rl_lambda(r, nv, resets, terms):
 )
 def test_actor_critic_models_on_every_backend(backend, xp, space, head):
     obs_space = gym.spaces.Box(-1, 1, (4,))
-    model = models.actor_critic(obs_space, space, rng=np.random.default_rng(0), head=head, f=backend)
+    model = models.actor_critic(
+        obs_space, space, rng=np.random.default_rng(0), head=head, f=backend
+    )
     obs = native(RNG.normal(size=(5, 4)).astype(np.float32), backend)
-    stats = {"mean": native(np.ones(4, np.float32), backend), "std": native(np.full(4, 2.0, np.float32), backend)}
+    stats = {
+        "mean": native(np.ones(4, np.float32), backend),
+        "std": native(np.full(4, 2.0, np.float32), backend),
+    }
     dist, values = model(obs, stats, None)
     assert tuple(values.shape) == (5,)
     mode = ivy.to_numpy(dist.mode())
@@ -135,7 +146,9 @@ def test_actor_critic_models_on_every_backend(backend, xp, space, head):
 
 def test_targets_follow_by_polyak_averaging(xp, backend):
     obs_space, act_space = gym.spaces.Box(-1, 1, (3,)), gym.spaces.Box(-1, 1, (1,))
-    model = models.actor_critic(obs_space, act_space, rng=np.random.default_rng(0), with_targets=True, f=backend)
+    model = models.actor_critic(
+        obs_space, act_space, rng=np.random.default_rng(0), with_targets=True, f=backend
+    )
     old = ivy.nest.map_nest(ivy.to_numpy, model.target_v)
     model.v = ivy.nest.map_nest(lambda x: x + 1.0, model.v)
     model.update_targets(tau=0.25)
@@ -145,9 +158,13 @@ def test_targets_follow_by_polyak_averaging(xp, backend):
 
 def test_unsupported_action_spaces_list_the_supported_ones():
     with pytest.raises(TypeError, match="supported action spaces: Box, Discrete"):
-        models.actor_critic(gym.spaces.Box(-1, 1, (3,)), gym.spaces.MultiDiscrete([2, 2]), rng=RNG, f="numpy")
+        models.actor_critic(
+            gym.spaces.Box(-1, 1, (3,)), gym.spaces.MultiDiscrete([2, 2]), rng=RNG, f="numpy"
+        )
     with pytest.raises(ValueError, match="choose one of"):
-        models.actor_critic(gym.spaces.Box(-1, 1, (3,)), gym.spaces.Discrete(2), rng=RNG, head="gaussian", f="numpy")
+        models.actor_critic(
+            gym.spaces.Box(-1, 1, (3,)), gym.spaces.Discrete(2), rng=RNG, head="gaussian", f="numpy"
+        )
 
 
 def test_conjugate_gradient_solves_a_positive_definite_system():

@@ -37,7 +37,10 @@ def test_lambda_returns_and_gae_match_the_definitions(backend, discount, lam):
     args = [native(a, backend) for a in (r, nv, resets, terms)]
     got = ivy_rl.lambda_returns(*args, discount=discount, trace_decay=lam)
     expected = np.stack(
-        [ref.lambda_return(r[:, w], nv[:, w], resets[:, w], terms[:, w], discount, lam) for w in range(WORKERS)],
+        [
+            ref.lambda_return(r[:, w], nv[:, w], resets[:, w], terms[:, w], discount, lam)
+            for w in range(WORKERS)
+        ],
         axis=1,
     )
     assert_close(got, expected, "float64", rtol=1e-10, atol=1e-10)
@@ -45,7 +48,10 @@ def test_lambda_returns_and_gae_match_the_definitions(backend, discount, lam):
         native(r, backend), native(v, backend), *args[1:], discount=discount, trace_decay=lam
     )
     expected_adv = np.stack(
-        [ref.gae(r[:, w], v[:, w], nv[:, w], resets[:, w], terms[:, w], discount, lam) for w in range(WORKERS)],
+        [
+            ref.gae(r[:, w], v[:, w], nv[:, w], resets[:, w], terms[:, w], discount, lam)
+            for w in range(WORKERS)
+        ],
         axis=1,
     )
     assert_close(adv, expected_adv, "float64", rtol=1e-10, atol=1e-10)
@@ -54,9 +60,12 @@ def test_lambda_returns_and_gae_match_the_definitions(backend, discount, lam):
 @pytest.mark.parametrize("n", [1, 3, 20])
 def test_n_step_returns_match_the_definition(backend, n):
     r, _, nv, resets, terms = _segment(2)
-    got = ivy_rl.n_step_returns(*(native(a, backend) for a in (r, nv, resets, terms)), discount=0.9, steps=n)
+    got = ivy_rl.n_step_returns(
+        *(native(a, backend) for a in (r, nv, resets, terms)), discount=0.9, steps=n
+    )
     expected = np.stack(
-        [ref.n_step(r[:, w], nv[:, w], resets[:, w], terms[:, w], 0.9, n) for w in range(WORKERS)], axis=1
+        [ref.n_step(r[:, w], nv[:, w], resets[:, w], terms[:, w], 0.9, n) for w in range(WORKERS)],
+        axis=1,
     )
     assert_close(got, expected, "float64", rtol=1e-10, atol=1e-10)
 
@@ -79,7 +88,9 @@ def test_partial_episode_bootstrapping_at_time_limits_only():
 def test_gae_equals_lambda_returns_minus_values_within_episodes():
     r, _, nv, resets, terms = _segment(3)
     values = np.concatenate([nv[:1] * 0.3, nv[:-1]])  # V(s_{t+1}) == V(s'_t) where no reset
-    adv = ivy_rl.generalized_advantages(r, values, nv, resets, terms, discount=0.99, trace_decay=0.9)
+    adv = ivy_rl.generalized_advantages(
+        r, values, nv, resets, terms, discount=0.99, trace_decay=0.9
+    )
     ret = ivy_rl.lambda_returns(r, nv, resets, terms, discount=0.99, trace_decay=0.9)
     # at steps after a reset V(s_t) is the new episode's first value, which need not equal nv
     np.testing.assert_allclose(adv, ret - values, rtol=1e-10, atol=1e-10)
@@ -88,7 +99,9 @@ def test_gae_equals_lambda_returns_minus_values_within_episodes():
 def test_returns_keep_float32_and_batch_dimensions(backend):
     r = np.ones((5, 2, 3), np.float32)
     flags = np.zeros((5, 2, 3), bool)
-    got = ivy_rl.lambda_returns(native(r, backend), native(r, backend), native(flags, backend), native(flags, backend))
+    got = ivy_rl.lambda_returns(
+        native(r, backend), native(r, backend), native(flags, backend), native(flags, backend)
+    )
     assert tuple(got.shape) == (5, 2, 3) and "float32" in str(got.dtype)
 
 

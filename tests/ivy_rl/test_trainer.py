@@ -26,10 +26,18 @@ def _rows(rows):
 
 
 def _run(out, steps, *, resume=False, f="torch", keep=False):
-    trainer = Trainer(steps, epoch_steps=32, test_episodes=1, show_progress=False, keep_checkpoints=keep)
+    trainer = Trainer(
+        steps, epoch_steps=32, test_episodes=1, show_progress=False, keep_checkpoints=keep
+    )
     return trainer.run(
-        ivy_rl.PPO(**PPO_TINY), "CartPole-v1", workers=2, seed=5, f=f, compile=False,
-        out=str(out), resume=resume,
+        ivy_rl.PPO(**PPO_TINY),
+        "CartPole-v1",
+        workers=2,
+        seed=5,
+        f=f,
+        compile=False,
+        out=str(out),
+        resume=resume,
     )
 
 
@@ -62,7 +70,7 @@ def test_a_torch_checkpoint_loads_and_continues_on_jax_and_tensorflow(tmp_path):
 
 def test_workers_keep_time_limits_apart_from_terminations():
     workers = environments.Workers("Pendulum-v1", 2, seed=0)
-    obs = workers.start()
+    workers.start()
     for t in range(200):
         next_obs, infos = workers.step(np.zeros((2, 1), np.float32))
         if t < 199:
@@ -102,7 +110,7 @@ def test_time_feature_counts_down_to_the_time_limit():
     env = environments.TimeFeature(gym.make("Pendulum-v1"))
     obs, _ = env.reset(seed=0)
     assert obs.shape == (4,) and obs[-1] == 1.0
-    for t in range(200):
+    for _t in range(200):
         obs, _, _, truncated, _ = env.step(np.zeros(1, np.float32))
     np.testing.assert_allclose(obs[-1], 0.0)
     assert truncated
@@ -137,17 +145,41 @@ def test_train_plot_and_play_commands(tmp_path, capsys):
     out = str(tmp_path / "ppo-cartpole-0")
     rows = train.main(
         [
-            "--agent", "PPO", "--environment", "CartPole-v1", "--framework", "jax",
-            "--steps", "64", "--epoch-steps", "32", "--workers", "2", "--seed", "0",
-            "--out", out, "--agent-kwargs", json.dumps(PPO_TINY), "--env-kwargs",
-            '{"sutton_barto_reward": false}', "--tensorboard", "--test-episodes", "1",
+            "--agent",
+            "PPO",
+            "--environment",
+            "CartPole-v1",
+            "--framework",
+            "jax",
+            "--steps",
+            "64",
+            "--epoch-steps",
+            "32",
+            "--workers",
+            "2",
+            "--seed",
+            "0",
+            "--out",
+            out,
+            "--agent-kwargs",
+            json.dumps(PPO_TINY),
+            "--env-kwargs",
+            '{"sutton_barto_reward": false}',
+            "--tensorboard",
+            "--test-episodes",
+            "1",
         ]
     )
     assert len(rows) == 2
     header = open(os.path.join(out, "log.csv")).readline().strip().split(",")
     for column in (
-        "train/steps", "train/seconds", "train/episode_score/mean", "test/episode_score/mean",
-        "test/episode_length/mean", "actor/loss", "critic/loss",
+        "train/steps",
+        "train/seconds",
+        "train/episode_score/mean",
+        "test/episode_score/mean",
+        "test/episode_length/mean",
+        "actor/loss",
+        "critic/loss",
     ):
         assert column in header, column
     assert "test/episode_score/mean" in capsys.readouterr().out  # the console table
@@ -156,7 +188,9 @@ def test_train_plot_and_play_commands(tmp_path, capsys):
     assert len(scalars["actor/loss"]) == 1  # the first epoch had no update yet
     curves = plot.main([out, out, "--out", str(tmp_path / "curves.png"), "--labels", "a", "b"])
     assert set(curves) == {"a", "b"} and os.path.getsize(tmp_path / "curves.png") > 1000
-    results = play.main([out, "--episodes", "1", "--video", str(tmp_path / "play.gif"), "-f", "torch"])
+    results = play.main(
+        [out, "--episodes", "1", "--video", str(tmp_path / "play.gif"), "-f", "torch"]
+    )
     assert results[0]["length"] >= 1 and os.path.getsize(tmp_path / "play.gif") > 1000
 
 
@@ -169,7 +203,9 @@ def test_command_line_errors_list_what_is_available():
         train.main(["--environment", "NoSuchEnv-v0"])
     done = subprocess.run(
         [sys.executable, "-m", "ivy_rl.train", "--agent", "SAC"],
-        capture_output=True, text=True, env={**os.environ, "PYTHONPATH": os.getcwd()},
+        capture_output=True,
+        text=True,
+        env={**os.environ, "PYTHONPATH": os.getcwd()},
     )
     assert done.returncode == 2 and "available agents: A2C, PPO" in done.stderr
 
@@ -181,7 +217,9 @@ def test_ray_workers_match_sync_workers():
         actions = np.random.default_rng(1).integers(0, 2, size=(40, 4))
         results = []
         for mode in ("sync", "ray"):
-            workers = environments.Workers("CartPole-v1", 4, seed=3, vectorization=mode, ray_groups=2)
+            workers = environments.Workers(
+                "CartPole-v1", 4, seed=3, vectorization=mode, ray_groups=2
+            )
             seen = [workers.start()]
             for a in actions:
                 obs, infos = workers.step(a)
@@ -191,8 +229,13 @@ def test_ray_workers_match_sync_workers():
         for a, b in zip(*results):
             np.testing.assert_array_equal(a, b)
         rows = Trainer(32, epoch_steps=32, test_episodes=1, show_progress=False).run(
-            ivy_rl.PPO(**PPO_TINY), "CartPole-v1", workers=4, vectorization="ray", ray_groups=2,
-            f="torch", compile=False,
+            ivy_rl.PPO(**PPO_TINY),
+            "CartPole-v1",
+            workers=4,
+            vectorization="ray",
+            ray_groups=2,
+            f="torch",
+            compile=False,
         )
         assert rows[-1]["train/steps"] == 32
     finally:
