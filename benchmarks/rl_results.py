@@ -170,6 +170,7 @@ def main():
     p.add_argument("--agents", nargs="+", default=["PPO", "A2C", "TRPO"])
     p.add_argument("--steps", type=int, default=None, help="override every budget")
     p.add_argument("--out", default="runs/bench")
+    p.add_argument("--no-peers", action="store_true", help="skip stable-baselines3's runs")
     args = p.parse_args()
     os.makedirs(args.out, exist_ok=True)
     results = []
@@ -180,7 +181,7 @@ def main():
         with open(os.path.join(args.out, "results.json"), "w") as fh:
             json.dump(results, fh, indent=1)
 
-    have_sb3 = True
+    have_sb3 = not args.no_peers
     try:
         import stable_baselines3  # noqa: F401
     except ImportError:

@@ -36,7 +36,7 @@ def test_each_agent_trains_briefly(diff_backend, agent_name, env_id):
     assert len(rows) == 1
     row = rows[0]
     assert row["train/steps"] == 64
-    for key in ("actor/loss", "critic/loss", "test/episode_score/mean", "train/episode_score/mean"):
+    for key in ("actor/loss", "critic/loss", "test/episode_score/mean"):
         assert np.isfinite(row[key]), key
 
 

@@ -91,19 +91,25 @@ def test_workers_keep_time_limits_apart_from_terminations():
     cart.close()
 
 
+def _observed(mode, count, seed, actions, **kwargs):
+    """Everything a run of Workers returns for fixed actions."""
+    workers = environments.Workers("CartPole-v1", count, seed=seed, vectorization=mode, **kwargs)
+    seen = [workers.start()]
+    for a in actions:
+        obs, infos = workers.step(a)
+        seen += [obs, infos["observations"], infos["rewards"], infos["resets"]]
+    workers.close()
+    return seen
+
+
+def _assert_same_runs(first, second):
+    for a, b in zip(first, second):
+        np.testing.assert_array_equal(a, b)
+
+
 def test_async_workers_match_sync_workers():
     actions = np.random.default_rng(0).integers(0, 2, size=(60, 3))
-    results = []
-    for mode in ("sync", "async"):
-        workers = environments.Workers("CartPole-v1", 3, seed=2, vectorization=mode)
-        seen = [workers.start()]
-        for a in actions:
-            obs, infos = workers.step(a)
-            seen += [obs, infos["observations"], infos["resets"]]
-        workers.close()
-        results.append(seen)
-    for a, b in zip(*results):
-        np.testing.assert_array_equal(a, b)
+    _assert_same_runs(_observed("sync", 3, 2, actions), _observed("async", 3, 2, actions))
 
 
 def test_time_feature_counts_down_to_the_time_limit():
@@ -215,19 +221,9 @@ def test_ray_workers_match_sync_workers():
     ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
     try:
         actions = np.random.default_rng(1).integers(0, 2, size=(40, 4))
-        results = []
-        for mode in ("sync", "ray"):
-            workers = environments.Workers(
-                "CartPole-v1", 4, seed=3, vectorization=mode, ray_groups=2
-            )
-            seen = [workers.start()]
-            for a in actions:
-                obs, infos = workers.step(a)
-                seen += [obs, infos["rewards"], infos["resets"]]
-            workers.close()
-            results.append(seen)
-        for a, b in zip(*results):
-            np.testing.assert_array_equal(a, b)
+        _assert_same_runs(
+            _observed("sync", 4, 3, actions), _observed("ray", 4, 3, actions, ray_groups=2)
+        )
         rows = Trainer(32, epoch_steps=32, test_episodes=1, show_progress=False).run(
             ivy_rl.PPO(**PPO_TINY),
             "CartPole-v1",
