@@ -149,6 +149,13 @@ def test_scan_in_the_backend_namespace_and_with_f(backend):
         np.testing.assert_allclose(numpy_of(ys), expected[1], rtol=1e-6)
 
 
+def test_inputs_of_another_framework_are_converted_with_f(backend):
+    step = cumulative(np, ())
+    carry, ys = ivy.scan(step, native(np.float64(0.5), backend), np.arange(3.0), f=backend)
+    assert is_native(carry, backend) and is_native(ys, backend)
+    np.testing.assert_allclose(numpy_of(ys), [0.0, 0.5, 3.0])  # c * x, c += x
+
+
 def test_scan_of_no_steps_returns_empty_outputs(backend):
     make, consts, init, xs, _ = SCAN_CASES["rnn"]
     xp = getattr(ivy, backend)
@@ -410,6 +417,24 @@ def test_random_draws_in_a_compiled_scan_body_differ_per_step_and_call(graph_bac
     assert len({tuple(row) for row in first[1]}) == 4
     assert not np.array_equal(first[1], second[1])
     np.testing.assert_array_equal(first[1], again[1])
+
+
+def test_a_jitted_scan_before_any_seed_leaves_a_concrete_key(request):
+    if "jax" not in request.config.ivy_backends:
+        pytest.skip("jax not selected")
+    import jax
+
+    from ivy.backends.jax import random as jax_random
+
+    saved = jax_random._state.saved()
+    jax_random._state.restore((None, None))  # as in a new process: never seeded
+    try:
+        step = jax.jit(lambda x: ivy.scan(lambda c, _: (c + 1.0, c), x, None, 3))
+        np.testing.assert_array_equal(numpy_of(step(native(np.zeros(2), "jax"))[0]), 3.0)
+        assert not isinstance(jax_random._state.data, jax.core.Tracer)
+        assert numpy_of(ivy.random_uniform(shape=(2,), f="jax")).shape == (2,)
+    finally:
+        jax_random._state.restore(saved)
 
 
 # ----------------------------------------------------------------------------------------------

@@ -39,6 +39,7 @@ def assemble_registered(name: str, spec: Any) -> types.ModuleType:
     sys.modules[spec.module] = module
     helpers = helpers_for(xp, name)
     array_type = type(xp.asarray(0))
+    helpers["array_types"] = (array_type,)
 
     def is_array(value: Any) -> bool:
         return isinstance(value, array_type)

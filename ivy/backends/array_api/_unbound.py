@@ -29,3 +29,4 @@ backend_ns: Any = (
 dtype_name = _unbound("dtype_name")  # native dtype -> ivy's name ('float32')
 device_name = _unbound("device_name")  # native device -> ivy's name ('cpu', 'gpu:0')
 native_dtypes: dict = {}  # ivy dtype name -> the native dtype
+array_types: tuple = ()  # the types of the native arrays

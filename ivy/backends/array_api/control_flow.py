@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from ivy.backends.array_api._unbound import backend_ns, xp
+from ivy.backends.array_api._unbound import array_types, backend_ns, xp
 from ivy.core.control_flow import (
     LoopOps,
     python_cond,
@@ -19,6 +19,7 @@ def _ops():
         stack=xp.stack,
         zeros=xp.zeros,
         asarray=backend_ns.asarray,
+        native=array_types,
     )
 
 

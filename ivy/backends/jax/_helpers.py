@@ -145,6 +145,7 @@ def dtype_name(dtype) -> str:
 
 # What the shared layer's functions find besides ``xp`` (ivy/backends/array_api/_unbound.py).
 SHARED = {
+    "array_types": (jax.Array,),
     "native_dtype": native_dtype,
     "native_device": native_device,
     "as_inexact": as_inexact,

@@ -72,6 +72,7 @@ def device_name(device) -> str:
 
 # What the shared layer's functions find besides ``xp`` (ivy/backends/array_api/_unbound.py).
 SHARED = {
+    "array_types": (np.ndarray, np.generic),
     "native_dtype": native_dtype,
     "native_device": native_device,
     "as_inexact": as_inexact,
