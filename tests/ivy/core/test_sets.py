@@ -1,5 +1,8 @@
-"""unique_all, unique_counts, unique_inverse and unique_values on every backend, against a
-reference written with Python dicts: values sorted, each NaN its own value, -0.0 equal to 0.0."""
+"""Tests of the core group ``sets`` (``ivy/core/sets.py``), on every backend.
+
+unique_all, unique_counts, unique_inverse and unique_values on every backend, against a
+reference written with Python dicts: values sorted, each NaN its own value, -0.0 equal to 0.0.
+"""
 
 from __future__ import annotations
 
@@ -15,7 +18,11 @@ from tests.helpers import HYPOTHESIS, api, check, native
 from tests.ivy.strategies import arrays
 
 FEW = settings(HYPOTHESIS, max_examples=20)
+
+
 SHAPES = st.sampled_from([(), (7,), (0,), (3, 4), (2, 0, 3)])
+
+
 FIELDS = {
     "unique_all": ("values", "indices", "inverse_indices", "counts"),
     "unique_counts": ("values", "counts"),

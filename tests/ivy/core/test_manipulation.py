@@ -1,23 +1,39 @@
-"""Shape manipulation against numpy references, on every backend.
+"""Tests of the core group ``manipulation`` (``ivy/core/manipulation.py``), on every backend.
+
+Shape manipulation against numpy references, on every backend.
 
 Hypothesis draws arrays (0-d and empty ones included) and valid arguments for them; results must
 equal numpy's exactly (values are moved, never computed).
+
+moveaxis and broadcast_arrays on every backend, against references written with numpy indexing
+(values are moved, never computed: results must be exact).
+
+Convolutions and pools (channel-last) against naive numpy float64 loops, on every backend.
+
+The references below loop over output positions and kernel taps, and compute 'SAME' padding from
+tf's documented rule; the tf backend passes 'SAME' to tf itself, so the rule is checked too.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tests.helpers import HYPOTHESIS, api, check, native
+import ivy
+from tests.helpers import HYPOTHESIS, api, check, native, numpy_of, tolerance
 from tests.ivy.strategies import arrays, axis_arguments, reals
 
 DTYPES = ("float32", "float64", "int64")
+
+
 SHAPES = [(), (4,), (0,), (2, 3), (3, 1), (2, 1, 3), (1, 2, 0), (2, 3, 1, 2)]
+
+
 SHAPES_1D_PLUS = [s for s in SHAPES if s]
 
 
@@ -257,3 +273,234 @@ def test_broadcast_to(backend, data):
     for fn in api(backend, "broadcast_to"):
         _exact(fn(native(a, backend), shape), np.broadcast_to(a, shape), backend)
         _exact(fn(native(a, backend), shape=shape), np.broadcast_to(a, shape), backend)
+
+
+FEW = settings(HYPOTHESIS, max_examples=20)
+
+
+SHAPES_manipulation_api = [(4,), (0,), (2, 3), (2, 1, 3), (1, 2, 0), (2, 3, 1, 2)]
+
+
+def _exact_manipulation_api(out, expected, backend):
+    check(out, expected, backend, rtol=0, atol=0, signed_zeros=True)
+
+
+def _array_manipulation_api(data, shapes):
+    dtype = data.draw(st.sampled_from(["float32", "float64", "int64"]), label="dtype")
+    elements = st.integers(-100, 100) if dtype == "int64" else reals(dtype, -100, 100)
+    return data.draw(arrays(dtype, elements, st.sampled_from(shapes)), label="x")
+
+
+def _moveaxis_reference(a, source, destination):
+    """Element by element: output index ``j`` reads input index ``j`` permuted back."""
+    n = a.ndim
+    source = [s % n for s in source]
+    destination = [d % n for d in destination]
+    order = [ax for ax in range(n) if ax not in source]
+    for d, s in sorted(zip(destination, source)):
+        order.insert(d, s)
+    out = np.empty(tuple(a.shape[ax] for ax in order), a.dtype)
+    for index in np.ndindex(out.shape):
+        src = [0] * n
+        for j, ax in enumerate(order):
+            src[ax] = index[j]
+        out[index] = a[tuple(src)]
+    return out
+
+
+@FEW
+@given(data=st.data())
+def test_moveaxis(backend, data):
+    a = _array_manipulation_api(data, SHAPES_manipulation_api)
+    n = a.ndim
+    count = data.draw(st.integers(1, n), label="number of axes")
+    source = data.draw(st.permutations(range(n)), label="source")[:count]
+    destination = data.draw(st.permutations(range(n)), label="destination")[:count]
+    source = [s - n if data.draw(st.booleans(), label="negative") else s for s in source]
+    expected = _moveaxis_reference(a, source, destination)
+    for fn in api(backend, "moveaxis"):
+        _exact_manipulation_api(
+            fn(native(a, backend), tuple(source), tuple(destination)), expected, backend
+        )
+        if count == 1:
+            _exact_manipulation_api(
+                fn(native(a, backend), source[0], destination[0]), expected, backend
+            )
+
+
+def test_moveaxis_refuses_mismatched_axes(backend):
+    x = native(np.zeros((2, 3, 4)), backend)
+    for fn in api(backend, "moveaxis"):
+        with pytest.raises((ValueError, IndexError, RuntimeError)):
+            fn(x, (0, 1), (2,))
+
+
+BROADCAST_GROUPS = [
+    [(), ()],
+    [(2, 3), ()],
+    [(2, 1), (1, 3)],
+    [(3,), (2, 1, 3), (1, 1)],
+    [(0,), (1,)],
+    [(2, 0), (1, 1), ()],
+    [(4,)],
+]
+
+
+def _broadcast_reference(shapes):
+    """The broadcast shape by the rules: right-aligned, sizes equal or 1."""
+    ndim = max(len(s) for s in shapes)
+    out = []
+    for axis in range(ndim):
+        sizes = {s[axis - ndim + len(s)] for s in shapes if axis - ndim + len(s) >= 0} - {1}
+        assert len(sizes) <= 1
+        out.append(sizes.pop() if sizes else 1)
+    return tuple(out)
+
+
+@pytest.mark.parametrize("shapes", BROADCAST_GROUPS, ids=str)
+def test_broadcast_arrays(backend, shapes):
+    rng = np.random.default_rng(0)
+    inputs = [rng.normal(size=s).astype(np.float32) for s in shapes]
+    target = _broadcast_reference(shapes)
+    for fn in api(backend, "broadcast_arrays"):
+        out = fn(*(native(a, backend) for a in inputs))
+        assert isinstance(out, list) and len(out) == len(inputs)
+        for o, a in zip(out, inputs):
+            expected = np.empty(target, np.float32)
+            pad = (1,) * (len(target) - a.ndim) + a.shape
+            for index in itertools.product(*map(range, target)):
+                expected[index] = a.reshape(pad)[
+                    tuple(0 if p == 1 else i for i, p in zip(index, pad))
+                ]
+            _exact_manipulation_api(o, expected, backend)
+
+
+def test_broadcast_arrays_refuses_incompatible_shapes(backend):
+    x, y = native(np.zeros(2), backend), native(np.zeros(3), backend)
+    for fn in api(backend, "broadcast_arrays"):
+        with pytest.raises(Exception):  # noqa: B017 - each framework raises its own error
+            fn(x, y)
+
+
+def test_broadcast_arrays_with_f(backend):
+    out = ivy.broadcast_arrays(np.zeros((2, 1)), np.ones(3), f=backend)
+    _exact_manipulation_api(out[1], np.ones((2, 3)), backend)
+
+
+FLOATS = ("float32", "float64")
+
+
+def _random(shape, dtype, seed):
+    return np.random.default_rng(100 + seed).standard_normal(shape).astype(dtype)
+
+
+def _tuple(v, nd):
+    return (v,) * nd if isinstance(v, int) else tuple(v)
+
+
+def ref_pads(padding, sizes, windows, strides):
+    """(low, high) per axis; 'SAME' by tf's rule: out = ceil(n / s), the odd pad at the end."""
+    nd = len(sizes)
+    if padding == "VALID":
+        return [(0, 0)] * nd
+    if padding == "SAME":
+        pads = []
+        for n, w, s in zip(sizes, windows, strides):
+            total = max((math.ceil(n / s) - 1) * s + w - n, 0)
+            pads.append((total // 2, total - total // 2))
+        return pads
+    if isinstance(padding, int):
+        return [(padding, padding)] * nd
+    return [(p, p) if isinstance(p, int) else tuple(p) for p in padding]
+
+
+def ref_conv_transpose(x, w, strides, padding, dilations, out_sizes):
+    """Scatter definition: out[i * s + j * d - low] += x[i] @ w[j].T, with w [*K, O, C]."""
+    x, w = x.astype(np.float64), w.astype(np.float64)
+    nd = x.ndim - 2
+    kernel = w.shape[:nd]
+    s, d = _tuple(strides, nd), _tuple(dilations, nd)
+    windows = [di * (k - 1) + 1 for k, di in zip(kernel, d)]
+    lows = [lo for lo, _ in ref_pads(padding, out_sizes, windows, s)]
+    out = np.zeros((x.shape[0], *out_sizes, w.shape[-2]))
+    for i in np.ndindex(*x.shape[1:-1]):
+        for tap in np.ndindex(*kernel):
+            at = tuple(ii * si + ti * di - lo for ii, si, ti, di, lo in zip(i, s, tap, d, lows))
+            if all(0 <= a < n for a, n in zip(at, out_sizes)):
+                out[(slice(None), *at)] += x[(slice(None), *i)] @ w[tap].T
+    return out
+
+
+# (x shape, filter shape [*K, out, in], strides, padding, dilations, output_shape, out sizes)
+TRANSPOSE_CASES = {
+    "conv1d_transpose": [
+        ((2, 4, 3), (3, 2, 3), 2, "SAME", 1, None, (8,)),
+        ((2, 4, 3), (3, 2, 3), 2, "VALID", 1, None, (9,)),
+        ((2, 4, 3), (3, 2, 3), 2, "SAME", 1, (7,), (7,)),  # odd output size
+        ((2, 4, 3), (3, 2, 3), 2, "VALID", 1, [2, 10, 2], (10,)),  # extended with zeros
+        ((2, 4, 3), (3, 2, 3), 1, "SAME", 2, None, (4,)),
+        ((2, 4, 3), (3, 2, 3), 3, [(1, 2)], 1, None, (9,)),
+    ],
+    "conv2d_transpose": [
+        ((2, 3, 4, 3), (3, 2, 2, 3), 2, "SAME", 1, None, (6, 8)),
+        ((2, 3, 4, 3), (3, 2, 2, 3), (2, 1), "VALID", (1, 2), None, (7, 6)),
+        ((2, 3, 3, 3), (3, 3, 2, 3), 2, [(1, 1), (0, 2)], 1, None, (5, 5)),
+        ((2, 3, 3, 3), (3, 3, 2, 3), 2, "SAME", 2, (5, 6), (5, 6)),
+    ],
+    "conv3d_transpose": [
+        ((1, 2, 3, 2, 2), (2, 2, 3, 3, 2), 2, "SAME", 1, None, (4, 6, 4)),
+        ((1, 2, 2, 2, 2), (2, 2, 2, 3, 2), (1, 2, 1), "VALID", 1, None, (3, 4, 3)),
+    ],
+}
+
+
+def _transpose_case_ids():
+    return [
+        pytest.param(name, case, id=f"{name}-{i}")
+        for name, cases in TRANSPOSE_CASES.items()
+        for i, case in enumerate(cases)
+    ]
+
+
+@pytest.mark.parametrize("dtype", FLOATS)
+@pytest.mark.parametrize(("name", "case"), _transpose_case_ids())
+def test_conv_transpose(backend, dtype, name, case):
+    x_shape, w_shape, strides, padding, dilations, output_shape, out_sizes = case
+    x, w = _random(x_shape, dtype, 7), _random(w_shape, dtype, 8)
+    expected = ref_conv_transpose(x, w, strides, padding, dilations, out_sizes)
+    fn = getattr(ivy, name)
+    out = fn(
+        native(x, backend),
+        native(w, backend),
+        strides,
+        padding,
+        output_shape=output_shape,
+        dilations=dilations,
+    )
+    check(out, expected.astype(dtype), backend, **tolerance(dtype, 10))
+
+
+def test_conv_transpose_is_the_adjoint_of_conv(backend):
+    """<conv(y, w), x> == <y, conv_transpose(x, w)>: the transpose is the input gradient."""
+    w = _random((3, 2, 3, 4), "float64", 9)  # conv: [fh, fw, in=3, out=4]; transpose: out=3, in=4
+    y = _random((2, 7, 6, 3), "float64", 10)
+    for strides, padding, dilations in [
+        (2, "SAME", 1),
+        ((1, 2), "VALID", (2, 1)),
+        (2, [(1, 2), 0], 1),
+    ]:
+        conv = numpy_of(
+            ivy.conv2d(
+                native(y, backend), native(w, backend), strides, padding, dilations=dilations
+            )
+        )
+        x = _random(conv.shape, "float64", 11)
+        back = ivy.conv2d_transpose(
+            native(x, backend),
+            native(w, backend),
+            strides,
+            padding,
+            output_shape=y.shape[1:3],
+            dilations=dilations,
+        )
+        np.testing.assert_allclose(np.sum(conv * x), np.sum(y * numpy_of(back)), rtol=1e-12)

@@ -1,17 +1,40 @@
-"""Array creation on every backend: values, shapes, and the default dtypes (float32 for Python
-floats and floating results, int64 for Python ints and integer ranges)."""
+"""Tests of the core group ``creation`` (``ivy/core/creation.py``), on every backend.
+
+Array creation on every backend: values, shapes, and the default dtypes (float32 for Python
+floats and floating results, int64 for Python ints and integer ranges).
+
+meshgrid, tril, triu and from_dlpack on every backend, against numpy references written out
+with indexing (values are copied, never computed: results must be exact).
+
+Gradients of the nn functions against central finite differences in float64, and compiled runs
+against eager ones, on the differentiable backends.
+
+Gradients are taken with each framework's own autodiff (``torch.autograd.grad``, ``jax.grad``,
+``tf.GradientTape``) of ``sum(fn(*inputs) * weights)``, and compared along random directions
+``v`` with ``(L(inputs + h v) - L(inputs - h v)) / 2h``.
+"""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import ivy
-from tests.helpers import api, api_f, cast, check, check_meta, native
-
-# ----------------------------------------------------------------------------------------------
-# asarray and its alias array
-# ----------------------------------------------------------------------------------------------
+from tests.helpers import (
+    HYPOTHESIS,
+    api,
+    api_f,
+    cast,
+    check,
+    check_gradients,
+    check_meta,
+    native,
+    native_value_and_grads,
+    numpy_of,
+)
+from tests.ivy.strategies import arrays, reals
 
 # object, expected numpy array (its dtype is the expected default dtype)
 FROM_PYTHON = {
@@ -66,11 +89,9 @@ def test_array_is_the_same_function_as_asarray(backend):
     assert xp.array is xp.asarray
 
 
-# ----------------------------------------------------------------------------------------------
-# zeros, ones, empty, full
-# ----------------------------------------------------------------------------------------------
-
 SHAPES = [3, (2, 3), (), (0, 2), [4, 1]]
+
+
 FILLED = {"zeros": 0, "ones": 1}
 
 
@@ -122,10 +143,6 @@ def test_full_with_dtype(backend, dtype):
         check(fn((3,), 5, dtype=dtype), np.full(3, 5, dtype), backend)
         check(fn(shape=(1, 2), fill_value=-1.0, dtype=dtype), np.full((1, 2), -1, dtype), backend)
 
-
-# ----------------------------------------------------------------------------------------------
-# arange, linspace, eye
-# ----------------------------------------------------------------------------------------------
 
 # arguments, keyword arguments, default dtype
 ARANGE = [
@@ -225,11 +242,6 @@ def test_eye(backend, args, kwargs):
         check(fn(*args, **kwargs), expected, backend)
 
 
-# ----------------------------------------------------------------------------------------------
-# *_like
-# ----------------------------------------------------------------------------------------------
-
-
 @pytest.mark.parametrize("name", ["zeros_like", "ones_like", "empty_like", "full_like"])
 @pytest.mark.parametrize("dtype", ["float64", "float32", "int32", "bool"])
 @pytest.mark.parametrize("shape", [(2, 3), (), (0, 4)], ids=str)
@@ -266,3 +278,158 @@ def test_full_like_keeps_the_dtype_of_x_over_the_value(backend):
         check(fn(native(a, backend), 3), np.full((2, 2), 3, np.float32), backend)
         check(fn(native(a, backend), fill_value=-0.5), np.full((2, 2), -0.5, np.float32), backend)
         check(fn(native(ints, backend), 7), np.full(3, 7, np.int32), backend)
+
+
+FEW = settings(HYPOTHESIS, max_examples=20)
+
+
+BACKENDS = ("numpy", "torch", "jax", "tensorflow")
+
+
+def _exact(out, expected, backend):
+    check(out, expected, backend, rtol=0, atol=0, signed_zeros=True)
+
+
+def _meshgrid_reference(vectors, indexing):
+    """out[k][i0, i1, ...] = vectors[k][i_k] ('ij'); 'xy' swaps the first two output axes."""
+    shape = tuple(len(v) for v in vectors)
+    outs = []
+    for k, v in enumerate(vectors):
+        out = np.empty(shape, v.dtype)
+        for index in np.ndindex(shape):
+            out[index] = v[index[k]]
+        outs.append(np.swapaxes(out, 0, 1) if indexing == "xy" and len(shape) > 1 else out)
+    return outs
+
+
+@FEW
+@given(data=st.data())
+def test_meshgrid(backend, data):
+    dtype = data.draw(st.sampled_from(["float32", "float64", "int64"]), label="dtype")
+    count = data.draw(st.integers(1, 3), label="number of arrays")
+    elements = st.integers(-9, 9) if dtype == "int64" else reals(dtype, -10, 10)
+    vectors = [
+        data.draw(arrays(dtype, elements, st.sampled_from([(0,), (1,), (3,), (4,)])), label="x")
+        for _ in range(count)
+    ]
+    indexing = data.draw(st.sampled_from(["xy", "ij"]), label="indexing")
+    expected = _meshgrid_reference(vectors, indexing)
+    xs = [native(v, backend) for v in vectors]
+    for fn in api(backend, "meshgrid"):
+        out = fn(*xs, indexing=indexing)
+        assert isinstance(out, list) and len(out) == count
+        for o, e in zip(out, expected):
+            _exact(o, e, backend)
+    for o, e in zip(ivy.meshgrid(*xs), _meshgrid_reference(vectors, "xy")):  # the default
+        _exact(o, e, backend)
+
+
+def test_meshgrid_with_f_and_no_arrays(backend):
+    assert ivy.meshgrid(f=backend) == []
+    out = ivy.meshgrid(np.arange(3.0), np.arange(2.0), f=backend)
+    _exact(out[0], np.array([[0.0, 1.0, 2.0]] * 2), backend)
+
+
+def _triangle_reference(a, k, lower):
+    out = a.copy()
+    for index in np.ndindex(a.shape):
+        i, j = index[-2:]
+        if (j - i > k) if lower else (j - i < k):
+            out[index] = 0
+    return out
+
+
+@pytest.mark.parametrize("name", ["tril", "triu"])
+@FEW
+@given(data=st.data())
+def test_tril_triu(backend, name, data):
+    dtype = data.draw(st.sampled_from(["float32", "float64", "int64", "bool"]), label="dtype")
+    shape = data.draw(st.sampled_from([(3, 3), (2, 4), (4, 2), (2, 3, 3), (0, 3), (2, 1, 0)]))
+    special = {"int64": st.integers(-9, 9), "bool": st.booleans()}
+    elements = special[dtype] if dtype in special else reals(dtype, -10, 10)
+    a = data.draw(arrays(dtype, elements, st.just(shape)), label="x")
+    k = data.draw(st.integers(-4, 4), label="k")
+    expected = _triangle_reference(a, k, name == "tril")
+    for fn in api(backend, name):
+        _exact(fn(native(a, backend), k=k), expected, backend)
+    _exact(
+        api(backend, name)[0](native(a, backend)),
+        _triangle_reference(a, 0, name == "tril"),
+        backend,
+    )
+
+
+def _source(producer, a):
+    if producer == "numpy":
+        return a.copy()
+    return native(a, producer)
+
+
+@pytest.mark.parametrize("producer", BACKENDS)
+@pytest.mark.parametrize("dtype", ["float32", "float64", "int32", "uint8", "bool"])
+def test_from_dlpack_from_every_framework(backend, producer, dtype):
+    a = np.arange(6).reshape(2, 3).astype(dtype)
+    src = _source(producer, a)
+    for fn in api(backend, "from_dlpack")[1:]:
+        for copy in (None, True):
+            _exact(fn(src, copy=copy), a, backend)
+        _exact(fn(src, device="cpu"), a, backend)
+    _exact(ivy.from_dlpack(src, f=backend), a, backend)
+
+
+@pytest.mark.parametrize("producer", ["numpy", "torch"])
+def test_from_dlpack_copy_true_never_shares_memory(backend, producer):
+    a = np.zeros(64, np.float64)
+    src = _source(producer, a)
+    out = getattr(ivy, backend).from_dlpack(src, copy=True)
+    src[0] = 5.0  # numpy arrays and torch tensors are mutable
+    assert numpy_of(out)[0] == 0.0
+
+
+def test_from_dlpack_shares_memory_by_default(mutable_backend):
+    """numpy and torch consumers share the producer's memory (tf and jax may copy: immutable)."""
+    import torch
+
+    src = torch.zeros(8)
+    out = getattr(ivy, mutable_backend).from_dlpack(src)
+    src[0] = 3.0
+    assert numpy_of(out)[0] == 3.0
+
+
+def test_from_dlpack_infers_the_producer_without_f(backend):
+    a = np.array([1.5, 2.5], np.float32)
+    _exact(ivy.from_dlpack(native(a, backend)), a, backend)
+
+
+def _random(shape, seed, scale=1.0):
+    return scale * np.random.default_rng(60 + seed).standard_normal(shape)
+
+
+def test_attention_gradients(diff_backend):
+    mask = np.tril(np.ones((3, 4), bool), k=1)
+
+    def fn(q, k, v):
+        return ivy.scaled_dot_product_attention(q, k, v, mask=native(mask, diff_backend))
+
+    check_gradients(
+        diff_backend, fn, [_random((2, 3, 5), 1), _random((2, 4, 5), 2), _random((2, 4, 2), 3)]
+    )
+
+
+# Exact derivatives at 0 and in the tails, where naive forms give NaN (0 * inf).
+TAIL_DERIVATIVES = {
+    "relu": [0.0, 0.0, 1.0],
+    "sigmoid": [0.0, 0.25, 0.0],
+    "softplus": [0.0, 0.5, 1.0],
+    "silu": [0.0, 0.5, 1.0],
+    "elu": [0.0, 1.0, 1.0],
+}
+
+
+@pytest.mark.parametrize("name", sorted(TAIL_DERIVATIVES))
+def test_activation_derivatives_at_zero_and_in_the_tails(diff_backend, name):
+    x = np.array([-1000.0, 0.0, 1000.0])
+    fn = getattr(ivy, name)
+    value, (grad,) = native_value_and_grads(diff_backend, fn, [x], np.ones(3))
+    assert np.isfinite(value)
+    np.testing.assert_allclose(grad, TAIL_DERIVATIVES[name], atol=1e-12)

@@ -1,6 +1,9 @@
-"""ivy.compile_fn: compiled results equal eager results, on every backend, including a whole
+"""Tests of the core group ``compilation`` (``ivy/core/compilation.py``), on every backend.
+
+ivy.compile_fn: compiled results equal eager results, on every backend, including a whole
 training step (loss, gradients, SGD update). torch.compile is slow to start, so torch compiles
-one function here (the training step), cached for the module and reused."""
+one function here (the training step), cached for the module and reused.
+"""
 
 from __future__ import annotations
 
@@ -14,13 +17,15 @@ import ivy
 from ivy import nest
 from tests.helpers import is_native, native, numpy_of
 
-# torch.compile's own internals warn about torch.jit while compiling
-pytestmark = pytest.mark.filterwarnings("ignore:`torch.jit.script_method`:DeprecationWarning")
-
 COMPILED_TOL = dict(rtol=1e-10, atol=1e-12)  # float64; XLA and graph mode may fuse differently
 
+
 rng = np.random.default_rng(3)
+
+
 PARAMS = {"w": rng.normal(size=(3, 2)), "b": rng.normal(size=2) * 0.1}
+
+
 BATCH = (rng.normal(size=(8, 3)), rng.normal(size=(8, 2)))
 
 

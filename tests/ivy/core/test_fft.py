@@ -1,6 +1,9 @@
-"""The Array API ``fft`` extension on every backend, against a discrete Fourier transform written
+"""Tests of the core group ``fft`` (``ivy/core/fft.py``), on every backend.
+
+The Array API ``fft`` extension on every backend, against a discrete Fourier transform written
 here as a float64 matrix product (independent of every FFT library), and the ``ivy.fft`` and
-``ivy.<backend>.fft`` namespaces."""
+``ivy.<backend>.fft`` namespaces.
+"""
 
 from __future__ import annotations
 
@@ -18,16 +21,18 @@ NAMES = [
     "fft", "ifft", "fftn", "ifftn", "rfft", "irfft", "rfftn", "irfftn", "hfft", "ihfft",
     "fftfreq", "rfftfreq", "fftshift", "ifftshift",
 ]  # fmt: skip
+
+
 COMPLEX_OF = {"float32": "complex64", "float64": "complex128"}
+
+
 REAL_OF = {"complex64": "float32", "complex128": "float64", "float32": "float32"}
-REAL_OF["float64"] = "float64"
+
+
 NORMS = ["backward", "ortho", "forward"]
+
+
 SWAPPED = {"backward": "forward", "forward": "backward", "ortho": "ortho"}
-
-
-# ----------------------------------------------------------------------------------------------
-# The reference: a DFT by matrix product in complex128
-# ----------------------------------------------------------------------------------------------
 
 
 def _fit(x, n, axis):
@@ -73,7 +78,11 @@ REFERENCE = {
     "hfft": lambda x, n, axis, norm: irdft(np.conj(x), n, axis, SWAPPED[norm]),
     "ihfft": lambda x, n, axis, norm: np.conj(rdft(x, n, axis, SWAPPED[norm])),
 }
+
+
 REAL_INPUT = {"rfft", "ihfft"}
+
+
 REAL_OUTPUT = {"irfft", "hfft"}
 
 
@@ -89,11 +98,6 @@ def _result_dtype(name, dtype):
     if name in REAL_OUTPUT:
         return REAL_OF[dtype]
     return COMPLEX_OF.get(dtype, dtype)
-
-
-# ----------------------------------------------------------------------------------------------
-# The namespaces
-# ----------------------------------------------------------------------------------------------
 
 
 def test_the_fft_namespace_is_callable_and_holds_the_agnostic_functions():
@@ -125,10 +129,6 @@ def test_set_framework_binds_the_backend_fft_namespace(backend, xp):
         assert ivy.fft.rfft is xp.rfft
     assert ivy.fft.rfft is ivy.core.rfft
 
-
-# ----------------------------------------------------------------------------------------------
-# One-dimensional transforms
-# ----------------------------------------------------------------------------------------------
 
 SHAPES = [(8,), (5,), (2, 6), (3, 4, 5)]
 
@@ -180,11 +180,6 @@ def test_integer_inputs_are_computed_in_float32(backend, name):
             backend,
             **tolerance("complex64", 20),
         )
-
-
-# ----------------------------------------------------------------------------------------------
-# N-dimensional transforms
-# ----------------------------------------------------------------------------------------------
 
 
 def _sizes_and_axes(shape, s, axes, real_inverse=False):
@@ -261,11 +256,6 @@ def test_round_trips(backend):
     check(xp.irfft(xp.rfft(nx, n=7), n=7)[..., :6], x, backend)
     spectrum = xp.ihfft(nx)  # the half spectrum of a real signal is Hermitian: hfft inverts it
     check(xp.ihfft(xp.hfft(spectrum, n=6)), numpy_of(spectrum), backend)
-
-
-# ----------------------------------------------------------------------------------------------
-# Frequencies and shifts
-# ----------------------------------------------------------------------------------------------
 
 
 @pytest.mark.parametrize("n", [1, 4, 7])

@@ -1,4 +1,7 @@
-"""Losses against numpy float64 references, on every backend, in float32 and float64."""
+"""Tests of the core group ``losses`` (``ivy/core/losses.py``), on every backend.
+
+Losses against numpy float64 references, on every backend, in float32 and float64.
+"""
 
 from __future__ import annotations
 
@@ -9,6 +12,8 @@ import ivy
 from tests.helpers import api, check, native, tolerance
 
 FLOATS = ("float32", "float64")
+
+
 REDUCTIONS = ("mean", "sum", "none")
 
 

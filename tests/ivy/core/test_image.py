@@ -1,5 +1,8 @@
-"""Images (channel-last ``[..., H, W, C]``) on every backend, against references written here with
-Python loops in float64: bilinear_resample, gradient_image, stack_images."""
+"""Tests of the core group ``image`` (``ivy/core/image.py``), on every backend.
+
+Images (channel-last ``[..., H, W, C]``) on every backend, against references written here with
+Python loops in float64: bilinear_resample, gradient_image, stack_images.
+"""
 
 from __future__ import annotations
 
@@ -16,11 +19,6 @@ RNG = np.random.default_rng(77)
 
 def _image(shape, dtype="float32"):
     return (RNG.standard_normal(shape) * 3).astype(dtype)
-
-
-# ----------------------------------------------------------------------------------------------
-# bilinear_resample
-# ----------------------------------------------------------------------------------------------
 
 
 def _bilinear_reference(image, warp):
@@ -84,11 +82,6 @@ def test_bilinear_resample_refuses_mismatched_shapes(backend):
                 fn(image, native(np.zeros(warp_shape, np.float32), backend))
 
 
-# ----------------------------------------------------------------------------------------------
-# gradient_image
-# ----------------------------------------------------------------------------------------------
-
-
 def _gradient_reference(images):
     x = images.astype(np.float64)
     dy, dx = np.zeros_like(x), np.zeros_like(x)
@@ -119,10 +112,6 @@ def test_gradient_image_of_uint8_images_is_signed_float32(backend):
         check(dy, dy_ref.astype(np.float32), backend)
         check(dx, dx_ref.astype(np.float32), backend)
 
-
-# ----------------------------------------------------------------------------------------------
-# stack_images
-# ----------------------------------------------------------------------------------------------
 
 # (count, image height, width, desired aspect ratio) -> (rows, columns)
 GRIDS = {

@@ -1,6 +1,15 @@
-"""Activations against numpy float64 references, on every backend, in float32 and float64.
+"""Tests of the core group ``activations`` (``ivy/core/activations.py``), on every backend.
+
+Activations against numpy float64 references, on every backend, in float32 and float64.
 
 Inputs include values far in the tails (+-30, +-1000) where the naive formulas overflow, and NaN.
+
+Gradients of the nn functions against central finite differences in float64, and compiled runs
+against eager ones, on the differentiable backends.
+
+Gradients are taken with each framework's own autodiff (``torch.autograd.grad``, ``jax.grad``,
+``tf.GradientTape``) of ``sum(fn(*inputs) * weights)``, and compared along random directions
+``v`` with ``(L(inputs + h v) - L(inputs - h v)) / 2h``.
 """
 
 from __future__ import annotations
@@ -11,9 +20,17 @@ import numpy as np
 import pytest
 
 import ivy
-from tests.helpers import api, check, native, numpy_of, reference
+from tests.helpers import (
+    api,
+    check,
+    check_gradients,
+    native,
+    numpy_of,
+    reference,
+)
 
 FLOATS = ("float32", "float64")
+
 
 TAILS = [-1000.0, -30.0, -3.0, -1.0, -0.5, -1e-3, 0.0, 1e-3, 0.5, 1.0, 3.0, 30.0, 1000.0]
 
@@ -95,3 +112,14 @@ def test_softmax_of_a_masked_slice(backend):
         np.array([[-np.inf, -math.log(2), -math.log(2)], [-math.log(2), -np.inf, -math.log(2)]]),
         backend,
     )
+
+
+def _random(shape, seed, scale=1.0):
+    return scale * np.random.default_rng(60 + seed).standard_normal(shape)
+
+
+@pytest.mark.parametrize(
+    "name", ["sigmoid", "softplus", "silu", "elu", "gelu", "leaky_relu", "softmax", "log_softmax"]
+)
+def test_activation_gradients(diff_backend, name):
+    check_gradients(diff_backend, getattr(ivy, name), [_random((3, 5), 1, 3.0)])

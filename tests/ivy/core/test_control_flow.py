@@ -1,4 +1,6 @@
-"""Control flow (``ivy.scan``, ``fori_loop``, ``while_loop``, ``cond``) against plain Python loops
+"""Tests of the core group ``control_flow`` (``ivy/core/control_flow.py``), on every backend.
+
+Control flow (``ivy.scan``, ``fori_loop``, ``while_loop``, ``cond``) against plain Python loops
 in numpy float64, eagerly on every backend and compiled (jax, tensorflow; torch.compile once,
 cached), with gradients against central finite differences on the differentiable backends.
 
@@ -20,10 +22,12 @@ import ivy
 from ivy import nest
 from tests.helpers import check_gradients, is_native, native, numpy_of
 
-pytestmark = pytest.mark.filterwarnings("ignore:`torch.jit.script_method`:DeprecationWarning")
-
 TOL = dict(rtol=1e-12, atol=1e-12)
+
+
 COMPILED_TOL = dict(rtol=1e-10, atol=1e-12)  # XLA and graph mode may fuse differently
+
+
 rng = np.random.default_rng(12)
 
 
@@ -41,10 +45,6 @@ def _assert_same(actual, expected, backend, tol=TOL):
         assert is_native(a, backend), type(a)
         np.testing.assert_allclose(numpy_of(a), e, **tol)
 
-
-# ----------------------------------------------------------------------------------------------
-# scan: cases of (step written against xp, init, xs, length)
-# ----------------------------------------------------------------------------------------------
 
 W_IN, W_REC = rng.normal(size=(4, 3)) * 0.5, rng.normal(size=(3, 3)) * 0.5
 
@@ -205,10 +205,6 @@ def test_compiled_scan_gradients_equal_eager(request, backend_):
     compiled = compiled_loss_and_grads(backend_)(*args)
     _assert_same(compiled, _numpy(eager), backend_, COMPILED_TOL)
 
-
-# ----------------------------------------------------------------------------------------------
-# fori_loop, while_loop, cond
-# ----------------------------------------------------------------------------------------------
 
 RATES = rng.uniform(0.5, 1.5, size=6)
 
@@ -381,11 +377,6 @@ def test_cond_gradients_equal_finite_differences(diff_backend):
     check_gradients(diff_backend, fn, [np.array([-0.3, -0.1, 0.5]), np.float64(2.0)])
 
 
-# ----------------------------------------------------------------------------------------------
-# Randomness inside loop bodies
-# ----------------------------------------------------------------------------------------------
-
-
 def noisy_scan(backend, init=None):
     def step(c, x):
         noise = ivy.random_uniform(shape=(2,), dtype="float64", f=backend)
@@ -435,11 +426,6 @@ def test_a_jitted_scan_before_any_seed_leaves_a_concrete_key(request):
         assert numpy_of(ivy.random_uniform(shape=(2,), f="jax")).shape == (2,)
     finally:
         jax_random._state.restore(saved)
-
-
-# ----------------------------------------------------------------------------------------------
-# Errors: what jax and tensorflow refuse is refused on every backend
-# ----------------------------------------------------------------------------------------------
 
 
 def test_scan_refuses_a_carry_that_changes_shape_or_dtype(backend):

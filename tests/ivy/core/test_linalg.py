@@ -1,9 +1,23 @@
-"""The Array API ``linalg`` extension (beyond matmul, cross, svd, inv, pinv and vector_norm, which
+"""Tests of the core group ``linalg`` (``ivy/core/linalg.py``), on every backend.
+
+Linear algebra against numpy float64 references, on every backend.
+
+Matrices are well conditioned (orthogonal factors times singular values in [1, 3]) so that the
+float32 tolerance of the table applies without scaling by a condition number.
+
+The Array API ``linalg`` extension (beyond matmul, cross, svd, inv, pinv and vector_norm, which
 are in test_linalg.py) against numpy float64 references, on every backend; and the ``ivy.linalg``
 and ``ivy.<backend>.linalg`` namespaces.
 
 Matrices are well conditioned (orthogonal factors times singular values in [1, 3]) so that the
 float32 tolerance of the table applies without scaling by a condition number.
+
+Gradients of the nn functions against central finite differences in float64, and compiled runs
+against eager ones, on the differentiable backends.
+
+Gradients are taken with each framework's own autodiff (``torch.autograd.grad``, ``jax.grad``,
+``tf.GradientTape``) of ``sum(fn(*inputs) * weights)``, and compared along random directions
+``v`` with ``(L(inputs + h v) - L(inputs - h v)) / 2h``.
 """
 
 from __future__ import annotations
@@ -23,12 +37,205 @@ from tests.helpers import (
     check_meta,
     dtype_name,
     native,
+    native_value_and_grads,
     numpy_of,
+    reference,
     tolerance,
 )
-from tests.ivy.strategies import FLOAT_DTYPES, arrays, reals
+from tests.ivy.strategies import FLOAT_DTYPES, arrays, axis_arguments, reals
 
-RNG_SEED = 4321
+RNG_SEED = 1234
+
+
+def _random(shape, dtype, seed=0):
+    return np.random.default_rng(RNG_SEED + seed).standard_normal(shape).astype(dtype)
+
+
+def _well_conditioned(batch, n, dtype, seed=0):
+    rng = np.random.default_rng(RNG_SEED + seed)
+    q1, _ = np.linalg.qr(rng.standard_normal((*batch, n, n)))
+    q2, _ = np.linalg.qr(rng.standard_normal((*batch, n, n)))
+    s = rng.uniform(1, 3, (*batch, 1, n))
+    return ((q1 * s) @ q2).astype(dtype)
+
+
+MATMUL_SHAPES = [
+    ((3, 4), (4, 2)),
+    ((2, 3, 4), (4, 5)),  # batch on the left only
+    ((2, 1, 3, 4), (5, 4, 2)),  # batch broadcasting
+    ((4,), (4, 3)),  # vector @ matrix
+    ((2, 3, 4), (4,)),  # matrix @ vector
+    ((4,), (4,)),  # dot product: 0-d
+    ((3, 0), (0, 2)),  # empty inner dimension: zeros
+]
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+@pytest.mark.parametrize("shapes", MATMUL_SHAPES, ids=str)
+def test_matmul(backend, dtype, shapes):
+    a, b = _random(shapes[0], dtype, 1), _random(shapes[1], dtype, 2)
+    expected = cast(np.matmul(a.astype(np.float64), b.astype(np.float64)), dtype)
+    for fn in api(backend, "matmul"):
+        check(fn(native(a, backend), native(b, backend)), expected, backend, **tolerance(dtype, 10))
+
+
+def test_matmul_of_integers(backend):
+    a = np.arange(6, dtype=np.int64).reshape(2, 3)
+    b = np.arange(12, dtype=np.int64).reshape(3, 4) - 5
+    for fn in api(backend, "matmul"):
+        check(fn(native(a, backend), native(b, backend)), a @ b, backend)
+
+
+def _cross_reference(a, b, axis):
+    a, b = np.moveaxis(a, axis, -1), np.moveaxis(b, axis, -1)
+    a, b = np.broadcast_arrays(a, b)
+    out = np.stack(
+        [
+            a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
+            a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
+            a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0],
+        ],
+        axis=-1,
+    )
+    return np.moveaxis(out, -1, axis)
+
+
+@HYPOTHESIS
+@given(data=st.data())
+def test_cross(backend, data):
+    dtype = data.draw(st.sampled_from(FLOAT_DTYPES), label="dtype")
+    shape_a, shape_b, axis = data.draw(
+        st.sampled_from(
+            [((3,), (3,), -1), ((4, 3), (4, 3), -1), ((2, 1, 3), (5, 3), -1), ((3, 2), (3, 2), 0)]
+        ),
+        label="shapes, axis",
+    )
+    a = data.draw(arrays(dtype, reals(dtype, -10, 10, specials=False), shape_a), label="x1")
+    b = data.draw(arrays(dtype, reals(dtype, -10, 10, specials=False), shape_b), label="x2")
+    expected = cast(_cross_reference(a.astype(np.float64), b.astype(np.float64), axis), dtype)
+    for fn in api(backend, "cross"):
+        out = fn(native(a, backend), native(b, backend), axis=axis)
+        check(out, expected, backend, **tolerance(dtype, 400))
+    if axis == -1:
+        out = api(backend, "cross")[0](native(a, backend), native(b, backend))
+        check(out, expected, backend, **tolerance(dtype, 400))
+
+
+def test_cross_of_the_basis(backend):
+    e = np.eye(3)
+    x = native(e, backend)
+    for fn in api(backend, "cross"):
+        check(fn(x, native(np.roll(e, -1, axis=0), backend)), np.roll(e, -2, axis=0), backend)
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+@pytest.mark.parametrize("shape", [(3, 3), (4, 2), (2, 5), (2, 3, 4)], ids=str)
+@pytest.mark.parametrize("full_matrices", [True, False])
+def test_svd(backend, dtype, shape, full_matrices):
+    a = _random(shape, dtype, 3)
+    a64 = a.astype(np.float64)
+    m, n = shape[-2:]
+    k = min(m, n)
+    s_expected = np.linalg.svd(a64, compute_uv=False)
+    tol = tolerance(dtype, 10 * np.abs(a64).max())
+    for fn in api(backend, "svd"):
+        u, s, vh = fn(native(a, backend), full_matrices=full_matrices)
+        rows, cols = (m, n) if full_matrices else (k, k)
+        check(s, cast(s_expected, dtype), backend, **tol)
+        check_meta(u, backend, dtype, (*shape[:-2], m, rows))
+        check_meta(vh, backend, dtype, (*shape[:-2], cols, n))
+        u, s, vh = (numpy_of(t).astype(np.float64) for t in (u, s, vh))
+        assert np.all(np.diff(s, axis=-1) <= 0), "singular values are not descending"
+        reconstructed = (u[..., :, :k] * s[..., None, :]) @ vh[..., :k, :]
+        np.testing.assert_allclose(reconstructed, a64, **tol)
+        for q in (np.swapaxes(u, -1, -2) @ u, vh @ np.swapaxes(vh, -1, -2)):  # orthonormal
+            np.testing.assert_allclose(q, np.broadcast_to(np.eye(q.shape[-1]), q.shape), **tol)
+    u, s, vh = api(backend, "svd")[0](native(a, backend))  # full_matrices=True by default
+    assert numpy_of(u).shape[-1] == m and numpy_of(vh).shape[-2] == n
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+@pytest.mark.parametrize("batch", [(), (2,), (2, 3)], ids=str)
+def test_inv(backend, dtype, batch):
+    a = _well_conditioned(batch, 3, dtype, 4)
+    expected = cast(np.linalg.inv(a.astype(np.float64)), dtype)
+    for fn in api(backend, "inv"):
+        check(fn(native(a, backend)), expected, backend, **tolerance(dtype, 10))
+
+
+def _pinv_reference(a, rtol):
+    """V diag(1/s) U^T over the singular values s > rtol * max(s)."""
+    u, s, vh = np.linalg.svd(a, full_matrices=False)
+    keep = s > rtol * s.max(axis=-1, keepdims=True)
+    s_inv = np.where(keep, 1 / np.where(keep, s, 1), 0)
+    return np.swapaxes(vh, -1, -2) @ (s_inv[..., :, None] * np.swapaxes(u, -1, -2))
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+@pytest.mark.parametrize("shape", [(3, 3), (4, 2), (2, 5), (2, 3, 4)], ids=str)
+def test_pinv_of_full_rank_matrices(backend, dtype, shape):
+    rng = np.random.default_rng(RNG_SEED + 5)
+    m, n = shape[-2:]
+    k = min(m, n)
+    u, _ = np.linalg.qr(rng.standard_normal((*shape[:-2], m, k)))
+    v, _ = np.linalg.qr(rng.standard_normal((*shape[:-2], n, k)))
+    a = ((u * rng.uniform(1, 3, k)) @ np.swapaxes(v, -1, -2)).astype(dtype)
+    expected = cast(_pinv_reference(a.astype(np.float64), 1e-6), dtype)
+    for fn in api(backend, "pinv"):
+        check(fn(native(a, backend)), expected, backend, **tolerance(dtype, 10))
+
+
+@pytest.mark.parametrize("dtype", FLOAT_DTYPES)
+def test_pinv_drops_singular_values_below_rtol_times_the_largest(backend, dtype):
+    """Singular values 2, 1 and 1e-2: the last is dropped with rtol=1e-1, kept with 1e-3."""
+    rng = np.random.default_rng(RNG_SEED + 6)
+    u, _ = np.linalg.qr(rng.standard_normal((4, 3)))
+    v, _ = np.linalg.qr(rng.standard_normal((3, 3)))
+    a = ((u * np.array([2.0, 1.0, 1e-2])) @ v.T).astype(dtype)
+    for rtol, scale in ((1e-1, 10), (1e-3, 1e4)):  # a kept 1/1e-2 amplifies rounding
+        expected = cast(_pinv_reference(a.astype(np.float64), rtol), dtype)
+        for fn in api(backend, "pinv"):
+            check(fn(native(a, backend), rtol=rtol), expected, backend, **tolerance(dtype, scale))
+
+
+def _norm_reference(a, axis, keepdims, ord):
+    a = np.abs(np.asarray(a, np.float64))
+    if ord == np.inf:
+        out = np.max(a, axis=axis, keepdims=keepdims)
+    elif ord == -np.inf:
+        out = np.min(a, axis=axis, keepdims=keepdims)
+    else:
+        out = np.sum(a**ord, axis=axis, keepdims=keepdims) ** (1 / ord)
+    return out
+
+
+@pytest.mark.parametrize("name", ["vector_norm", "norm"])
+@HYPOTHESIS
+@given(data=st.data())
+def test_vector_norm(backend, name, data):
+    dtype = data.draw(st.sampled_from(FLOAT_DTYPES), label="dtype")
+    shape = data.draw(st.sampled_from([(5,), (2, 3), (2, 1, 3), (3, 4)]), label="shape")
+    a = data.draw(arrays(dtype, reals(dtype, -10, 10, specials=False), shape), label="x")
+    axis = data.draw(axis_arguments(a.ndim), label="axis")
+    keepdims = data.draw(st.booleans(), label="keepdims")
+    order = data.draw(st.sampled_from([2, 1, 3, 0.5, np.inf, -np.inf]), label="ord")
+    expected = cast(reference(_norm_reference, a, axis, keepdims, order), dtype)
+    for fn in api(backend, name):
+        out = fn(native(a, backend), axis=axis, keepdims=keepdims, ord=order)
+        check(out, expected, backend, **tolerance(dtype, 100))
+
+
+@pytest.mark.parametrize("name", ["vector_norm", "norm"])
+def test_vector_norm_defaults_to_the_2_norm_of_all_elements(backend, name):
+    a = np.array([[3.0, 0.0], [0.0, -4.0]], dtype=np.float32)
+    for fn in api(backend, name):
+        check(fn(native(a, backend)), np.float32(5.0), backend)
+        check(fn(native(a, backend), axis=1), np.array([3.0, 4.0], np.float32), backend)
+
+
+RNG_SEED_linalg_ext = 4321
+
+
 EXTENSION = [
     "cholesky", "cross", "det", "diagonal", "eigh", "eigvalsh", "inv", "matmul", "matrix_norm",
     "matrix_power", "matrix_rank", "matrix_transpose", "outer", "pinv", "qr", "slogdet", "solve",
@@ -43,7 +250,7 @@ def _alternating(cases, dtypes=FLOAT_DTYPES):
 
 
 def _random(shape, dtype, seed=0):
-    return np.random.default_rng(RNG_SEED + seed).standard_normal(shape).astype(dtype)
+    return np.random.default_rng(RNG_SEED_linalg_ext + seed).standard_normal(shape).astype(dtype)
 
 
 def _orthogonal(batch, n, rng):
@@ -51,15 +258,15 @@ def _orthogonal(batch, n, rng):
     return q
 
 
-def _well_conditioned(batch, n, dtype, seed=0):
-    rng = np.random.default_rng(RNG_SEED + seed)
+def _well_conditioned_linalg_ext(batch, n, dtype, seed=0):
+    rng = np.random.default_rng(RNG_SEED_linalg_ext + seed)
     s = rng.uniform(1, 3, (*batch, 1, n)) * np.where(np.arange(n) == 0, -1, 1)  # det < 0 too
     return ((_orthogonal(batch, n, rng) * s) @ _orthogonal(batch, n, rng)).astype(dtype)
 
 
 def _symmetric(batch, n, dtype, seed=0, positive=False):
     """Symmetric matrices with well separated eigenvalues (all in [1, 2n] when ``positive``)."""
-    rng = np.random.default_rng(RNG_SEED + seed)
+    rng = np.random.default_rng(RNG_SEED_linalg_ext + seed)
     q = _orthogonal(batch, n, rng)
     values = np.arange(1, n + 1) * 2.0 - (0 if positive else n)
     return ((q * values) @ np.swapaxes(q, -1, -2)).astype(dtype)
@@ -67,11 +274,6 @@ def _symmetric(batch, n, dtype, seed=0, positive=False):
 
 def _f64(a):
     return np.asarray(a, np.float64)
-
-
-# ----------------------------------------------------------------------------------------------
-# The namespaces
-# ----------------------------------------------------------------------------------------------
 
 
 def test_the_linalg_namespace_holds_the_agnostic_functions():
@@ -96,11 +298,6 @@ def test_set_framework_binds_the_backend_linalg_namespace(backend, xp):
         assert ivy.linalg is xp.linalg
         assert ivy.linalg.det is xp.det
     assert ivy.linalg.det is ivy.core.det
-
-
-# ----------------------------------------------------------------------------------------------
-# Decompositions: cholesky, eigh, eigvalsh, qr
-# ----------------------------------------------------------------------------------------------
 
 
 @pytest.mark.parametrize("dtype, batch", _alternating([(), (2,), (2, 3)]), ids=str)
@@ -160,14 +357,9 @@ def test_qr(backend, dtype, case):
     assert numpy_of(q).shape[-1] == min(m, n)
 
 
-# ----------------------------------------------------------------------------------------------
-# det, slogdet, solve, matrix_power
-# ----------------------------------------------------------------------------------------------
-
-
 @pytest.mark.parametrize("dtype, batch", _alternating([(), (2,), (2, 3)]), ids=str)
 def test_det_and_slogdet(backend, dtype, batch):
-    a = _well_conditioned(batch, 3, dtype, 4)
+    a = _well_conditioned_linalg_ext(batch, 3, dtype, 4)
     det = np.linalg.det(_f64(a))
     tol = tolerance(dtype, 30)
     for fn in api(backend, "det"):
@@ -204,7 +396,7 @@ SOLVE_SHAPES = [
 @pytest.mark.parametrize("shapes", SOLVE_SHAPES, ids=str)
 def test_solve(backend, shapes):
     dtype = "float32" if len(shapes[0]) == 2 else "float64"
-    a = _well_conditioned(shapes[0][:-2], 3, dtype, 5)
+    a = _well_conditioned_linalg_ext(shapes[0][:-2], 3, dtype, 5)
     b = _random(shapes[1], dtype, 6)
     if b.ndim == 1:
         expected = np.linalg.solve(_f64(a), _f64(b)[:, None])[..., 0]
@@ -219,7 +411,7 @@ def test_solve(backend, shapes):
     "dtype, n", [("float64", n) for n in (0, 1, 2, 5, -1, -2)] + [("float32", 3), ("float32", -3)]
 )
 def test_matrix_power(backend, dtype, n):
-    a = _well_conditioned((2,), 3, dtype, 7) / 2
+    a = _well_conditioned_linalg_ext((2,), 3, dtype, 7) / 2
     expected = np.linalg.matrix_power(_f64(a), n)
     for fn in api(backend, "matrix_power"):
         check(fn(native(a, backend), n), cast(expected, dtype), backend, **tolerance(dtype, 100))
@@ -233,11 +425,6 @@ def test_matrix_power_of_integers_stays_integer(backend):
         check(fn(native(a, backend), -1), np.array([[0, 1], [1, -1]], np.float32), backend)
 
 
-# ----------------------------------------------------------------------------------------------
-# Singular values: svdvals, matrix_rank, matrix_norm
-# ----------------------------------------------------------------------------------------------
-
-
 @pytest.mark.parametrize("dtype, shape", _alternating([(3, 3), (4, 2), (2, 5), (2, 3, 4)]), ids=str)
 def test_svdvals(backend, dtype, shape):
     a = _random(shape, dtype, 8)
@@ -247,7 +434,7 @@ def test_svdvals(backend, dtype, shape):
 
 
 def _of_rank(rank, m, n, seed, scale=1.0):
-    rng = np.random.default_rng(RNG_SEED + seed)
+    rng = np.random.default_rng(RNG_SEED_linalg_ext + seed)
     return rng.standard_normal((m, rank)) @ rng.standard_normal((rank, n)) * scale
 
 
@@ -260,7 +447,7 @@ def test_matrix_rank(backend, dtype):
 
 
 def test_matrix_rank_rtol_is_relative_to_the_largest_singular_value(backend):
-    rng = np.random.default_rng(RNG_SEED)
+    rng = np.random.default_rng(RNG_SEED_linalg_ext)
     q1, q2 = _orthogonal((), 3, rng), _orthogonal((), 3, rng)
     a = (q1 * np.array([100.0, 1.0, 1e-3])) @ q2  # relative 1, 1e-2, 1e-5
     for fn in api(backend, "matrix_rank"):
@@ -290,11 +477,6 @@ def test_matrix_norm_defaults_to_frobenius(backend):
     a = np.array([[3.0, 0.0], [0.0, -4.0]], np.float32)
     for fn in api(backend, "matrix_norm"):
         check(fn(native(a, backend)), np.float32(5.0), backend)
-
-
-# ----------------------------------------------------------------------------------------------
-# diagonal, trace, matrix_transpose
-# ----------------------------------------------------------------------------------------------
 
 
 @pytest.mark.parametrize(
@@ -337,11 +519,6 @@ def test_matrix_transpose(backend, shape):
     a = _random(shape, "float32", 9)
     for fn in api(backend, "matrix_transpose"):
         check(fn(native(a, backend)), np.swapaxes(a, -1, -2), backend)
-
-
-# ----------------------------------------------------------------------------------------------
-# Products: outer, tensordot, vecdot
-# ----------------------------------------------------------------------------------------------
 
 
 @pytest.mark.parametrize("dtype", ["float32", "float64", "int64"])
@@ -422,11 +599,9 @@ def test_vecdot(backend, dtype, case):
         check(out, expected.astype(dtype), backend, **tol)
 
 
-# ----------------------------------------------------------------------------------------------
-# Integer inputs of the floating-point functions are computed in float32
-# ----------------------------------------------------------------------------------------------
-
 INTEGER_MATRIX = np.array([[4, 2, 0], [2, 5, 1], [0, 1, 3]], np.int64)  # symmetric, SPD
+
+
 FLOAT_RESULTS = {
     "cholesky": lambda a: np.linalg.cholesky(a),
     "det": lambda a: np.linalg.det(a),
@@ -457,3 +632,21 @@ def test_integer_inputs_of_decompositions_are_computed_in_float32(backend):
         for part in getattr(ivy, name)(a):
             assert dtype_name(part) == "float32", name
     assert dtype_name(ivy.matrix_rank(a)) == "int64"
+
+
+def test_cross_entropy_gradients_from_extreme_logits(diff_backend):
+    z = np.array([[-1000.0, 0.0, 1000.0]])
+    t = np.array([[1.0, 0.0, 0.0]])
+
+    def bce(z):
+        return ivy.binary_cross_entropy(
+            z, native(t, diff_backend), from_logits=True, reduction="sum"
+        )
+
+    def cce(z):
+        return ivy.categorical_cross_entropy(z, native(t, diff_backend), from_logits=True)
+
+    _, (g,) = native_value_and_grads(diff_backend, bce, [z], np.ones(()))
+    np.testing.assert_allclose(g, [[-1.0, 0.5, 1.0]], atol=1e-12)
+    _, (g,) = native_value_and_grads(diff_backend, cce, [z], np.ones(()))
+    np.testing.assert_allclose(g, [[-1.0, 0.0, 1.0]], atol=1e-12)

@@ -1,5 +1,14 @@
-"""take, take_along_axis, gather_nd, scatter_nd and one_hot against references written with Python
-loops."""
+"""Tests of the core group ``indexing`` (``ivy/core/indexing.py``), on every backend.
+
+Ivy's own functions beyond the Array API, on every backend, against references written here
+with Python loops or plain numpy float64: gather_flat, scatter_flat, indices_where, cumsum,
+cumprod, einsum, constant_pad, zero_pad, linear_resample, interp, vector_to_skew_symmetric_matrix,
+cosine_similarity, clip_vector_norm, clip_by_global_norm, nan_to_num, isclose, allclose and
+to_framework.
+
+take, take_along_axis, gather_nd, scatter_nd and one_hot against references written with Python
+loops.
+"""
 
 from __future__ import annotations
 
@@ -9,18 +18,92 @@ import numpy as np
 import pytest
 
 import ivy
-from tests.helpers import api, check, check_gradients, native, numpy_of
+from tests.helpers import (
+    api,
+    check,
+    check_gradients,
+    native,
+    numpy_of,
+)
+
+
+@pytest.mark.parametrize("dtype", ["float32", "float64", "int64"])
+@pytest.mark.parametrize("indices", [[3, 0, 5], [[0, 11], [-1, 4]], 7, []], ids=str)
+def test_gather_flat(backend, dtype, indices):
+    params = (np.arange(12).reshape(3, 4) * 1.5 - 4).astype(dtype)
+    flat = list(params.reshape(-1))
+    idx = np.array(indices, np.int64)
+    expected = np.array([flat[i] for i in idx.reshape(-1)], dtype).reshape(idx.shape)
+    for fn in api(backend, "gather_flat"):
+        check(fn(native(params, backend), native(idx, backend)), expected, backend)
+        check(fn(native(params, backend), native(idx.astype(np.int32), backend)), expected, backend)
+
+
+def _scatter_flat_reference(indices, updates, size, reduction):
+    received: dict[int, list] = {}
+    for i, u in zip(indices, updates):
+        received.setdefault(int(i) % size, []).append(u)
+    out = np.zeros(size, updates.dtype)
+    combine = {"sum": sum, "min": min, "max": max}[reduction]
+    for i, values in received.items():
+        out[i] = combine(values)
+    return out, received
+
+
+@pytest.mark.parametrize("dtype", ["float32", "int64"])
+@pytest.mark.parametrize("reduction", ["sum", "min", "max", "replace"])
+def test_scatter_flat(backend, dtype, reduction):
+    idx = np.array([4, 0, 4, 2, 4, 0], np.int64)  # duplicates, and places left untouched
+    updates = np.array([3, -1, 7, 2, -5, 6], dtype) * (1.5 if dtype == "float32" else 1)
+    updates = updates.astype(dtype)
+    expected, received = _scatter_flat_reference(
+        idx, updates, 6, "sum" if reduction == "replace" else reduction
+    )
+    for fn in api(backend, "scatter_flat"):
+        out = fn(native(idx, backend), native(updates, backend), 6, reduction=reduction)
+        if reduction == "replace":  # one of the updates, unspecified which
+            got = numpy_of(out)
+            for i, values in received.items():
+                assert got[i] in values
+                expected[i] = got[i]
+        check(out, expected, backend)
+    out = api(backend, "scatter_flat")[0](native(idx, backend), native(updates, backend), 6)
+    check(out, _scatter_flat_reference(idx, updates, 6, "sum")[0], backend)  # sum by default
+
+
+def test_scatter_flat_of_batched_indices(backend):
+    idx = np.array([[0, 3], [3, 1]], np.int64)
+    updates = np.array([[1.0, 2.0], [4.0, 8.0]], np.float32)
+    expected = np.array([1.0, 8.0, 0.0, 6.0, 0.0], np.float32)
+    for fn in api(backend, "scatter_flat"):
+        check(fn(native(idx, backend), native(updates, backend), 5), expected, backend)
+
+
+@pytest.mark.parametrize(
+    "values",
+    [[[True, False, True], [False, False, True]], [0.0, 2.5, 0.0, -1.0], [[0, 0]], True, False],
+    ids=str,
+)
+def test_indices_where(backend, values):
+    x = np.array(values)
+    rows = [index for index in np.ndindex(x.shape) if x[index]]
+    expected = np.array(rows, np.int64).reshape(len(rows), x.ndim)
+    for fn in api(backend, "indices_where"):
+        check(fn(native(x, backend)), expected, backend)
+
+
+def test_indices_where_feeds_gather_nd(backend):
+    x = np.array([[1.0, -2.0], [3.0, -4.0]], np.float32)
+    xp = getattr(ivy, backend)
+    where = ivy.indices_where(native(x > 0, backend))
+    check(xp.gather_nd(native(x, backend), where), np.array([1.0, 3.0], np.float32), backend)
+
 
 DTYPES = ("float32", "float64", "int64")
 
 
 def _params(dtype, shape=(3, 4, 5)):
     return (np.arange(math.prod(shape)).reshape(shape) * 1.5 - 7).astype(dtype)
-
-
-# ----------------------------------------------------------------------------------------------
-# take
-# ----------------------------------------------------------------------------------------------
 
 
 @pytest.mark.parametrize("dtype", DTYPES)
@@ -43,11 +126,6 @@ def test_take_with_int32_indices_and_empty_indices(backend):
         check(out, a[:, [3, 1]], backend)
         out = fn(native(a, backend), native(np.zeros(0, np.int64), backend), axis=0)
         check(out, np.zeros((0, 4), np.float32), backend)
-
-
-# ----------------------------------------------------------------------------------------------
-# take_along_axis
-# ----------------------------------------------------------------------------------------------
 
 
 def _take_along_reference(a, indices, axis):
@@ -102,11 +180,6 @@ def test_take_along_axis_gradients(diff_backend):
     check_gradients(diff_backend, fn, [np.random.default_rng(3).normal(size=(2, 3))])
 
 
-# ----------------------------------------------------------------------------------------------
-# gather_nd
-# ----------------------------------------------------------------------------------------------
-
-
 def _gather_reference(params, indices):
     k = indices.shape[-1]
     rows = [params[tuple(i)] for i in indices.reshape(-1, k)]
@@ -139,11 +212,6 @@ def test_gather_nd_with_list_indices(backend):
     params = _params("float32", (3, 2))
     for fn in api(backend, "gather_nd"):
         check(fn(native(params, backend), [[0, 1], [2, 0]]), params[[0, 2], [1, 0]], backend)
-
-
-# ----------------------------------------------------------------------------------------------
-# scatter_nd
-# ----------------------------------------------------------------------------------------------
 
 
 def _scatter_reference(indices, updates, shape, reduction):
@@ -215,11 +283,6 @@ def test_scatter_nd_unknown_reduction_raises_value_error(backend, reduction):
     for fn in api(backend, "scatter_nd"):
         with pytest.raises(ValueError):
             fn(idx, updates, (3,), reduction=reduction)
-
-
-# ----------------------------------------------------------------------------------------------
-# one_hot
-# ----------------------------------------------------------------------------------------------
 
 
 def _one_hot_reference(indices, depth, dtype):

@@ -1,5 +1,15 @@
-"""linear, layer_norm, scaled_dot_product_attention, lstm_update and dropout against numpy
-float64 references, on every backend, in float32 and float64."""
+"""Tests of the core group ``layers`` (``ivy/core/layers.py``), on every backend.
+
+Gradients of the nn functions against central finite differences in float64, and compiled runs
+against eager ones, on the differentiable backends.
+
+Gradients are taken with each framework's own autodiff (``torch.autograd.grad``, ``jax.grad``,
+``tf.GradientTape``) of ``sum(fn(*inputs) * weights)``, and compared along random directions
+``v`` with ``(L(inputs + h v) - L(inputs - h v)) / 2h``.
+
+linear, layer_norm, scaled_dot_product_attention, lstm_update and dropout against numpy
+float64 references, on every backend, in float32 and float64.
+"""
 
 from __future__ import annotations
 
@@ -7,25 +17,64 @@ import numpy as np
 import pytest
 
 import ivy
-from tests.helpers import api, check, check_meta, dtype_name, native, numpy_of, tolerance
+from tests.helpers import (
+    api,
+    check,
+    check_gradients,
+    check_meta,
+    dtype_name,
+    native,
+    numpy_of,
+    tolerance,
+)
+
+
+def _random(shape, seed, scale=1.0):
+    return scale * np.random.default_rng(60 + seed).standard_normal(shape)
+
+
+def _lstm_outputs(x, h, c, kernel, recurrent, bias, recurrent_bias):
+    hs, (_, c_last) = ivy.lstm_update(x, h, c, kernel, recurrent, bias, recurrent_bias)
+    return ivy.concat([ivy.reshape(hs, (-1,)), ivy.reshape(c_last, (-1,))])
+
+
+def test_lstm_update_gradients(diff_backend):
+    shapes = [(2, 3, 3), (2, 4), (2, 4), (3, 16), (4, 16), (16,), (16,)]
+    arrays = [_random(s, i, 0.7) for i, s in enumerate(shapes)]
+    check_gradients(diff_backend, _lstm_outputs, arrays, n_directions=2)
+
+
+def test_layer_norm_gradients(diff_backend):
+    def fn(x, scale, offset):
+        return ivy.layer_norm(x, (1, 2), scale=scale, offset=offset)
+
+    check_gradients(
+        diff_backend, fn, [_random((3, 2, 4), 1, 2.0), _random((2, 4), 2), _random((4,), 3)]
+    )
+
+
+def test_linear_gradients(diff_backend):
+    check_gradients(
+        diff_backend, ivy.linear, [_random((2, 3), 1), _random((4, 3), 2), _random((4,), 3)]
+    )
+
 
 FLOATS = ("float32", "float64")
 
 
-def _random(shape, dtype, seed, scale=1.0):
+def _random_nn_layers(shape, dtype, seed, scale=1.0):
     return (scale * np.random.default_rng(40 + seed).standard_normal(shape)).astype(dtype)
-
-
-# ----------------------------------------------------------------------------------------------
-# linear
-# ----------------------------------------------------------------------------------------------
 
 
 @pytest.mark.parametrize("dtype", FLOATS)
 @pytest.mark.parametrize("x_shape", [(3,), (2, 3), (4, 2, 3)], ids=str)
 @pytest.mark.parametrize("with_bias", [True, False])
 def test_linear(backend, dtype, x_shape, with_bias):
-    x, w, b = _random(x_shape, dtype, 1), _random((5, 3), dtype, 2), _random((5,), dtype, 3)
+    x, w, b = (
+        _random_nn_layers(x_shape, dtype, 1),
+        _random_nn_layers((5, 3), dtype, 2),
+        _random_nn_layers((5,), dtype, 3),
+    )
     expected = x.astype(np.float64) @ w.T.astype(np.float64) + (b if with_bias else 0)
     args = (native(b, backend),) if with_bias else ()
     for fn in api(backend, "linear"):
@@ -40,24 +89,22 @@ def test_linear_errors(backend):
         ivy.linear(native(np.ones((2, 3)), backend), native(np.ones((3,)), backend))
 
 
-# ----------------------------------------------------------------------------------------------
-# layer_norm
-# ----------------------------------------------------------------------------------------------
-
-
 @pytest.mark.parametrize("dtype", FLOATS)
 @pytest.mark.parametrize(
     ("axes", "affine_shape"), [(-1, (6,)), ((1, 2), (4, 6)), (0, None)], ids=str
 )
 def test_layer_norm(backend, dtype, axes, affine_shape):
-    x = _random((3, 4, 6), dtype, 4, scale=3.0) + 5
+    x = _random_nn_layers((3, 4, 6), dtype, 4, scale=3.0) + 5
     x64 = x.astype(np.float64)
     mean = x64.mean(axis=axes, keepdims=True)
     var = ((x64 - mean) ** 2).mean(axis=axes, keepdims=True)
     expected = (x64 - mean) / np.sqrt(var + 1e-5)
     kwargs = {}
     if affine_shape is not None:
-        scale, offset = _random(affine_shape, dtype, 5), _random(affine_shape, dtype, 6)
+        scale, offset = (
+            _random_nn_layers(affine_shape, dtype, 5),
+            _random_nn_layers(affine_shape, dtype, 6),
+        )
         expected = expected * scale + offset
         kwargs = dict(scale=native(scale, backend), offset=native(offset, backend))
     for fn in api(backend, "layer_norm"):
@@ -70,11 +117,6 @@ def test_layer_norm_eps(backend):
     var = np.array([[0.0], [2 / 3]])
     expected = (x - x.mean(-1, keepdims=True)) / np.sqrt(var + 0.1)
     check(ivy.layer_norm(native(x, backend), eps=0.1), expected, backend)
-
-
-# ----------------------------------------------------------------------------------------------
-# scaled_dot_product_attention
-# ----------------------------------------------------------------------------------------------
 
 
 def _ref_attention(q, k, v, mask=None, scale=None):
@@ -91,15 +133,15 @@ def _ref_attention(q, k, v, mask=None, scale=None):
 @pytest.mark.parametrize("mask_kind", [None, "bool", "float"])
 def test_attention(backend, dtype, mask_kind):
     q, k, v = (
-        _random((2, 3, 4, 5), dtype, 7),
-        _random((2, 3, 6, 5), dtype, 8),
-        _random((2, 3, 6, 2), dtype, 9),
+        _random_nn_layers((2, 3, 4, 5), dtype, 7),
+        _random_nn_layers((2, 3, 6, 5), dtype, 8),
+        _random_nn_layers((2, 3, 6, 2), dtype, 9),
     )
     mask = None
     if mask_kind == "bool":  # causal-like, broadcast over batch and heads; every row attends
         mask = np.tril(np.ones((4, 6), bool), k=1)
     elif mask_kind == "float":
-        mask = _random((3, 4, 6), dtype, 10)
+        mask = _random_nn_layers((3, 4, 6), dtype, 10)
     expected = _ref_attention(q, k, v, mask)
     kwargs = {} if mask is None else {"mask": native(mask, backend)}
     for fn in api(backend, "scaled_dot_product_attention"):
@@ -109,9 +151,9 @@ def test_attention(backend, dtype, mask_kind):
 
 def test_attention_scale_and_errors(backend):
     q, k, v = (
-        _random((3, 4), "float64", 11),
-        _random((5, 4), "float64", 12),
-        _random((5, 2), "float64", 13),
+        _random_nn_layers((3, 4), "float64", 11),
+        _random_nn_layers((5, 4), "float64", 12),
+        _random_nn_layers((5, 2), "float64", 13),
     )
     out = ivy.scaled_dot_product_attention(
         native(q, backend), native(k, backend), native(v, backend), scale=0.3
@@ -119,11 +161,6 @@ def test_attention_scale_and_errors(backend):
     check(out, _ref_attention(q, k, v, scale=0.3), backend)
     with pytest.raises(ValueError, match=r"q \[\.\.\., Lq, d\], k \[\.\.\., Lk, d\]"):
         ivy.scaled_dot_product_attention(native(q, backend), native(v, backend), native(v, backend))
-
-
-# ----------------------------------------------------------------------------------------------
-# lstm_update
-# ----------------------------------------------------------------------------------------------
 
 
 def _ref_lstm(x, h, c, kernel, recurrent, bias, recurrent_bias):
@@ -147,12 +184,15 @@ def _ref_lstm(x, h, c, kernel, recurrent, bias, recurrent_bias):
 @pytest.mark.parametrize("biases", [True, False])
 def test_lstm_update(backend, dtype, biases):
     batch, time, n_in, hidden = 2, 4, 3, 5
-    x = _random((batch, time, n_in), dtype, 14)
-    h0, c0 = _random((batch, hidden), dtype, 15), _random((batch, hidden), dtype, 16)
-    kernel = _random((n_in, 4 * hidden), dtype, 17, 0.5)
-    recurrent = _random((hidden, 4 * hidden), dtype, 18, 0.5)
-    bias = _random((4 * hidden,), dtype, 19) if biases else None
-    recurrent_bias = _random((4 * hidden,), dtype, 20) if biases else None
+    x = _random_nn_layers((batch, time, n_in), dtype, 14)
+    h0, c0 = (
+        _random_nn_layers((batch, hidden), dtype, 15),
+        _random_nn_layers((batch, hidden), dtype, 16),
+    )
+    kernel = _random_nn_layers((n_in, 4 * hidden), dtype, 17, 0.5)
+    recurrent = _random_nn_layers((hidden, 4 * hidden), dtype, 18, 0.5)
+    bias = _random_nn_layers((4 * hidden,), dtype, 19) if biases else None
+    recurrent_bias = _random_nn_layers((4 * hidden,), dtype, 20) if biases else None
     hs_ref, h_ref, c_ref = _ref_lstm(x, h0, c0, kernel, recurrent, bias, recurrent_bias)
     extra = (native(bias, backend), native(recurrent_bias, backend)) if biases else ()
     for fn in api(backend, "lstm_update"):
@@ -183,11 +223,6 @@ def test_lstm_update_errors(backend):
         ivy.lstm_update(
             native(np.ones((2, 0, 4)), backend), h, h, native(np.ones((4, 20)), backend), good_r
         )
-
-
-# ----------------------------------------------------------------------------------------------
-# dropout
-# ----------------------------------------------------------------------------------------------
 
 
 @pytest.mark.parametrize("dtype", FLOATS)

@@ -1,6 +1,9 @@
-"""argsort, sort and top_k on every backend, against a stable sort written with Python's
+"""Tests of the core group ``sorting`` (``ivy/core/sorting.py``), on every backend.
+
+argsort, sort and top_k on every backend, against a stable sort written with Python's
 ``sorted``: NaN is the largest value (last ascending, first descending), -0.0 equals 0.0, and
-equal elements keep their order in both directions (top_k: the lower index first)."""
+equal elements keep their order in both directions (top_k: the lower index first).
+"""
 
 from __future__ import annotations
 
@@ -16,7 +19,11 @@ from tests.helpers import HYPOTHESIS, api, check, check_gradients, native, numpy
 from tests.ivy.strategies import arrays
 
 FEW = settings(HYPOTHESIS, max_examples=20)
+
+
 SHAPES = st.sampled_from([(6,), (0,), (2, 5), (3, 1, 4), (2, 0)])
+
+
 TIES = [0.0, -0.0, 1.0, -1.0, 2.5, math.inf, -math.inf, math.nan]
 
 
@@ -94,11 +101,6 @@ def test_other_dtypes(backend, dtype):
         check(fn(native(a, backend), descending=True), np.array([0, 2, 3, 4, 1]), backend)
     for fn in api(backend, "sort"):
         check(fn(native(a, backend)), np.array([0, 1, 3, 3, 5], dtype), backend)
-
-
-# ----------------------------------------------------------------------------------------------
-# top_k
-# ----------------------------------------------------------------------------------------------
 
 
 @FEW

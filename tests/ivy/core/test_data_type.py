@@ -1,4 +1,8 @@
-"""The Array API's data type functions (can_cast, finfo, iinfo, isdtype, result_type) and
+"""Tests of the core group ``data_type`` (``ivy/core/data_type.py``), on every backend.
+
+astype and its paper spelling cast, and the handling of dtype names, on every backend.
+
+The Array API's data type functions (can_cast, finfo, iinfo, isdtype, result_type) and
 astype's device, on every backend and without any framework (dtype names).
 
 References: numpy's finfo/iinfo read in Python numbers, the Array API's promotion table written
@@ -17,12 +21,129 @@ import pytest
 import ivy
 from ivy.core._dtype_rules import FInfo, IInfo
 from tests.conftest import require
-from tests.helpers import api, check, dtype_name, native
+from tests.helpers import api, api_f, check, dtype_name, native
+
+SIGNED = [-2.7, -1.0, -0.0, 0.0, 0.4, 1.5, 2.7, 100.25]
+
+
+UNSIGNED = [0.0, 0.4, 1.5, 2.7, 100.25]
+
+
+TARGETS = [
+    "float16",
+    "float32",
+    "float64",
+    "int8",
+    "int16",
+    "int32",
+    "int64",
+    "uint8",
+    "bool",
+]
+
+
+def _source(source_dtype, target):
+    values = UNSIGNED if target.startswith("uint") else SIGNED
+    return np.array(values, dtype=source_dtype)
+
+
+def _expected(a, target):
+    """Floats to integers truncate toward zero; nonzero is True."""
+    a64 = a.astype(np.float64)
+    if target == "bool":
+        return a64 != 0
+    if target.startswith(("int", "uint")):
+        return np.trunc(a64).astype(target)
+    return a64.astype(target)
+
+
+@pytest.mark.parametrize("name", ["astype", "cast"])
+@pytest.mark.parametrize("source", ["float32", "float64"])
+@pytest.mark.parametrize("target", TARGETS)
+def test_astype_from_floats(backend, name, source, target):
+    a = _source(source, target)
+    expected = _expected(a, target)
+    native_target = getattr(getattr(ivy, backend), target)
+    for fn in api(backend, name):
+        check(fn(native(a, backend), target), expected, backend, dtype=target)
+        check(fn(native(a, backend), native_target), expected, backend, dtype=target)
+
+
+@pytest.mark.parametrize("name", ["astype", "cast"])
+@pytest.mark.parametrize("source", ["int32", "int64", "bool", "uint8"])
+@pytest.mark.parametrize("target", ["float32", "float64", "int64", "int32", "bool"])
+def test_astype_from_integers_and_bools(backend, name, source, target):
+    a = np.array([0, 1, 7, 100], dtype=source)
+    expected = (a != 0) if target == "bool" else a.astype(target)
+    for fn in api(backend, name):
+        check(fn(native(a, backend), target), expected, backend)
+
+
+def test_astype_keeps_the_shape_of_0d_and_empty_arrays(backend):
+    for a in (np.float32(2.5), np.zeros((0, 3), np.float32)):
+        for fn in api(backend, "astype"):
+            check(fn(native(a, backend), "float64"), np.asarray(a, np.float64), backend)
+
+
+def test_astype_with_copy_false(backend):
+    a = np.array([1.0, 2.0], np.float32)
+    for fn in api(backend, "astype"):
+        check(fn(native(a, backend), "float32", copy=False), a, backend)
+        check(fn(native(a, backend), "float64", copy=False), a.astype(np.float64), backend)
+
+
+def test_cast_is_the_same_function_as_astype(backend):
+    assert ivy.cast is ivy.astype
+    xp = getattr(ivy, backend)
+    assert xp.cast is xp.astype
+
+
+# Every function that takes a dtype refuses a name it does not know (clearly bogus names: whether
+# aliases such as 'double' are accepted is left to the backends).
+UNKNOWN_DTYPE_CALLS = {
+    "astype": lambda b: ivy.astype(native(np.ones(2, np.float32), b), "float31"),
+    "cast": lambda b: ivy.cast(native(np.ones(2, np.float32), b), "flaot32"),
+    "asarray": lambda b: ivy.asarray([1.0, 2.0], dtype="int65", f=b),
+    "zeros": lambda b: ivy.zeros((2,), dtype="float32x", f=b),
+    "ones": lambda b: ivy.ones(3, dtype="doubble", f=b),
+    "full": lambda b: ivy.full((2,), 1.0, dtype="float33", f=b),
+    "arange": lambda b: ivy.arange(4, dtype="int63", f=b),
+    "linspace": lambda b: ivy.linspace(0.0, 1.0, 3, dtype="floatt", f=b),
+    "eye": lambda b: ivy.eye(2, dtype="float31", f=b),
+    "zeros_like": lambda b: ivy.zeros_like(native(np.ones(2), b), dtype="zeros32"),
+    "one_hot": lambda b: ivy.one_hot(native(np.array([0, 1]), b), 2, dtype="onehot"),
+    "sum": lambda b: ivy.sum(native(np.ones(2), b), dtype="float65"),
+    "random_uniform": lambda b: ivy.random_uniform(shape=(2,), dtype="uniform", f=b),
+    "randint": lambda b: ivy.randint(0, 3, (2,), dtype="int63", f=b),
+}
+
+
+@pytest.mark.parametrize("name", sorted(UNKNOWN_DTYPE_CALLS))
+def test_unknown_dtype_name_raises_type_error(backend, name):
+    with pytest.raises(TypeError):
+        UNKNOWN_DTYPE_CALLS[name](backend)
+
+
+def test_unknown_dtype_name_raises_type_error_in_namespace(backend):
+    xp = getattr(ivy, backend)
+    with pytest.raises(TypeError):
+        xp.astype(native(np.ones(2, np.float32), backend), "float31")
+    for fn in api_f(backend, "zeros"):
+        with pytest.raises(TypeError):
+            fn((2,), dtype="float31")
+
 
 ALL = ivy.dtypes.DTYPE_NAMES
+
+
 FLOATS = ("float16", "float32", "float64")
+
+
 COMPLEX = ("complex64", "complex128")
+
+
 INTS = ("int8", "int16", "int32", "int64", "uint8", "uint16", "uint32", "uint64")
+
 
 # The Array API's promotion table (2023.12), within each kind; every pair listed once.
 _TABLE_ROWS = {
@@ -59,6 +180,8 @@ _TABLE_ROWS = {
     ("float64", "complex128"): "complex128",
     ("complex64", "complex128"): "complex128",
 }
+
+
 TABLE = {**_TABLE_ROWS, **{(b, a): r for (a, b), r in _TABLE_ROWS.items()}}
 TABLE.update({(d, d): d for d in ALL})
 
@@ -75,11 +198,6 @@ def _name(dtype) -> str:
 
 def _as(backend, name):
     return getattr(getattr(ivy, backend), name)
-
-
-# ----------------------------------------------------------------------------------------------
-# result_type
-# ----------------------------------------------------------------------------------------------
 
 
 @pytest.mark.parametrize("pair", sorted(TABLE), ids=lambda p: "-".join(p))
@@ -136,11 +254,6 @@ def test_result_type_needs_an_array_or_dtype():
         ivy.result_type(1.0, 2)
 
 
-# ----------------------------------------------------------------------------------------------
-# can_cast
-# ----------------------------------------------------------------------------------------------
-
-
 def _can_cast_expected(a, b):
     """By the table: a casts to b if promoting them gives b (pairs of one kind)."""
     return TABLE[(a, b)] == b
@@ -173,11 +286,6 @@ def test_can_cast_never_narrows_nor_drops_the_imaginary_part(backend):
         for a, b in [("float64", "float32"), ("complex64", "float32"), ("float32", "int32")]:
             assert not fn(a, b)
             assert not ivy.can_cast(a, b)
-
-
-# ----------------------------------------------------------------------------------------------
-# finfo and iinfo
-# ----------------------------------------------------------------------------------------------
 
 
 def _finfo_reference(name):
@@ -261,10 +369,6 @@ def test_finfo_and_iinfo_refuse_the_other_kind(backend):
         xp.iinfo(xp.float32)
 
 
-# ----------------------------------------------------------------------------------------------
-# isdtype
-# ----------------------------------------------------------------------------------------------
-
 KIND_MEMBERS = {
     "bool": {"bool"},
     "signed integer": {"int8", "int16", "int32", "int64"},
@@ -295,11 +399,6 @@ def test_isdtype_tuples_and_dtypes(backend):
         assert fn("float64", "float64")
     with pytest.raises(ValueError):
         ivy.isdtype("float32", "floating point")
-
-
-# ----------------------------------------------------------------------------------------------
-# Framework choice, and astype's device
-# ----------------------------------------------------------------------------------------------
 
 
 def test_dtype_names_need_no_framework():

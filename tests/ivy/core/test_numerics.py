@@ -1,4 +1,6 @@
-"""Gradient-safe numerics (``ivy/core/numerics.py``) on every backend: values against numpy
+"""Tests of the core group ``numerics`` (``ivy/core/numerics.py``), on every backend.
+
+Gradient-safe numerics (``ivy/core/numerics.py``) on every backend: values against numpy
 float64 references, gradients at the singular points against each function's documented rule,
 and gradients elsewhere against central finite differences.
 
@@ -54,11 +56,20 @@ def _divide_grads(a, b):
 
 
 SQRT_IN = np.array([4.0, 0.0, -1e-18, 2.5, 1e-300])
+
+
 NORM_IN = np.array([[3.0, 4.0, 0.0], [0.0, 0.0, 0.0], [1e-200, 0.0, 0.0], [-1.0, 2.0, -2.0]])
+
+
 PAIRS_A = np.array([3.0, 0.0, 0.0, -1.0, 0.0, 2.0])
+
+
 PAIRS_B = np.array([4.0, 0.0, 2.0, 0.0, -3.0, -2.0])
+
+
 # x**2 at 0, inside the series, on both sides of the switch (1e-4), and far out.
 X_SQ_IN = np.array([0.0, 1e-12, 0.99e-4, 1.01e-4, 0.5, np.pi**2, 30.0])
+
 
 CASES = {
     "safe_sqrt": dict(

@@ -1,5 +1,15 @@
-"""Automatic differentiation: gradients of composite functions in float64, checked against
-central finite differences computed with numpy and across torch, jax and tensorflow."""
+"""Tests of the core group ``gradients`` (``ivy/core/gradients.py``), on every backend.
+
+Automatic differentiation: gradients of composite functions in float64, checked against
+central finite differences computed with numpy and across torch, jax and tensorflow.
+
+Gradients of the nn functions against central finite differences in float64, and compiled runs
+against eager ones, on the differentiable backends.
+
+Gradients are taken with each framework's own autodiff (``torch.autograd.grad``, ``jax.grad``,
+``tf.GradientTape``) of ``sum(fn(*inputs) * weights)``, and compared along random directions
+``v`` with ``(L(inputs + h v) - L(inputs - h v)) / 2h``.
+"""
 
 from __future__ import annotations
 
@@ -11,7 +21,14 @@ import pytest
 
 import ivy
 from ivy import nest
-from tests.helpers import TOLERANCES, is_native, native, numpy_of
+from tests.helpers import (
+    TOLERANCES,
+    check,
+    check_gradients,
+    is_native,
+    native,
+    numpy_of,
+)
 
 # The composite functions are written once against an array namespace: an ivy backend
 # namespace under test, or plain numpy (the reference, independent of ivy's numpy backend).
@@ -21,8 +38,13 @@ NP = types.SimpleNamespace(
     vector_norm=np.linalg.vector_norm,
 )
 
+
 X_DATA = np.random.default_rng(7).normal(size=(5, 3))
+
+
 FD = dict(rtol=1e-6, atol=1e-8)  # central differences with h ~ 1e-6 in float64
+
+
 F64 = TOLERANCES["float64"]
 
 
@@ -115,11 +137,6 @@ def _gradients(backend, name):
     return numpy_of(loss), _to_numpy(grads)
 
 
-# ----------------------------------------------------------------------------------------------
-# Gradients of composite functions
-# ----------------------------------------------------------------------------------------------
-
-
 @pytest.mark.parametrize("name", COMPOSITES)
 def test_gradients_match_finite_differences(diff_backend, name):
     loss, grads = _gradients(diff_backend, name)
@@ -150,11 +167,6 @@ def test_single_array_and_dict_key_order(diff_backend):
     v = {"z": x, "a": x}
     _, grads = ivy.execute_with_gradients(lambda v: xp.sum(v["z"] * v["a"]), v)
     assert list(grads) == ["z", "a"]
-
-
-# ----------------------------------------------------------------------------------------------
-# Semantics: aux outputs, unused leaves, no accumulation, variables, retain_grads
-# ----------------------------------------------------------------------------------------------
 
 
 def test_aux_outputs_follow_the_gradients(diff_backend):
@@ -246,11 +258,6 @@ def test_stop_gradient(diff_backend):
     np.testing.assert_allclose(numpy_of(g), [1.0, 3.0], **F64)
 
 
-# ----------------------------------------------------------------------------------------------
-# value_and_grad, grad, jacobian
-# ----------------------------------------------------------------------------------------------
-
-
 def test_value_and_grad_and_grad(diff_backend):
     xp = getattr(ivy, diff_backend)
     v = {"a": native(np.array([1.0, 2.0]), diff_backend)}
@@ -337,11 +344,6 @@ def test_jacobian_rejects_outputs_that_lose_the_batch(diff_backend):
         ivy.jacobian(lambda q: xp.sum(q, axis=0))(native(np.ones((4, 3)), diff_backend))
 
 
-# ----------------------------------------------------------------------------------------------
-# numpy: no autodiff
-# ----------------------------------------------------------------------------------------------
-
-
 def test_numpy_raises_a_clear_error():
     v = {"w": np.ones(2)}
     for call in (
@@ -355,3 +357,104 @@ def test_numpy_raises_a_clear_error():
     x = np.ones(2)
     assert ivy.stop_gradient(x) is x
     assert ivy.variable(x) is x
+
+
+def _random(shape, seed, scale=1.0):
+    return scale * np.random.default_rng(60 + seed).standard_normal(shape)
+
+
+CONV_CASES = {
+    "conv2d-same-stride": (
+        lambda x, w: ivy.conv2d(x, w, 2, "SAME"),
+        [(2, 5, 6, 3), (3, 3, 3, 2)],
+    ),
+    "conv2d-dilated-explicit": (
+        lambda x, w: ivy.conv2d(x, w, 1, [(1, 0), (2, 1)], dilations=2),
+        [(1, 5, 6, 2), (2, 3, 2, 3)],
+    ),
+    "conv1d-stride-dilation": (
+        lambda x, w: ivy.conv1d(x, w, 2, "SAME", dilations=2),
+        [(2, 9, 2), (3, 2, 3)],
+    ),
+    "conv3d-dilated": (
+        lambda x, w: ivy.conv3d(x, w, 1, "VALID", dilations=(2, 1, 1)),
+        [(1, 4, 3, 3, 2), (2, 2, 2, 2, 2)],
+    ),
+    "conv2d_transpose": (
+        lambda x, w: ivy.conv2d_transpose(x, w, 2, "SAME", dilations=(1, 2)),
+        [(1, 3, 3, 2), (3, 2, 3, 2)],
+    ),
+    "conv3d_transpose": (
+        lambda x, w: ivy.conv3d_transpose(x, w, (1, 2, 1), "SAME"),
+        [(1, 2, 2, 3, 2), (2, 2, 2, 3, 2)],
+    ),
+    "conv1d_transpose-output_shape": (
+        lambda x, w: ivy.conv1d_transpose(x, w, 2, "VALID", output_shape=(10,)),
+        [(2, 4, 3), (3, 2, 3)],
+    ),
+    "depthwise_conv2d": (
+        lambda x, w: ivy.depthwise_conv2d(x, w, (1, 2), "SAME"),
+        [(2, 5, 5, 3), (3, 3, 3)],
+    ),
+    "max_pool2d": (lambda x: ivy.max_pool2d(x, 2, 2, "SAME"), [(2, 5, 5, 3)]),
+    "avg_pool2d-explicit": (lambda x: ivy.avg_pool2d(x, 3, 2, [(1, 2), 1]), [(2, 5, 5, 3)]),
+    "avg_pool3d": (lambda x: ivy.avg_pool3d(x, 2, 2, "SAME"), [(1, 3, 4, 3, 2)]),
+    "max_pool3d": (lambda x: ivy.max_pool3d(x, 2, 1, "VALID"), [(1, 3, 3, 3, 2)]),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CONV_CASES))
+def test_conv_and_pool_gradients(diff_backend, case):
+    fn, shapes = CONV_CASES[case]
+    check_gradients(diff_backend, fn, [_random(s, i) for i, s in enumerate(shapes)])
+
+
+LOSS_CASES = {
+    "mse": lambda p, t: ivy.mse(p, t),
+    "huber": lambda p, t: ivy.huber(p, t, delta=0.7, reduction="sum"),
+    "bce-probabilities": lambda p, t: ivy.binary_cross_entropy(
+        ivy.sigmoid(p), ivy.sigmoid(t), reduction="none"
+    ),
+    "bce-logits": lambda p, t: ivy.binary_cross_entropy(p, ivy.sigmoid(t), from_logits=True),
+    "cce-logits": lambda p, t: ivy.categorical_cross_entropy(p, ivy.softmax(t), from_logits=True),
+    "cce-probabilities": lambda p, t: ivy.categorical_cross_entropy(
+        ivy.softmax(p, axis=0), ivy.softmax(t, axis=0), axis=0, reduction="none"
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(LOSS_CASES))
+def test_loss_gradients(diff_backend, case):
+    check_gradients(
+        diff_backend, LOSS_CASES[case], [_random((3, 4), 1, 2.0), _random((3, 4), 2, 2.0)]
+    )
+
+
+def _network(x, w_conv, w_up, kernel, recurrent, q):
+    y = ivy.relu(ivy.conv2d(x, w_conv, 2, "SAME"))
+    y = ivy.max_pool2d(y, 2, 1, "SAME")
+    up = ivy.conv2d_transpose(y, w_up, 2, "SAME", output_shape=(3, 4))
+    seq = ivy.reshape(y, (2, 4, 4))
+    hs, _ = ivy.lstm_update(seq, ivy.zeros_like(q), ivy.zeros_like(q), kernel, recurrent)
+    att = ivy.scaled_dot_product_attention(hs, hs, hs)
+    norm = ivy.layer_norm(att, scale=q[0], offset=q[1])
+    return ivy.sum(up) + ivy.sum(ivy.log_softmax(norm)) + ivy.avg_pool1d(hs, 2, 2, "SAME")[0, 0, 0]
+
+
+@pytest.mark.parametrize("compiler", ["jax", "tensorflow"])
+def test_compiled_matches_eager(request, compiler):
+    backend = compiler
+    if backend not in request.config.ivy_backends:
+        pytest.skip(f"{backend} is not selected")
+    shapes = [(2, 3, 4, 3), (3, 3, 3, 4), (3, 3, 2, 4), (4, 16), (4, 16), (2, 4)]
+    arrays = [native(_random(s, i), backend) for i, s in enumerate(shapes)]
+    eager = _network(*arrays)
+    if backend == "jax":
+        import jax
+
+        compiled = jax.jit(_network)(*arrays)
+    else:
+        import tensorflow as tf
+
+        compiled = tf.function(_network)(*arrays)
+    check(compiled, numpy_of(eager), backend, rtol=1e-10, atol=1e-10)

@@ -1,0 +1,186 @@
+"""Tests of the core group ``convolutions`` (``ivy/core/convolutions.py``), on every backend.
+
+Convolutions and pools (channel-last) against naive numpy float64 loops, on every backend.
+
+The references below loop over output positions and kernel taps, and compute 'SAME' padding from
+tf's documented rule; the tf backend passes 'SAME' to tf itself, so the rule is checked too.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import ivy
+from tests.helpers import HYPOTHESIS, check, native, numpy_of, tolerance
+
+FLOATS = ("float32", "float64")
+
+
+def _random(shape, dtype, seed):
+    return np.random.default_rng(100 + seed).standard_normal(shape).astype(dtype)
+
+
+def _tuple(v, nd):
+    return (v,) * nd if isinstance(v, int) else tuple(v)
+
+
+def ref_pads(padding, sizes, windows, strides):
+    """(low, high) per axis; 'SAME' by tf's rule: out = ceil(n / s), the odd pad at the end."""
+    nd = len(sizes)
+    if padding == "VALID":
+        return [(0, 0)] * nd
+    if padding == "SAME":
+        pads = []
+        for n, w, s in zip(sizes, windows, strides):
+            total = max((math.ceil(n / s) - 1) * s + w - n, 0)
+            pads.append((total // 2, total - total // 2))
+        return pads
+    if isinstance(padding, int):
+        return [(padding, padding)] * nd
+    return [(p, p) if isinstance(p, int) else tuple(p) for p in padding]
+
+
+def ref_conv(x, w, strides, padding, dilations, depthwise=False):
+    """Cross-correlation of x [N, *S, C] with w [*K, C, O] (or [*K, C] depthwise), float64."""
+    x, w = x.astype(np.float64), w.astype(np.float64)
+    nd = x.ndim - 2
+    kernel = w.shape[:nd]
+    s, d = _tuple(strides, nd), _tuple(dilations, nd)
+    windows = [di * (k - 1) + 1 for k, di in zip(kernel, d)]
+    pads = ref_pads(padding, x.shape[1:-1], windows, s)
+    xp = np.pad(x, [(0, 0), *pads, (0, 0)])
+    out_sizes = [(xp.shape[1 + i] - windows[i]) // s[i] + 1 for i in range(nd)]
+    channels = x.shape[-1] if depthwise else w.shape[-1]
+    out = np.zeros((x.shape[0], *out_sizes, channels))
+    for o in np.ndindex(*out_sizes):
+        for tap in np.ndindex(*kernel):
+            at = tuple(oi * si + ti * di for oi, si, ti, di in zip(o, s, tap, d))
+            patch = xp[(slice(None), *at)]
+            out[(slice(None), *o)] += patch * w[tap] if depthwise else patch @ w[tap]
+    return out
+
+
+def ref_conv_transpose(x, w, strides, padding, dilations, out_sizes):
+    """Scatter definition: out[i * s + j * d - low] += x[i] @ w[j].T, with w [*K, O, C]."""
+    x, w = x.astype(np.float64), w.astype(np.float64)
+    nd = x.ndim - 2
+    kernel = w.shape[:nd]
+    s, d = _tuple(strides, nd), _tuple(dilations, nd)
+    windows = [di * (k - 1) + 1 for k, di in zip(kernel, d)]
+    lows = [lo for lo, _ in ref_pads(padding, out_sizes, windows, s)]
+    out = np.zeros((x.shape[0], *out_sizes, w.shape[-2]))
+    for i in np.ndindex(*x.shape[1:-1]):
+        for tap in np.ndindex(*kernel):
+            at = tuple(ii * si + ti * di - lo for ii, si, ti, di, lo in zip(i, s, tap, d, lows))
+            if all(0 <= a < n for a, n in zip(at, out_sizes)):
+                out[(slice(None), *at)] += x[(slice(None), *i)] @ w[tap].T
+    return out
+
+
+def test_conv_namespace_function_and_f(backend):
+    """``ivy.<backend>.conv2d`` and ``ivy.conv2d(..., f=backend)`` on numpy input."""
+    x, w = _random((1, 4, 4, 2), "float64", 3), _random((2, 2, 2, 3), "float64", 4)
+    expected = ref_conv(x, w, 1, "SAME", 1)
+    xp = getattr(ivy, backend)
+    check(xp.conv2d(native(x, backend), native(w, backend), 1, "SAME"), expected, backend)
+    check(ivy.conv2d(x, w, 1, "SAME", f=backend), expected, backend)
+
+
+@pytest.mark.parametrize("dtype", FLOATS)
+@pytest.mark.parametrize(
+    "case",
+    [
+        ((2, 6, 5, 3), (3, 3, 3), 1, "SAME", 1),
+        ((2, 7, 6, 3), (3, 2, 3), 2, "VALID", 1),
+        ((2, 7, 6, 3), (3, 3, 3), 2, "SAME", 2),
+        ((2, 6, 5, 3), (2, 3, 3), (1, 2), [(1, 0), (0, 2)], (2, 1)),
+    ],
+    ids=str,
+)
+def test_depthwise_conv2d(backend, dtype, case):
+    x_shape, w_shape, strides, padding, dilations = case
+    x, w = _random(x_shape, dtype, 5), _random(w_shape, dtype, 6)
+    expected = ref_conv(x, w, strides, padding, dilations, depthwise=True)
+    out = ivy.depthwise_conv2d(
+        native(x, backend), native(w, backend), strides, padding, dilations=dilations
+    )
+    check(out, expected.astype(dtype), backend, **tolerance(dtype, 10))
+
+
+# Fewer examples than the shared profile: jax compiles every new shape.
+GEOMETRY = settings(HYPOTHESIS, max_examples=15)
+
+
+_PADDINGS = st.one_of(
+    st.sampled_from(["SAME", "VALID"]),
+    st.tuples(st.integers(0, 2), st.integers(0, 2)).map(lambda p: [p]),
+)
+
+
+@GEOMETRY
+@given(
+    n=st.integers(1, 7),
+    k=st.integers(1, 3),
+    s=st.integers(1, 3),
+    d=st.integers(1, 2),
+    padding=_PADDINGS,
+)
+def test_conv1d_geometry(backend, n, k, s, d, padding):
+    x, w = _random((1, n, 2), "float64", 13), _random((k, 2, 2), "float64", 14)
+    pads = ref_pads(padding, (n,), (d * (k - 1) + 1,), (s,))
+    if n + sum(pads[0]) < d * (k - 1) + 1:
+        with pytest.raises(ValueError, match="larger than the padded input"):
+            ivy.conv1d(native(x, backend), native(w, backend), s, padding, dilations=d)
+        return
+    out = ivy.conv1d(native(x, backend), native(w, backend), s, padding, dilations=d)
+    check(out, ref_conv(x, w, s, padding, d), backend)
+    # the transposed convolution maps the output back to n entries
+    y = numpy_of(out)
+    back = ivy.conv1d_transpose(
+        native(y, backend), native(w, backend), s, padding, output_shape=(n,), dilations=d
+    )
+    check(back, ref_conv_transpose(y, w, s, padding, d, (n,)), backend)
+
+
+def test_conv_errors(backend):
+    x = native(np.ones((1, 5, 5, 2)), backend)
+    w = native(np.ones((3, 3, 2, 4)), backend)
+    with pytest.raises(ValueError, match=r"rank >= 4, channel-last \[N, H, W, C\]"):
+        ivy.conv2d(native(np.ones((5, 5, 2)), backend), w, 1, "SAME")
+    with pytest.raises(ValueError, match=r"filters of rank 4, \[fh, fw, in, out\]"):
+        ivy.conv2d(x, native(np.ones((3, 3, 2)), backend), 1, "SAME")
+    with pytest.raises(ValueError, match="x has 2 channels"):
+        ivy.conv2d(x, native(np.ones((3, 3, 3, 4)), backend), 1, "SAME")
+    with pytest.raises(ValueError, match="unknown padding 'FULL'"):
+        ivy.conv2d(x, w, 1, "FULL")
+    with pytest.raises(ValueError, match="unknown padding"):
+        ivy.conv2d(x, w, 1, [(1, 1)])  # one pair for two spatial axes
+    with pytest.raises(ValueError, match="unknown padding"):
+        ivy.conv2d(x, w, 1, -1)
+    with pytest.raises(ValueError, match="strides must be a positive int or 2 positive ints"):
+        ivy.conv2d(x, w, 0, "SAME")
+    with pytest.raises(ValueError, match="dilations must be"):
+        ivy.conv2d(x, w, 1, "SAME", dilations=(1, 1, 1))
+    with pytest.raises(ValueError, match="larger than the padded input"):
+        ivy.conv2d(x, native(np.ones((7, 7, 2, 4)), backend), 1, "VALID")
+    with pytest.raises(ValueError, match=r"filters of rank 3, \[fh, fw, C\]"):
+        ivy.depthwise_conv2d(x, w, 1, "SAME")
+    with pytest.raises(ValueError, match=r"\[fh, fw, out, in\]"):
+        ivy.conv2d_transpose(x, native(np.ones((3, 3, 4, 3)), backend), 1, "SAME")
+    with pytest.raises(ValueError, match="does not fit"):
+        ivy.conv2d_transpose(
+            x, native(np.ones((3, 3, 4, 2)), backend), 2, "SAME", output_shape=(12, 10)
+        )
+    with pytest.raises(ValueError, match="has 5 channels but the filters give 4"):
+        ivy.conv2d_transpose(
+            x, native(np.ones((3, 3, 4, 2)), backend), 2, "SAME", output_shape=(1, 10, 10, 5)
+        )
+    with pytest.raises(ValueError, match="output_shape must give the 2 spatial sizes"):
+        ivy.conv2d_transpose(
+            x, native(np.ones((3, 3, 4, 2)), backend), 2, "SAME", output_shape=(10,)
+        )
