@@ -25,6 +25,7 @@ from tests.helpers import (
     check,
     check_gradients,
     native,
+    native_value_and_grads,
     numpy_of,
     reference,
 )
@@ -123,3 +124,22 @@ def _random(shape, seed, scale=1.0):
 )
 def test_activation_gradients(diff_backend, name):
     check_gradients(diff_backend, getattr(ivy, name), [_random((3, 5), 1, 3.0)])
+
+
+# Exact derivatives at 0 and in the tails, where naive forms give NaN (0 * inf).
+TAIL_DERIVATIVES = {
+    "relu": [0.0, 0.0, 1.0],
+    "sigmoid": [0.0, 0.25, 0.0],
+    "softplus": [0.0, 0.5, 1.0],
+    "silu": [0.0, 0.5, 1.0],
+    "elu": [0.0, 1.0, 1.0],
+}
+
+
+@pytest.mark.parametrize("name", sorted(TAIL_DERIVATIVES))
+def test_activation_derivatives_at_zero_and_in_the_tails(diff_backend, name):
+    x = np.array([-1000.0, 0.0, 1000.0])
+    fn = getattr(ivy, name)
+    value, (grad,) = native_value_and_grads(diff_backend, fn, [x], np.ones(3))
+    assert np.isfinite(value)
+    np.testing.assert_allclose(grad, TAIL_DERIVATIVES[name], atol=1e-12)

@@ -1,5 +1,12 @@
 """Tests of the core group ``convolutions`` (``ivy/core/convolutions.py``), on every backend.
 
+Gradients of the nn functions against central finite differences in float64, and compiled runs
+against eager ones, on the differentiable backends.
+
+Gradients are taken with each framework's own autodiff (``torch.autograd.grad``, ``jax.grad``,
+``tf.GradientTape``) of ``sum(fn(*inputs) * weights)``, and compared along random directions
+``v`` with ``(L(inputs + h v) - L(inputs - h v)) / 2h``.
+
 Convolutions and pools (channel-last) against naive numpy float64 loops, on every backend.
 
 The references below loop over output positions and kernel taps, and compute 'SAME' padding from
@@ -16,12 +23,70 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import ivy
-from tests.helpers import HYPOTHESIS, check, native, numpy_of, tolerance
+from tests.helpers import (
+    HYPOTHESIS,
+    check,
+    check_gradients,
+    native,
+    numpy_of,
+    tolerance,
+)
+
+
+def _random(shape, seed, scale=1.0):
+    return scale * np.random.default_rng(60 + seed).standard_normal(shape)
+
+
+CONV_CASES = {
+    "conv2d-same-stride": (
+        lambda x, w: ivy.conv2d(x, w, 2, "SAME"),
+        [(2, 5, 6, 3), (3, 3, 3, 2)],
+    ),
+    "conv2d-dilated-explicit": (
+        lambda x, w: ivy.conv2d(x, w, 1, [(1, 0), (2, 1)], dilations=2),
+        [(1, 5, 6, 2), (2, 3, 2, 3)],
+    ),
+    "conv1d-stride-dilation": (
+        lambda x, w: ivy.conv1d(x, w, 2, "SAME", dilations=2),
+        [(2, 9, 2), (3, 2, 3)],
+    ),
+    "conv3d-dilated": (
+        lambda x, w: ivy.conv3d(x, w, 1, "VALID", dilations=(2, 1, 1)),
+        [(1, 4, 3, 3, 2), (2, 2, 2, 2, 2)],
+    ),
+    "conv2d_transpose": (
+        lambda x, w: ivy.conv2d_transpose(x, w, 2, "SAME", dilations=(1, 2)),
+        [(1, 3, 3, 2), (3, 2, 3, 2)],
+    ),
+    "conv3d_transpose": (
+        lambda x, w: ivy.conv3d_transpose(x, w, (1, 2, 1), "SAME"),
+        [(1, 2, 2, 3, 2), (2, 2, 2, 3, 2)],
+    ),
+    "conv1d_transpose-output_shape": (
+        lambda x, w: ivy.conv1d_transpose(x, w, 2, "VALID", output_shape=(10,)),
+        [(2, 4, 3), (3, 2, 3)],
+    ),
+    "depthwise_conv2d": (
+        lambda x, w: ivy.depthwise_conv2d(x, w, (1, 2), "SAME"),
+        [(2, 5, 5, 3), (3, 3, 3)],
+    ),
+    "max_pool2d": (lambda x: ivy.max_pool2d(x, 2, 2, "SAME"), [(2, 5, 5, 3)]),
+    "avg_pool2d-explicit": (lambda x: ivy.avg_pool2d(x, 3, 2, [(1, 2), 1]), [(2, 5, 5, 3)]),
+    "avg_pool3d": (lambda x: ivy.avg_pool3d(x, 2, 2, "SAME"), [(1, 3, 4, 3, 2)]),
+    "max_pool3d": (lambda x: ivy.max_pool3d(x, 2, 1, "VALID"), [(1, 3, 3, 3, 2)]),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CONV_CASES))
+def test_conv_and_pool_gradients(diff_backend, case):
+    fn, shapes = CONV_CASES[case]
+    check_gradients(diff_backend, fn, [_random(s, i) for i, s in enumerate(shapes)])
+
 
 FLOATS = ("float32", "float64")
 
 
-def _random(shape, dtype, seed):
+def _random_nn_conv(shape, dtype, seed):
     return np.random.default_rng(100 + seed).standard_normal(shape).astype(dtype)
 
 
@@ -82,9 +147,58 @@ def ref_conv_transpose(x, w, strides, padding, dilations, out_sizes):
     return out
 
 
+# (x shape, filter shape, strides, padding, dilations)
+CONV_CASES_nn_conv = {
+    "conv1d": [
+        ((2, 7, 3), (3, 3, 4), 1, "SAME", 1),
+        ((2, 7, 3), (3, 3, 4), 2, "VALID", 1),
+        ((2, 8, 3), (3, 3, 4), 2, "SAME", 2),
+        ((2, 7, 3), (2, 3, 4), 3, "same", 1),
+        ((2, 7, 3), (3, 3, 4), 1, [(1, 2)], 1),
+    ],
+    "conv2d": [
+        ((2, 6, 5, 3), (3, 2, 3, 4), 1, "SAME", 1),
+        ((2, 6, 5, 3), (3, 2, 3, 4), (2, 1), "VALID", 1),
+        ((2, 7, 6, 3), (3, 3, 3, 4), 2, "SAME", (2, 1)),
+        ((2, 6, 5, 3), (3, 2, 3, 4), 1, [(0, 1), (2, 0)], 1),
+        ((2, 6, 5, 3), (3, 3, 3, 4), 2, 1, 1),
+        ((2, 2, 5, 4, 3), (3, 3, 3, 4), 1, "SAME", 1),  # extra leading batch axis
+    ],
+    "conv3d": [
+        ((1, 4, 5, 4, 2), (2, 3, 2, 2, 3), 1, "SAME", 1),
+        ((2, 5, 4, 4, 2), (2, 2, 2, 2, 3), 2, "VALID", 1),
+        ((1, 5, 5, 4, 2), (2, 2, 2, 2, 3), (1, 2, 1), [(1, 0), 1, (0, 2)], (2, 1, 1)),
+    ],
+}
+
+
+def _conv_case_ids():
+    return [
+        pytest.param(name, case, id=f"{name}-{i}")
+        for name, cases in CONV_CASES_nn_conv.items()
+        for i, case in enumerate(cases)
+    ]
+
+
+@pytest.mark.parametrize("dtype", FLOATS)
+@pytest.mark.parametrize(("name", "case"), _conv_case_ids())
+def test_conv(backend, dtype, name, case):
+    x_shape, w_shape, strides, padding, dilations = case
+    x, w = _random_nn_conv(x_shape, dtype, 1), _random_nn_conv(w_shape, dtype, 2)
+    nd = len(w_shape) - 2
+    flat = x.reshape(-1, *x_shape[-nd - 1 :])
+    expected = ref_conv(
+        flat, w, strides, padding.upper() if isinstance(padding, str) else padding, dilations
+    )
+    expected = expected.reshape(x_shape[: -nd - 1] + expected.shape[1:])
+    fn = getattr(ivy, name)
+    out = fn(native(x, backend), native(w, backend), strides, padding, dilations=dilations)
+    check(out, expected.astype(dtype), backend, **tolerance(dtype, 10))
+
+
 def test_conv_namespace_function_and_f(backend):
     """``ivy.<backend>.conv2d`` and ``ivy.conv2d(..., f=backend)`` on numpy input."""
-    x, w = _random((1, 4, 4, 2), "float64", 3), _random((2, 2, 2, 3), "float64", 4)
+    x, w = _random_nn_conv((1, 4, 4, 2), "float64", 3), _random_nn_conv((2, 2, 2, 3), "float64", 4)
     expected = ref_conv(x, w, 1, "SAME", 1)
     xp = getattr(ivy, backend)
     check(xp.conv2d(native(x, backend), native(w, backend), 1, "SAME"), expected, backend)
@@ -104,12 +218,89 @@ def test_conv_namespace_function_and_f(backend):
 )
 def test_depthwise_conv2d(backend, dtype, case):
     x_shape, w_shape, strides, padding, dilations = case
-    x, w = _random(x_shape, dtype, 5), _random(w_shape, dtype, 6)
+    x, w = _random_nn_conv(x_shape, dtype, 5), _random_nn_conv(w_shape, dtype, 6)
     expected = ref_conv(x, w, strides, padding, dilations, depthwise=True)
     out = ivy.depthwise_conv2d(
         native(x, backend), native(w, backend), strides, padding, dilations=dilations
     )
     check(out, expected.astype(dtype), backend, **tolerance(dtype, 10))
+
+
+# (x shape, filter shape [*K, out, in], strides, padding, dilations, output_shape, out sizes)
+TRANSPOSE_CASES = {
+    "conv1d_transpose": [
+        ((2, 4, 3), (3, 2, 3), 2, "SAME", 1, None, (8,)),
+        ((2, 4, 3), (3, 2, 3), 2, "VALID", 1, None, (9,)),
+        ((2, 4, 3), (3, 2, 3), 2, "SAME", 1, (7,), (7,)),  # odd output size
+        ((2, 4, 3), (3, 2, 3), 2, "VALID", 1, [2, 10, 2], (10,)),  # extended with zeros
+        ((2, 4, 3), (3, 2, 3), 1, "SAME", 2, None, (4,)),
+        ((2, 4, 3), (3, 2, 3), 3, [(1, 2)], 1, None, (9,)),
+    ],
+    "conv2d_transpose": [
+        ((2, 3, 4, 3), (3, 2, 2, 3), 2, "SAME", 1, None, (6, 8)),
+        ((2, 3, 4, 3), (3, 2, 2, 3), (2, 1), "VALID", (1, 2), None, (7, 6)),
+        ((2, 3, 3, 3), (3, 3, 2, 3), 2, [(1, 1), (0, 2)], 1, None, (5, 5)),
+        ((2, 3, 3, 3), (3, 3, 2, 3), 2, "SAME", 2, (5, 6), (5, 6)),
+    ],
+    "conv3d_transpose": [
+        ((1, 2, 3, 2, 2), (2, 2, 3, 3, 2), 2, "SAME", 1, None, (4, 6, 4)),
+        ((1, 2, 2, 2, 2), (2, 2, 2, 3, 2), (1, 2, 1), "VALID", 1, None, (3, 4, 3)),
+    ],
+}
+
+
+def _transpose_case_ids():
+    return [
+        pytest.param(name, case, id=f"{name}-{i}")
+        for name, cases in TRANSPOSE_CASES.items()
+        for i, case in enumerate(cases)
+    ]
+
+
+@pytest.mark.parametrize("dtype", FLOATS)
+@pytest.mark.parametrize(("name", "case"), _transpose_case_ids())
+def test_conv_transpose(backend, dtype, name, case):
+    x_shape, w_shape, strides, padding, dilations, output_shape, out_sizes = case
+    x, w = _random_nn_conv(x_shape, dtype, 7), _random_nn_conv(w_shape, dtype, 8)
+    expected = ref_conv_transpose(x, w, strides, padding, dilations, out_sizes)
+    fn = getattr(ivy, name)
+    out = fn(
+        native(x, backend),
+        native(w, backend),
+        strides,
+        padding,
+        output_shape=output_shape,
+        dilations=dilations,
+    )
+    check(out, expected.astype(dtype), backend, **tolerance(dtype, 10))
+
+
+def test_conv_transpose_is_the_adjoint_of_conv(backend):
+    """<conv(y, w), x> == <y, conv_transpose(x, w)>: the transpose is the input gradient."""
+    w = _random_nn_conv(
+        (3, 2, 3, 4), "float64", 9
+    )  # conv: [fh, fw, in=3, out=4]; transpose: out=3, in=4
+    y = _random_nn_conv((2, 7, 6, 3), "float64", 10)
+    for strides, padding, dilations in [
+        (2, "SAME", 1),
+        ((1, 2), "VALID", (2, 1)),
+        (2, [(1, 2), 0], 1),
+    ]:
+        conv = numpy_of(
+            ivy.conv2d(
+                native(y, backend), native(w, backend), strides, padding, dilations=dilations
+            )
+        )
+        x = _random_nn_conv(conv.shape, "float64", 11)
+        back = ivy.conv2d_transpose(
+            native(x, backend),
+            native(w, backend),
+            strides,
+            padding,
+            output_shape=y.shape[1:3],
+            dilations=dilations,
+        )
+        np.testing.assert_allclose(np.sum(conv * x), np.sum(y * numpy_of(back)), rtol=1e-12)
 
 
 # Fewer examples than the shared profile: jax compiles every new shape.
@@ -131,7 +322,7 @@ _PADDINGS = st.one_of(
     padding=_PADDINGS,
 )
 def test_conv1d_geometry(backend, n, k, s, d, padding):
-    x, w = _random((1, n, 2), "float64", 13), _random((k, 2, 2), "float64", 14)
+    x, w = _random_nn_conv((1, n, 2), "float64", 13), _random_nn_conv((k, 2, 2), "float64", 14)
     pads = ref_pads(padding, (n,), (d * (k - 1) + 1,), (s,))
     if n + sum(pads[0]) < d * (k - 1) + 1:
         with pytest.raises(ValueError, match="larger than the padded input"):

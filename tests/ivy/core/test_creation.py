@@ -5,13 +5,6 @@ floats and floating results, int64 for Python ints and integer ranges).
 
 meshgrid, tril, triu and from_dlpack on every backend, against numpy references written out
 with indexing (values are copied, never computed: results must be exact).
-
-Gradients of the nn functions against central finite differences in float64, and compiled runs
-against eager ones, on the differentiable backends.
-
-Gradients are taken with each framework's own autodiff (``torch.autograd.grad``, ``jax.grad``,
-``tf.GradientTape``) of ``sum(fn(*inputs) * weights)``, and compared along random directions
-``v`` with ``(L(inputs + h v) - L(inputs - h v)) / 2h``.
 """
 
 from __future__ import annotations
@@ -22,18 +15,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import ivy
-from tests.helpers import (
-    HYPOTHESIS,
-    api,
-    api_f,
-    cast,
-    check,
-    check_gradients,
-    check_meta,
-    native,
-    native_value_and_grads,
-    numpy_of,
-)
+from tests.helpers import HYPOTHESIS, api, api_f, cast, check, check_meta, native, numpy_of
 from tests.ivy.strategies import arrays, reals
 
 # object, expected numpy array (its dtype is the expected default dtype)
@@ -399,37 +381,3 @@ def test_from_dlpack_shares_memory_by_default(mutable_backend):
 def test_from_dlpack_infers_the_producer_without_f(backend):
     a = np.array([1.5, 2.5], np.float32)
     _exact(ivy.from_dlpack(native(a, backend)), a, backend)
-
-
-def _random(shape, seed, scale=1.0):
-    return scale * np.random.default_rng(60 + seed).standard_normal(shape)
-
-
-def test_attention_gradients(diff_backend):
-    mask = np.tril(np.ones((3, 4), bool), k=1)
-
-    def fn(q, k, v):
-        return ivy.scaled_dot_product_attention(q, k, v, mask=native(mask, diff_backend))
-
-    check_gradients(
-        diff_backend, fn, [_random((2, 3, 5), 1), _random((2, 4, 5), 2), _random((2, 4, 2), 3)]
-    )
-
-
-# Exact derivatives at 0 and in the tails, where naive forms give NaN (0 * inf).
-TAIL_DERIVATIVES = {
-    "relu": [0.0, 0.0, 1.0],
-    "sigmoid": [0.0, 0.25, 0.0],
-    "softplus": [0.0, 0.5, 1.0],
-    "silu": [0.0, 0.5, 1.0],
-    "elu": [0.0, 1.0, 1.0],
-}
-
-
-@pytest.mark.parametrize("name", sorted(TAIL_DERIVATIVES))
-def test_activation_derivatives_at_zero_and_in_the_tails(diff_backend, name):
-    x = np.array([-1000.0, 0.0, 1000.0])
-    fn = getattr(ivy, name)
-    value, (grad,) = native_value_and_grads(diff_backend, fn, [x], np.ones(3))
-    assert np.isfinite(value)
-    np.testing.assert_allclose(grad, TAIL_DERIVATIVES[name], atol=1e-12)

@@ -692,21 +692,6 @@ def test_bitwise_promotion_and_python_ints(backend, name):
         )
 
 
-def test_clip_gradients(diff_backend):
-    rng = np.random.default_rng(15)
-    a, b = rng.standard_normal((2, 3)), rng.standard_normal(4)
-
-    def by_vector(x):
-        return ivy.clip_vector_norm(x, 1.0, axis=1)  # both rows are longer than 1
-
-    def by_global(a, b):
-        clipped, norm = ivy.clip_by_global_norm({"a": a, "b": b}, 1.0)
-        return ivy.concat([ivy.reshape(clipped["a"], (-1,)), clipped["b"], norm[None]])
-
-    check_gradients(diff_backend, by_vector, [a * 3])
-    check_gradients(diff_backend, by_global, [a, b])
-
-
 NAN_TO_NUM_ARGS = [{}, {"nan": -1.0, "posinf": 9.0, "neginf": -9.0}, {"posinf": 1e300}]
 
 

@@ -363,70 +363,14 @@ def _random(shape, seed, scale=1.0):
     return scale * np.random.default_rng(60 + seed).standard_normal(shape)
 
 
-CONV_CASES = {
-    "conv2d-same-stride": (
-        lambda x, w: ivy.conv2d(x, w, 2, "SAME"),
-        [(2, 5, 6, 3), (3, 3, 3, 2)],
-    ),
-    "conv2d-dilated-explicit": (
-        lambda x, w: ivy.conv2d(x, w, 1, [(1, 0), (2, 1)], dilations=2),
-        [(1, 5, 6, 2), (2, 3, 2, 3)],
-    ),
-    "conv1d-stride-dilation": (
-        lambda x, w: ivy.conv1d(x, w, 2, "SAME", dilations=2),
-        [(2, 9, 2), (3, 2, 3)],
-    ),
-    "conv3d-dilated": (
-        lambda x, w: ivy.conv3d(x, w, 1, "VALID", dilations=(2, 1, 1)),
-        [(1, 4, 3, 3, 2), (2, 2, 2, 2, 2)],
-    ),
-    "conv2d_transpose": (
-        lambda x, w: ivy.conv2d_transpose(x, w, 2, "SAME", dilations=(1, 2)),
-        [(1, 3, 3, 2), (3, 2, 3, 2)],
-    ),
-    "conv3d_transpose": (
-        lambda x, w: ivy.conv3d_transpose(x, w, (1, 2, 1), "SAME"),
-        [(1, 2, 2, 3, 2), (2, 2, 2, 3, 2)],
-    ),
-    "conv1d_transpose-output_shape": (
-        lambda x, w: ivy.conv1d_transpose(x, w, 2, "VALID", output_shape=(10,)),
-        [(2, 4, 3), (3, 2, 3)],
-    ),
-    "depthwise_conv2d": (
-        lambda x, w: ivy.depthwise_conv2d(x, w, (1, 2), "SAME"),
-        [(2, 5, 5, 3), (3, 3, 3)],
-    ),
-    "max_pool2d": (lambda x: ivy.max_pool2d(x, 2, 2, "SAME"), [(2, 5, 5, 3)]),
-    "avg_pool2d-explicit": (lambda x: ivy.avg_pool2d(x, 3, 2, [(1, 2), 1]), [(2, 5, 5, 3)]),
-    "avg_pool3d": (lambda x: ivy.avg_pool3d(x, 2, 2, "SAME"), [(1, 3, 4, 3, 2)]),
-    "max_pool3d": (lambda x: ivy.max_pool3d(x, 2, 1, "VALID"), [(1, 3, 3, 3, 2)]),
-}
+def test_attention_gradients(diff_backend):
+    mask = np.tril(np.ones((3, 4), bool), k=1)
 
+    def fn(q, k, v):
+        return ivy.scaled_dot_product_attention(q, k, v, mask=native(mask, diff_backend))
 
-@pytest.mark.parametrize("case", sorted(CONV_CASES))
-def test_conv_and_pool_gradients(diff_backend, case):
-    fn, shapes = CONV_CASES[case]
-    check_gradients(diff_backend, fn, [_random(s, i) for i, s in enumerate(shapes)])
-
-
-LOSS_CASES = {
-    "mse": lambda p, t: ivy.mse(p, t),
-    "huber": lambda p, t: ivy.huber(p, t, delta=0.7, reduction="sum"),
-    "bce-probabilities": lambda p, t: ivy.binary_cross_entropy(
-        ivy.sigmoid(p), ivy.sigmoid(t), reduction="none"
-    ),
-    "bce-logits": lambda p, t: ivy.binary_cross_entropy(p, ivy.sigmoid(t), from_logits=True),
-    "cce-logits": lambda p, t: ivy.categorical_cross_entropy(p, ivy.softmax(t), from_logits=True),
-    "cce-probabilities": lambda p, t: ivy.categorical_cross_entropy(
-        ivy.softmax(p, axis=0), ivy.softmax(t, axis=0), axis=0, reduction="none"
-    ),
-}
-
-
-@pytest.mark.parametrize("case", sorted(LOSS_CASES))
-def test_loss_gradients(diff_backend, case):
     check_gradients(
-        diff_backend, LOSS_CASES[case], [_random((3, 4), 1, 2.0), _random((3, 4), 2, 2.0)]
+        diff_backend, fn, [_random((2, 3, 5), 1), _random((2, 4, 5), 2), _random((2, 4, 2), 3)]
     )
 
 

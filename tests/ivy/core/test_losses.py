@@ -1,5 +1,12 @@
 """Tests of the core group ``losses`` (``ivy/core/losses.py``), on every backend.
 
+Gradients of the nn functions against central finite differences in float64, and compiled runs
+against eager ones, on the differentiable backends.
+
+Gradients are taken with each framework's own autodiff (``torch.autograd.grad``, ``jax.grad``,
+``tf.GradientTape``) of ``sum(fn(*inputs) * weights)``, and compared along random directions
+``v`` with ``(L(inputs + h v) - L(inputs - h v)) / 2h``.
+
 Losses against numpy float64 references, on every backend, in float32 and float64.
 """
 
@@ -9,7 +16,58 @@ import numpy as np
 import pytest
 
 import ivy
-from tests.helpers import api, check, native, tolerance
+from tests.helpers import (
+    api,
+    check,
+    check_gradients,
+    native,
+    native_value_and_grads,
+    tolerance,
+)
+
+
+def _random(shape, seed, scale=1.0):
+    return scale * np.random.default_rng(60 + seed).standard_normal(shape)
+
+
+LOSS_CASES = {
+    "mse": lambda p, t: ivy.mse(p, t),
+    "huber": lambda p, t: ivy.huber(p, t, delta=0.7, reduction="sum"),
+    "bce-probabilities": lambda p, t: ivy.binary_cross_entropy(
+        ivy.sigmoid(p), ivy.sigmoid(t), reduction="none"
+    ),
+    "bce-logits": lambda p, t: ivy.binary_cross_entropy(p, ivy.sigmoid(t), from_logits=True),
+    "cce-logits": lambda p, t: ivy.categorical_cross_entropy(p, ivy.softmax(t), from_logits=True),
+    "cce-probabilities": lambda p, t: ivy.categorical_cross_entropy(
+        ivy.softmax(p, axis=0), ivy.softmax(t, axis=0), axis=0, reduction="none"
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(LOSS_CASES))
+def test_loss_gradients(diff_backend, case):
+    check_gradients(
+        diff_backend, LOSS_CASES[case], [_random((3, 4), 1, 2.0), _random((3, 4), 2, 2.0)]
+    )
+
+
+def test_cross_entropy_gradients_from_extreme_logits(diff_backend):
+    z = np.array([[-1000.0, 0.0, 1000.0]])
+    t = np.array([[1.0, 0.0, 0.0]])
+
+    def bce(z):
+        return ivy.binary_cross_entropy(
+            z, native(t, diff_backend), from_logits=True, reduction="sum"
+        )
+
+    def cce(z):
+        return ivy.categorical_cross_entropy(z, native(t, diff_backend), from_logits=True)
+
+    _, (g,) = native_value_and_grads(diff_backend, bce, [z], np.ones(()))
+    np.testing.assert_allclose(g, [[-1.0, 0.5, 1.0]], atol=1e-12)
+    _, (g,) = native_value_and_grads(diff_backend, cce, [z], np.ones(()))
+    np.testing.assert_allclose(g, [[-1.0, 0.0, 1.0]], atol=1e-12)
+
 
 FLOATS = ("float32", "float64")
 

@@ -18,6 +18,8 @@ from hypothesis import strategies as st
 import ivy
 from tests.helpers import HYPOTHESIS, check, native
 
+FLOATS = ("float32", "float64")
+
 
 def _random(shape, dtype, seed):
     return np.random.default_rng(100 + seed).standard_normal(shape).astype(dtype)
@@ -60,6 +62,44 @@ def ref_pool(x, kernel, strides, padding, average):
         window = x[(slice(None), *box)].reshape(x.shape[0], -1, x.shape[-1])
         out[(slice(None), *o)] = window.mean(1) if average else window.max(1)
     return out
+
+
+# (x shape, kernel, strides, padding)
+POOL_CASES = {
+    1: [((2, 7, 3), 2, 2, "SAME"), ((2, 7, 3), 3, 2, "VALID"), ((2, 7, 3), 3, 1, [(2, 1)])],
+    2: [
+        ((2, 5, 6, 3), 2, 2, "SAME"),
+        ((2, 5, 6, 3), (3, 2), (2, 1), "VALID"),
+        ((2, 5, 6, 3), 3, 2, "SAME"),
+        ((2, 5, 6, 3), (3, 3), 1, [(0, 2), 1]),
+        ((2, 2, 5, 6, 3), 2, 2, "VALID"),  # extra leading batch axis
+    ],
+    3: [
+        ((1, 5, 4, 5, 2), 2, 2, "SAME"),
+        ((2, 4, 5, 4, 2), (3, 2, 2), (1, 2, 1), [(1, 1), 0, (0, 1)]),
+    ],
+}
+
+
+def _pool_case_ids():
+    return [
+        pytest.param(nd, case, id=f"{nd}d-{i}")
+        for nd, cases in POOL_CASES.items()
+        for i, case in enumerate(cases)
+    ]
+
+
+@pytest.mark.parametrize("kind", ["max", "avg"])
+@pytest.mark.parametrize("dtype", FLOATS)
+@pytest.mark.parametrize(("nd", "case"), _pool_case_ids())
+def test_pool(backend, dtype, kind, nd, case):
+    x_shape, kernel, strides, padding = case
+    x = _random(x_shape, dtype, 12)
+    flat = x.reshape(-1, *x_shape[-nd - 1 :])
+    expected = ref_pool(flat, kernel, strides, padding, kind == "avg")
+    expected = expected.reshape(x_shape[: -nd - 1] + expected.shape[1:])
+    fn = getattr(ivy, f"{kind}_pool{nd}d")
+    check(fn(native(x, backend), kernel, strides, padding), expected.astype(dtype), backend)
 
 
 # Fewer examples than the shared profile: jax compiles every new shape.

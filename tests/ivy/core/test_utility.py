@@ -9,11 +9,6 @@ to_framework.
 to_numpy, to_list, shape, dtype and dev on every backend.
 
 all, any and diff on every backend, against references written as Python loops.
-
-Convolutions and pools (channel-last) against naive numpy float64 loops, on every backend.
-
-The references below loop over output positions and kernel taps, and compute 'SAME' padding from
-tf's documented rule; the tf backend passes 'SAME' to tf itself, so the rule is checked too.
 """
 
 from __future__ import annotations
@@ -35,7 +30,6 @@ from tests.helpers import (
     is_native,
     native,
     numpy_of,
-    tolerance,
 )
 from tests.ivy.strategies import BROADCAST_PAIRS, arrays, axis_arguments, normalize_axis
 
@@ -392,159 +386,6 @@ def test_diff_prepend_and_append(backend):
             backend,
         )
         check(fn(native(a, backend)), _diff_reference(a, -1, 1), backend)
-
-
-FLOATS = ("float32", "float64")
-
-
-def _random(shape, dtype, seed):
-    return np.random.default_rng(100 + seed).standard_normal(shape).astype(dtype)
-
-
-def _tuple(v, nd):
-    return (v,) * nd if isinstance(v, int) else tuple(v)
-
-
-def ref_pads(padding, sizes, windows, strides):
-    """(low, high) per axis; 'SAME' by tf's rule: out = ceil(n / s), the odd pad at the end."""
-    nd = len(sizes)
-    if padding == "VALID":
-        return [(0, 0)] * nd
-    if padding == "SAME":
-        pads = []
-        for n, w, s in zip(sizes, windows, strides):
-            total = max((math.ceil(n / s) - 1) * s + w - n, 0)
-            pads.append((total // 2, total - total // 2))
-        return pads
-    if isinstance(padding, int):
-        return [(padding, padding)] * nd
-    return [(p, p) if isinstance(p, int) else tuple(p) for p in padding]
-
-
-def ref_conv(x, w, strides, padding, dilations, depthwise=False):
-    """Cross-correlation of x [N, *S, C] with w [*K, C, O] (or [*K, C] depthwise), float64."""
-    x, w = x.astype(np.float64), w.astype(np.float64)
-    nd = x.ndim - 2
-    kernel = w.shape[:nd]
-    s, d = _tuple(strides, nd), _tuple(dilations, nd)
-    windows = [di * (k - 1) + 1 for k, di in zip(kernel, d)]
-    pads = ref_pads(padding, x.shape[1:-1], windows, s)
-    xp = np.pad(x, [(0, 0), *pads, (0, 0)])
-    out_sizes = [(xp.shape[1 + i] - windows[i]) // s[i] + 1 for i in range(nd)]
-    channels = x.shape[-1] if depthwise else w.shape[-1]
-    out = np.zeros((x.shape[0], *out_sizes, channels))
-    for o in np.ndindex(*out_sizes):
-        for tap in np.ndindex(*kernel):
-            at = tuple(oi * si + ti * di for oi, si, ti, di in zip(o, s, tap, d))
-            patch = xp[(slice(None), *at)]
-            out[(slice(None), *o)] += patch * w[tap] if depthwise else patch @ w[tap]
-    return out
-
-
-def ref_pool(x, kernel, strides, padding, average):
-    """Max or mean over each window's real entries (padding never counts), float64."""
-    x = x.astype(np.float64)
-    nd = x.ndim - 2
-    k, s = _tuple(kernel, nd), _tuple(strides, nd)
-    pads = ref_pads(padding, x.shape[1:-1], k, s)
-    sizes = x.shape[1:-1]
-    out_sizes = [(n + lo + hi - ki) // si + 1 for n, (lo, hi), ki, si in zip(sizes, pads, k, s)]
-    out = np.zeros((x.shape[0], *out_sizes, x.shape[-1]))
-    for o in np.ndindex(*out_sizes):
-        box = []
-        for oi, si, ki, (lo, _), n in zip(o, s, k, pads, sizes):
-            start = oi * si - lo
-            box.append(slice(max(start, 0), min(start + ki, n)))
-        window = x[(slice(None), *box)].reshape(x.shape[0], -1, x.shape[-1])
-        out[(slice(None), *o)] = window.mean(1) if average else window.max(1)
-    return out
-
-
-# (x shape, filter shape, strides, padding, dilations)
-CONV_CASES = {
-    "conv1d": [
-        ((2, 7, 3), (3, 3, 4), 1, "SAME", 1),
-        ((2, 7, 3), (3, 3, 4), 2, "VALID", 1),
-        ((2, 8, 3), (3, 3, 4), 2, "SAME", 2),
-        ((2, 7, 3), (2, 3, 4), 3, "same", 1),
-        ((2, 7, 3), (3, 3, 4), 1, [(1, 2)], 1),
-    ],
-    "conv2d": [
-        ((2, 6, 5, 3), (3, 2, 3, 4), 1, "SAME", 1),
-        ((2, 6, 5, 3), (3, 2, 3, 4), (2, 1), "VALID", 1),
-        ((2, 7, 6, 3), (3, 3, 3, 4), 2, "SAME", (2, 1)),
-        ((2, 6, 5, 3), (3, 2, 3, 4), 1, [(0, 1), (2, 0)], 1),
-        ((2, 6, 5, 3), (3, 3, 3, 4), 2, 1, 1),
-        ((2, 2, 5, 4, 3), (3, 3, 3, 4), 1, "SAME", 1),  # extra leading batch axis
-    ],
-    "conv3d": [
-        ((1, 4, 5, 4, 2), (2, 3, 2, 2, 3), 1, "SAME", 1),
-        ((2, 5, 4, 4, 2), (2, 2, 2, 2, 3), 2, "VALID", 1),
-        ((1, 5, 5, 4, 2), (2, 2, 2, 2, 3), (1, 2, 1), [(1, 0), 1, (0, 2)], (2, 1, 1)),
-    ],
-}
-
-
-def _conv_case_ids():
-    return [
-        pytest.param(name, case, id=f"{name}-{i}")
-        for name, cases in CONV_CASES.items()
-        for i, case in enumerate(cases)
-    ]
-
-
-@pytest.mark.parametrize("dtype", FLOATS)
-@pytest.mark.parametrize(("name", "case"), _conv_case_ids())
-def test_conv(backend, dtype, name, case):
-    x_shape, w_shape, strides, padding, dilations = case
-    x, w = _random(x_shape, dtype, 1), _random(w_shape, dtype, 2)
-    nd = len(w_shape) - 2
-    flat = x.reshape(-1, *x_shape[-nd - 1 :])
-    expected = ref_conv(
-        flat, w, strides, padding.upper() if isinstance(padding, str) else padding, dilations
-    )
-    expected = expected.reshape(x_shape[: -nd - 1] + expected.shape[1:])
-    fn = getattr(ivy, name)
-    out = fn(native(x, backend), native(w, backend), strides, padding, dilations=dilations)
-    check(out, expected.astype(dtype), backend, **tolerance(dtype, 10))
-
-
-# (x shape, kernel, strides, padding)
-POOL_CASES = {
-    1: [((2, 7, 3), 2, 2, "SAME"), ((2, 7, 3), 3, 2, "VALID"), ((2, 7, 3), 3, 1, [(2, 1)])],
-    2: [
-        ((2, 5, 6, 3), 2, 2, "SAME"),
-        ((2, 5, 6, 3), (3, 2), (2, 1), "VALID"),
-        ((2, 5, 6, 3), 3, 2, "SAME"),
-        ((2, 5, 6, 3), (3, 3), 1, [(0, 2), 1]),
-        ((2, 2, 5, 6, 3), 2, 2, "VALID"),  # extra leading batch axis
-    ],
-    3: [
-        ((1, 5, 4, 5, 2), 2, 2, "SAME"),
-        ((2, 4, 5, 4, 2), (3, 2, 2), (1, 2, 1), [(1, 1), 0, (0, 1)]),
-    ],
-}
-
-
-def _pool_case_ids():
-    return [
-        pytest.param(nd, case, id=f"{nd}d-{i}")
-        for nd, cases in POOL_CASES.items()
-        for i, case in enumerate(cases)
-    ]
-
-
-@pytest.mark.parametrize("kind", ["max", "avg"])
-@pytest.mark.parametrize("dtype", FLOATS)
-@pytest.mark.parametrize(("nd", "case"), _pool_case_ids())
-def test_pool(backend, dtype, kind, nd, case):
-    x_shape, kernel, strides, padding = case
-    x = _random(x_shape, dtype, 12)
-    flat = x.reshape(-1, *x_shape[-nd - 1 :])
-    expected = ref_pool(flat, kernel, strides, padding, kind == "avg")
-    expected = expected.reshape(x_shape[: -nd - 1] + expected.shape[1:])
-    fn = getattr(ivy, f"{kind}_pool{nd}d")
-    check(fn(native(x, backend), kernel, strides, padding), expected.astype(dtype), backend)
 
 
 def test_every_group_has_its_test_file():
