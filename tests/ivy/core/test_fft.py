@@ -27,6 +27,7 @@ COMPLEX_OF = {"float32": "complex64", "float64": "complex128"}
 
 
 REAL_OF = {"complex64": "float32", "complex128": "float64", "float32": "float32"}
+REAL_OF["float64"] = "float64"
 
 
 NORMS = ["backward", "ortho", "forward"]
