@@ -8,11 +8,11 @@ functions on the fast path (same-dtype tensors, small Python scalars) and falls 
 from __future__ import annotations
 
 import contextlib
-from functools import reduce
 
 import numpy as np
 import tensorflow as tf
 
+from ivy.core import _dtype_rules as rules
 from ivy.dtypes import DTYPE_NAMES
 
 NATIVE_DTYPES = {name: tf.as_dtype(name) for name in DTYPE_NAMES}
@@ -37,7 +37,6 @@ REFUSED = (
 )
 
 _DEFAULT_OF_KIND = {0: tf.bool, 1: tf.int64, 2: tf.float32, 3: tf.complex64}
-_COMPLEX_OF = {tf.float64: tf.complex128}
 _DOWNCAST = {np.dtype(np.float64): np.float32, np.dtype(np.complex128): np.complex64}
 _NULL_SCOPE = contextlib.nullcontext()
 # Scalars, numpy's included, are weak: they take the dtype of the arrays beside them.
@@ -98,31 +97,24 @@ def _scalar_kind(value) -> int:
 
 
 def promote_types(a: tf.DType, b: tf.DType) -> tf.DType:
-    """Array API promotion of two dtypes; an integer or bool with a floating dtype gives the
-    floating one (numpy would widen int64 + float32 to float64)."""
+    """Array API promotion of two dtypes, by ivy's one table (``ivy/core/_dtype_rules.py``); an
+    integer or bool with a floating dtype gives the floating one."""
     if a == b:
         return a
-    ka, kb = kind(a), kind(b)
-    if min(ka, kb) <= 1 < max(ka, kb):
-        return a if ka > kb else b
-    return tf.as_dtype(np.promote_types(a.as_numpy_dtype, b.as_numpy_dtype))
+    return NATIVE_DTYPES[rules.promote(a.name, b.name)]
 
 
 def result_type(*values) -> tf.DType:
-    """Result dtype of ``values`` (tensors, arrays, scalars) by Array API rules: scalars take the
-    dtype of the arrays unless they are of a higher kind (then the default dtype of their kind,
-    complex keeping float64's precision)."""
-    scalars = [v for v in values if isinstance(v, _SCALARS)]
-    arrays = [default_dtype_of_value(v) for v in values if not isinstance(v, _SCALARS)]
+    """Result dtype of ``values`` (tensors, arrays, scalars) by ivy's rules
+    (``ivy/core/_dtype_rules.py``): scalars take the dtype of the arrays unless they are of a
+    higher kind (then the default dtype of their kind, complex keeping float64's precision)."""
+    scalars = [
+        v.item() if isinstance(v, np.generic) else v for v in values if isinstance(v, _SCALARS)
+    ]
+    arrays = [default_dtype_of_value(v).name for v in values if not isinstance(v, _SCALARS)]
     if not arrays:
-        arrays = [_DEFAULT_OF_KIND[max(_scalar_kind(s) for s in scalars)]]
-    dtype = reduce(promote_types, arrays)
-    top = max((_scalar_kind(s) for s in scalars), default=0)
-    if top <= kind(dtype):
-        return dtype
-    if top == 3 and kind(dtype) == 2:
-        return _COMPLEX_OF.get(dtype, tf.complex64)
-    return _DEFAULT_OF_KIND[top]
+        arrays = [_DEFAULT_OF_KIND[max(_scalar_kind(s) for s in scalars)].name]
+    return NATIVE_DTYPES[rules.result_type(arrays, scalars)]
 
 
 def fast(value) -> bool:
