@@ -35,7 +35,7 @@ FAR_SPACING = 1e10
 
 
 def downsampled_image_dims_from_desired_num_pixels(
-    image_dims: Shape, num_pixels: int, maximum: bool = False
+    image_dims: Shape, num_pixels: int, maximum: bool = False, *, f: Framework = None
 ) -> tuple:
     """Image dimensions with about ``num_pixels`` pixels and the aspect ratio of ``image_dims``.
 
@@ -43,6 +43,7 @@ def downsampled_image_dims_from_desired_num_pixels(
         image_dims: ``(height, width)`` of the original image.
         num_pixels: the desired number of pixels.
         maximum: never exceed ``num_pixels`` (round down) instead of rounding to nearest.
+        f: accepted for uniformity with the other functions; the result is plain Python.
 
     Returns:
         ``([height, width], height * width)``.
