@@ -21,6 +21,12 @@ CHANNELS = {
 }
 
 
+def index_dtype(xp):
+    """The backend's default integer dtype, for indices: int64, or int32 where 64-bit types
+    are disabled (jax without ``jax_enable_x64``)."""
+    return xp.dtype(xp.arange(1))
+
+
 def shape_of(xp, x) -> tuple:
     return tuple(xp.shape(x))
 

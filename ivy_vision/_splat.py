@@ -14,7 +14,7 @@ from ivy_vision import _common as C
 
 
 def pixel_indices(xp, x, y, valid, image_dims):
-    """Flat indices ``[*B, N]`` (int64) of the nearest pixels of the points ``(x, y)``, each
+    """Flat indices ``[*B, N]`` (the default integer dtype) of the nearest pixels of the points ``(x, y)``, each
     ``[*B, N]`` (``floor(x + 0.5)``), ``H*W`` where invalid or outside; and the validity."""
     h, w = image_dims
     col = xp.floor(x + 0.5)
@@ -25,8 +25,8 @@ def pixel_indices(xp, x, y, valid, image_dims):
     if valid is not None:
         inside = xp.logical_and(inside, valid)
     zero = xp.zeros_like(col)
-    col = xp.astype(xp.where(inside, col, zero), "int64")
-    row = xp.astype(xp.where(inside, row, zero), "int64")
+    col = xp.astype(xp.where(inside, col, zero), C.index_dtype(xp))
+    row = xp.astype(xp.where(inside, row, zero), C.index_dtype(xp))
     flat = xp.where(inside, row * w + col, xp.full_like(row, h * w))
     return flat, inside
 

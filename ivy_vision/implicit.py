@@ -154,7 +154,7 @@ def sample_images(
     dims, count = downsampled_image_dims_from_desired_num_pixels((h, w), num_pixels)
     coords = create_sampled_pixel_coords_image((h, w), dims, batch, randomize=randomize,
                                                dtype="float32", f=xp)
-    flat = xp.astype(coords[..., 1] * w + coords[..., 0], "int64")
+    flat = xp.astype(coords[..., 1] * w + coords[..., 0], C.index_dtype(xp))
     flat = xp.reshape(flat, (*batch, count, 1))
     channels = [C.shape_of(xp, image)[-1] for image in list_of_images]
     combined = xp.concat([xp.reshape(image, (*batch, h * w, -1)) for image in list_of_images],

@@ -77,7 +77,7 @@ def rasterize_triangles(
     Returns:
         ``(depth [batch_shape, h, w, 1], triangle_ids [batch_shape, h, w, 1],
         barycentric_coords [batch_shape, h, w, 3])``: the nearest triangle's depth (0 where
-        none), its index (int64, -1 where none) and the barycentric coordinates of the pixel
+        none), its index (the default integer dtype, -1 where none) and the barycentric coordinates of the pixel
         centre in it (0 where none).
 
     Example:
@@ -101,7 +101,8 @@ def rasterize_triangles(
     grid = C.pixel_grid(xp, (h, w), xp.dtype(tri), xp.dev(tri), False)
     px, py = xp.reshape(grid[..., 0], (h * w,)), xp.reshape(grid[..., 1], (h * w,))
     best = xp.full((b, h * w), math.inf, dtype=xp.dtype(tri), device=xp.dev(tri))
-    best_id = xp.full((b, h * w), -1, dtype="int64", device=xp.dev(tri))
+    index_type = C.index_dtype(xp)
+    best_id = xp.full((b, h * w), -1, dtype=index_type, device=xp.dev(tri))
     best_bary = xp.zeros((b, h * w, 3), dtype=xp.dtype(tri), device=xp.dev(tri))
     step = max(int(chunk_size), 1)
     for start in range(0, n, step):
@@ -111,7 +112,7 @@ def rasterize_triangles(
         chunk_bary = xp.take_along_axis(bary, nearest[:, None, :, None], axis=1)[:, 0]
         closer = chunk_depth < best
         best = xp.where(closer, chunk_depth, best)
-        best_id = xp.where(closer, xp.astype(nearest, "int64") + start, best_id)
+        best_id = xp.where(closer, xp.astype(nearest, index_type) + start, best_id)
         best_bary = xp.where(closer[..., None], chunk_bary, best_bary)
     covered = best_id >= 0
     depth = xp.where(covered, best, xp.zeros_like(best))
@@ -135,7 +136,7 @@ def create_trimesh_indices_for_image(
         f: framework name or namespace; the global framework if None.
 
     Returns:
-        int64 indices *[batch_shape, 2 (h - 1) (w - 1), 3]*.
+        Indices of the default integer dtype *[batch_shape, 2 (h - 1) (w - 1), 3]*.
 
     Example:
         >>> create_trimesh_indices_for_image((2, 2), f='numpy')
@@ -145,7 +146,7 @@ def create_trimesh_indices_for_image(
     xp = ivy.get_framework(f=f)
     h, w = C.image_dims_of(image_dims, "create_trimesh_indices_for_image")
     top_left = xp.reshape(
-        xp.arange(w - 1, dtype="int64")[None, :] + w * xp.arange(h - 1, dtype="int64")[:, None],
+        xp.arange(w - 1)[None, :] + w * xp.arange(h - 1)[:, None],
         (-1,),
     )
     first = xp.stack([top_left, top_left + 1, top_left + w], axis=-1)

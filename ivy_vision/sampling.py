@@ -74,17 +74,18 @@ def sample_flat(xp, image, x, y, method, padding):
     padded = _padded(xp, image, padding)
     xq = xp.clip(x + 1.0, 0.0, float(w + 1))
     yq = xp.clip(y + 1.0, 0.0, float(h + 1))
-    base = xp.reshape(xp.arange(b, dtype="int64", device=xp.dev(x)), (b, 1))
+    index_type = C.index_dtype(xp)
+    base = xp.reshape(xp.arange(b, dtype=index_type, device=xp.dev(x)), (b, 1))
     if method == "nearest":
-        col = xp.astype(xp.floor(xq + 0.5), "int64")
-        row = xp.astype(xp.floor(yq + 0.5), "int64")
+        col = xp.astype(xp.floor(xq + 0.5), index_type)
+        row = xp.astype(xp.floor(yq + 0.5), index_type)
         index = (base * (h + 2) + row) * (w + 2) + col
         pixels = xp.reshape(padded, (b * (h + 2) * (w + 2), c))
         return xp.reshape(xp.take(pixels, xp.reshape(index, (-1,)), axis=0), (b, n, c))
     x0 = xp.minimum(xp.floor(xq), float(w))
     y0 = xp.minimum(xp.floor(yq), float(h))
     wx, wy = (xq - x0)[..., None], (yq - y0)[..., None]
-    top = (base * (h + 2) + xp.astype(y0, "int64")) * (w + 2) + xp.astype(x0, "int64")
+    top = (base * (h + 2) + xp.astype(y0, index_type)) * (w + 2) + xp.astype(x0, index_type)
     bottom = top + (w + 2)
     index = xp.stack([top, top + 1, bottom, bottom + 1], axis=0)  # corner-major: contiguous
     pixels = xp.reshape(padded, (b * (h + 2) * (w + 2), c))

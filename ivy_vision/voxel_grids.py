@@ -125,7 +125,7 @@ def coords_to_voxel_grid(
     scaled = xp.safe_divide(points - lower, res)
     index = xp.minimum(xp.floor(scaled), dims - 1)
     index = xp.where(index < 0, xp.zeros_like(index), index)
-    index = xp.astype(index, "int64")
+    index = xp.astype(index, C.index_dtype(xp))
     gx, gy, gz = grid_dims
     flat = (index[..., 0] * gy + index[..., 1]) * gz + index[..., 2]
     size = gx * gy * gz
