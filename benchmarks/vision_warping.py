@@ -50,7 +50,9 @@ def _inputs(batch, h, w, seed=0):
     image = np.broadcast_to(image, (batch, h, w, 3)) + rng.normal(0, 0.01, (batch, h, w, 3))
     depth = 2 + np.sin(4 * xs)[None, ..., None] * 0.5 + rng.uniform(0, 0.1, (batch, h, w, 1))
     angle = 0.03
-    rot = np.array([[np.cos(angle), 0, np.sin(angle)], [0, 1, 0], [-np.sin(angle), 0, np.cos(angle)]])
+    rot = np.array(
+        [[np.cos(angle), 0, np.sin(angle)], [0, 1, 0], [-np.sin(angle), 0, np.cos(angle)]]
+    )
     pose = np.eye(4)
     pose[:3, :3], pose[:3, 3] = rot, [0.05, -0.02, 0.03]
     f = 0.8 * w
@@ -133,8 +135,11 @@ def _implementations(backends, torch_compile):
 def _set_threads(threads, backends):
     os.environ.setdefault("OMP_NUM_THREADS", str(threads))
     if "jax" in backends:
-        os.environ["XLA_FLAGS"] = (os.environ.get("XLA_FLAGS", "") + " --xla_cpu_multi_thread_eigen="
-                                   + ("false" if threads == 1 else "true"))
+        os.environ["XLA_FLAGS"] = (
+            os.environ.get("XLA_FLAGS", "")
+            + " --xla_cpu_multi_thread_eigen="
+            + ("false" if threads == 1 else "true")
+        )
     if "torch" in backends or importlib.util.find_spec("kornia") is not None:
         import torch
 
@@ -153,21 +158,32 @@ def main(argv=None):
     parser.add_argument("--repeats", type=int, default=15, help="timed calls per implementation")
     parser.add_argument("--backends", default="numpy,torch,jax,tensorflow")
     parser.add_argument("--threads", type=int, default=1, help="intra-op threads of every backend")
-    parser.add_argument("--no-torch-compile", action="store_true",
-                        help="skip torch.compile (its first compilation takes ~20 s)")
-    parser.add_argument("--clock", default="wall", choices=["wall", "process"],
-                        help="wall time, or this process's CPU time (steadier on a machine "
-                             "shared with other work; with --threads 1 it is the compute time)")
+    parser.add_argument(
+        "--no-torch-compile",
+        action="store_true",
+        help="skip torch.compile (its first compilation takes ~20 s)",
+    )
+    parser.add_argument(
+        "--clock",
+        default="wall",
+        choices=["wall", "process"],
+        help="wall time, or this process's CPU time (steadier on a machine "
+        "shared with other work; with --threads 1 it is the compute time)",
+    )
     args = parser.parse_args(argv)
 
     backends = [b for b in args.backends.split(",") if importlib.util.find_spec(b) is not None]
     _set_threads(args.threads, backends)
     have_kornia = importlib.util.find_spec("kornia") is not None
     if not have_kornia:
-        print("NOTE: kornia is not installed, so its rows and ratios are left out. It is a "
-              "benchmark-only dependency: .venv/bin/pip install kornia\n")
-    print(f"batch {args.batch}, float32, 3 channels, {args.threads} thread(s), "
-          f"{args.repeats} interleaved repeats, {args.clock} clock\n")
+        print(
+            "NOTE: kornia is not installed, so its rows and ratios are left out. It is a "
+            "benchmark-only dependency: .venv/bin/pip install kornia\n"
+        )
+    print(
+        f"batch {args.batch}, float32, 3 channels, {args.threads} thread(s), "
+        f"{args.repeats} interleaved repeats, {args.clock} clock\n"
+    )
     clock = time.perf_counter if args.clock == "wall" else time.process_time
     header = f"{'size':9} {'implementation':34} {'ms':>8} {'median':>8}"
     header += f" {'vs kornia':>9}" if have_kornia else ""
@@ -184,12 +200,24 @@ def main(argv=None):
         if have_kornia:
             import torch
 
-            reference = _kornia_warp()(*[torch.from_numpy(np.ascontiguousarray(
-                np.moveaxis(data[k], -1, 1) if k in ("image", "depth") else data[k]))
-                for k in ("image", "depth", "pose", "calib")]).permute(0, 2, 3, 1).numpy()
+            reference = (
+                _kornia_warp()(
+                    *[
+                        torch.from_numpy(
+                            np.ascontiguousarray(
+                                np.moveaxis(data[k], -1, 1) if k in ("image", "depth") else data[k]
+                            )
+                        )
+                        for k in ("image", "depth", "pose", "calib")
+                    ]
+                )
+                .permute(0, 2, 3, 1)
+                .numpy()
+            )
         else:
-            reference = ivy_warp(*[data[k].astype(np.float64)
-                                   for k in ("image", "depth", "pose", "calib")])
+            reference = ivy_warp(
+                *[data[k].astype(np.float64) for k in ("image", "depth", "pose", "calib")]
+            )
         timers, errors = {}, {}
         for name, backend, channel_first, fn in impls:
             arrays = [data[k] for k in ("image", "depth", "pose", "calib")]

@@ -36,8 +36,9 @@ def global_indices(xp, flat, size):
     with the discard slots of all items mapped to the last slot, ``prod(B) * size``."""
     shape = C.shape_of(xp, flat)
     batch = math.prod(shape[:-1])
-    offsets = xp.reshape(xp.arange(batch, dtype=xp.dtype(flat), device=xp.dev(flat)) * size,
-                         (*shape[:-1], 1))
+    offsets = xp.reshape(
+        xp.arange(batch, dtype=xp.dtype(flat), device=xp.dev(flat)) * size, (*shape[:-1], 1)
+    )
     discard = flat == size
     out = xp.where(discard, xp.full_like(flat, batch * size), flat + offsets)
     return xp.reshape(out, (-1,)), batch
@@ -45,8 +46,9 @@ def global_indices(xp, flat, size):
 
 def scatter_rows(xp, indices, values, total, reduction="sum"):
     """Scatter rows ``values`` ``[M, C]`` at ``indices`` ``[M]`` into ``[total, C]``."""
-    return xp.scatter_nd(indices[:, None], values, (total, C.shape_of(xp, values)[-1]),
-                         reduction=reduction)
+    return xp.scatter_nd(
+        indices[:, None], values, (total, C.shape_of(xp, values)[-1]), reduction=reduction
+    )
 
 
 def min_depth_winners(xp, indices, depth, total):

@@ -63,8 +63,9 @@ class Camera:
         fn = "Camera.from_calib_and_ext_mats"
         xp = ivy.get_framework(calib_mat, ext_mat, f=f)
         C.check_matrix(xp, ext_mat, 3, 4, fn, "ext_mat")
-        check_invertible(xp, ext_mat[..., 0:3], fn, "the rotation of ext_mat",
-                         "it must be a rotation matrix.")
+        check_invertible(
+            xp, ext_mat[..., 0:3], fn, "the rotation of ext_mat", "it must be a rotation matrix."
+        )
         inv_calib = svg.invert_calib_mat(calib_mat, f=xp)
         rot, center = svg.ext_mat_to_rot_mat_and_cam_center(ext_mat, f=xp)
         rot_t = xp.swapaxes(rot, -1, -2)

@@ -149,18 +149,23 @@ def sample_images(
     batch = C.shape_of(xp, list_of_images[0])[:-3]
     for image in list_of_images:
         if C.shape_of(xp, image)[:-1] != (*batch, h, w):
-            raise ValueError(f"{fn}: the images must share their batch shape and size; got "
-                             f"{[C.shape_of(xp, i) for i in list_of_images]}.")
+            raise ValueError(
+                f"{fn}: the images must share their batch shape and size; got "
+                f"{[C.shape_of(xp, i) for i in list_of_images]}."
+            )
     dims, count = downsampled_image_dims_from_desired_num_pixels((h, w), num_pixels)
-    coords = create_sampled_pixel_coords_image((h, w), dims, batch, randomize=randomize,
-                                               dtype="float32", f=xp)
+    coords = create_sampled_pixel_coords_image(
+        (h, w), dims, batch, randomize=randomize, dtype="float32", f=xp
+    )
     flat = xp.astype(coords[..., 1] * w + coords[..., 0], C.index_dtype(xp))
     flat = xp.reshape(flat, (*batch, count, 1))
     channels = [C.shape_of(xp, image)[-1] for image in list_of_images]
-    combined = xp.concat([xp.reshape(image, (*batch, h * w, -1)) for image in list_of_images],
-                         axis=-1)
-    sampled = xp.take_along_axis(combined, xp.broadcast_to(flat, (*batch, count, sum(channels))),
-                                 axis=-2)
+    combined = xp.concat(
+        [xp.reshape(image, (*batch, h * w, -1)) for image in list_of_images], axis=-1
+    )
+    sampled = xp.take_along_axis(
+        combined, xp.broadcast_to(flat, (*batch, count, sum(channels))), axis=-2
+    )
     out, start = [], 0
     for c in channels:
         out.append(sampled[..., start : start + c])
@@ -334,8 +339,9 @@ def render_implicit_features_and_depth(
     features = None
     if inter_feat_fn is not None:
         features = xp.reshape(inter_feat_fn(points), (*batch, flat_rays, n, -1))
-    feat, densities = network_fn(xp.reshape(points, (*batch, flat_rays, n, 3)), features,
-                                 timestamps, v=v)
+    feat, densities = network_fn(
+        xp.reshape(points, (*batch, flat_rays, n, 3)), features, timestamps, v=v
+    )
     densities = xp.reshape(densities, (*batch, *ray_batch, n))
     spacing = xp.concat(
         [depths[..., 1:] - depths[..., :-1], xp.full_like(depths[..., -1:], FAR_SPACING)], axis=-1
@@ -347,7 +353,8 @@ def render_implicit_features_and_depth(
         rendered = render_rays_via_termination_probabilities(weights, feat, render_variance, f=xp)
         out += list(rendered) if render_variance else [rendered]
     if render_depth:
-        rendered = render_rays_via_termination_probabilities(weights, depths[..., None],
-                                                             render_variance, f=xp)
+        rendered = render_rays_via_termination_probabilities(
+            weights, depths[..., None], render_variance, f=xp
+        )
         out += list(rendered) if render_variance else [rendered]
     return tuple(out)

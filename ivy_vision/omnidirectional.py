@@ -170,8 +170,9 @@ def angular_pixel_to_sphere_coords(
         array([0.5, 0.5, 1. ])
     """
     xp = ivy.get_framework(angular_pixel_coords, f=f)
-    C.check_last_dim(xp, angular_pixel_coords, 3, "angular_pixel_to_sphere_coords",
-                     "angular_pixel_coords")
+    C.check_last_dim(
+        xp, angular_pixel_coords, 3, "angular_pixel_to_sphere_coords", "angular_pixel_coords"
+    )
     degrees = angular_pixel_coords[..., 0:2] / pixels_per_degree
     phi = (xp.remainder(degrees[..., 0:1], 360.0) - 180.0) / _DEG
     theta = (180.0 - degrees[..., 1:2]) / _DEG
@@ -225,8 +226,9 @@ def sphere_coords_to_world_ray_vectors(
     C.check_last_dim(xp, sphere_coords, 3, fn, "sphere_coords")
     C.check_matrix(xp, inv_rotation_mat, 3, 3, fn, "inv_rotation_mat")
     cam = _sphere_to_cam(xp, sphere_coords, True)
-    return C.normalize(xp, C.transform(xp, cam, inv_rotation_mat, fn, "sphere_coords",
-                                       "inv_rotation_mat"))
+    return C.normalize(
+        xp, C.transform(xp, cam, inv_rotation_mat, fn, "sphere_coords", "inv_rotation_mat")
+    )
 
 
 def pad_omni_image(image: Array, pad_size: int, *, f: Framework = None) -> Array:
@@ -261,6 +263,7 @@ def pad_omni_image(image: Array, pad_size: int, *, f: Framework = None) -> Array
         rolled = xp.concat([rows[..., half:, :], rows[..., :half, :]], axis=-2)
         return xp.flip(rolled, axis=-3)
 
-    tall = xp.concat([over_pole(image[..., :pad, :, :]), image,
-                      over_pole(image[..., h - pad :, :, :])], axis=-3)
+    tall = xp.concat(
+        [over_pole(image[..., :pad, :, :]), image, over_pole(image[..., h - pad :, :, :])], axis=-3
+    )
     return xp.concat([tall[..., w - pad :, :], tall, tall[..., :pad, :]], axis=-2)

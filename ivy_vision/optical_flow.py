@@ -102,8 +102,9 @@ def depth_from_flow_and_cam_mats(
     moved = uniform_pixel_coords + xp.concat([flow, xp.zeros_like(flow[..., 0:1])], axis=-1)
     first = xp.broadcast_to(uniform_pixel_coords, C.shape_of(xp, moved))
     pixels = xp.stack([first, moved], axis=-4)
-    return tvg.triangulate_depth(pixels, full_mats, inv_full_mats, camera_centers,
-                                 triangulation_method, f=xp)[..., 2:3]
+    return tvg.triangulate_depth(
+        pixels, full_mats, inv_full_mats, camera_centers, triangulation_method, f=xp
+    )[..., 2:3]
 
 
 def project_flow_to_epipolar_line(
@@ -136,8 +137,7 @@ def project_flow_to_epipolar_line(
     C.check_matrix(xp, fund_mat, 3, 3, fn, "fund_mat")
     if uniform_pixel_coords is None:
         uniform_pixel_coords = C.pixel_grid(xp, dims, xp.dtype(flow), xp.dev(flow))
-    grid = xp.broadcast_to(uniform_pixel_coords,
-                           (*C.shape_of(xp, fund_mat)[:-2], *dims, 3))
+    grid = xp.broadcast_to(uniform_pixel_coords, (*C.shape_of(xp, fund_mat)[:-2], *dims, 3))
     lines = C.transform(xp, grid, fund_mat, fn, "uniform_pixel_coords", "fund_mat")
     a, b, c = lines[..., 0:1], lines[..., 1:2], lines[..., 2:3]
     moved = grid[..., 0:2] + flow
@@ -221,12 +221,14 @@ def velocity_from_flow_cam_coords_and_cam_mats(
         array([[[0., 0., 0.]]])
     """
     fn = "velocity_from_flow_cam_coords_and_cam_mats"
-    xp = ivy.get_framework(flow_t_to_tm1, cam_coords_t, cam_coords_tm1, cam_tm1_to_t_ext_mat,
-                           delta_t, f=f)
+    xp = ivy.get_framework(
+        flow_t_to_tm1, cam_coords_t, cam_coords_tm1, cam_tm1_to_t_ext_mat, delta_t, f=f
+    )
     h, w = _flow_image(xp, flow_t_to_tm1, fn)
     if uniform_pixel_coords is None:
-        uniform_pixel_coords = C.pixel_grid(xp, (h, w), xp.dtype(flow_t_to_tm1),
-                                            xp.dev(flow_t_to_tm1))
+        uniform_pixel_coords = C.pixel_grid(
+            xp, (h, w), xp.dtype(flow_t_to_tm1), xp.dev(flow_t_to_tm1)
+        )
     warp = uniform_pixel_coords[..., 0:2] + flow_t_to_tm1
     previous = sample_kernel(xp, cam_coords_tm1[..., 0:3], warp, "bilinear", "border", fn)
     moved = tvg.cam_to_cam_coords(previous, cam_tm1_to_t_ext_mat, f=xp)[..., 0:3]
@@ -369,8 +371,9 @@ def flow_from_cam_coords_id_image_and_object_trans(
         ...     np.eye(3), np.eye(3, 4))[..., 0]
         array([[1., 0.]])
     """
-    xp = ivy.get_framework(cam_coords_f1, id_image, obj_ids, obj_trans, calib_mat,
-                           cam_1_to_2_ext_mat, f=f)
+    xp = ivy.get_framework(
+        cam_coords_f1, id_image, obj_ids, obj_trans, calib_mat, cam_1_to_2_ext_mat, f=f
+    )
     coords2, _ = project_cam_coords_with_object_transformations(
         cam_coords_f1, id_image, obj_ids, obj_trans, cam_1_to_2_ext_mat, f=xp
     )

@@ -61,7 +61,9 @@ def transform(coords: Array, trans: Array, *, f: Framework = None) -> Array:
     """
     xp = ivy.get_framework(coords, trans, f=f)
     if len(C.shape_of(xp, trans)) < 2:
-        raise ValueError(f"transform: trans must be [..., m, n]; got shape {C.shape_of(xp, trans)}.")
+        raise ValueError(
+            f"transform: trans must be [..., m, n]; got shape {C.shape_of(xp, trans)}."
+        )
     return C.transform(xp, coords, trans, "transform", "coords", "trans")
 
 
@@ -86,7 +88,10 @@ def projection_matrix_inverse(proj_mat: Array, *, f: Framework = None) -> Array:
     xp = ivy.get_framework(proj_mat, f=f)
     C.check_matrix(xp, proj_mat, 3, 4, "projection_matrix_inverse", "proj_mat")
     check_invertible(
-        xp, proj_mat[..., 0:3], "projection_matrix_inverse", "the left 3x3 block of proj_mat",
+        xp,
+        proj_mat[..., 0:3],
+        "projection_matrix_inverse",
+        "the left 3x3 block of proj_mat",
         "a calibration matrix needs non-zero focal lengths and a rotation must be orthonormal.",
     )
     return invert_affine(xp, proj_mat)

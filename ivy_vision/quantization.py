@@ -98,7 +98,11 @@ def quantize_to_image(
     if with_db and d == 0:
         raise ValueError(f"{fn}: with_db needs features whose first channel is the depth.")
     like = pixel_coords
-    means = pixel_coords if feat is None else xp.concat([pixel_coords, xp.astype(feat, xp.dtype(like))], axis=-1)
+    means = (
+        pixel_coords
+        if feat is None
+        else xp.concat([pixel_coords, xp.astype(feat, xp.dtype(like))], axis=-1)
+    )
     variances = _as_array(xp, pixel_coords_var, (*batch, n, 2), like)
     if d:
         variances = xp.concat([variances, _as_array(xp, feat_var, (*batch, n, d), like)], axis=-1)
@@ -113,22 +117,23 @@ def quantize_to_image(
     total = b * size + 1
     width = 2 + d
     means = xp.reshape(xp.where(valid[..., None], means, xp.zeros_like(means)), (b * n, width))
-    variances = xp.reshape(xp.where(valid[..., None], variances, xp.ones_like(variances)),
-                           (b * n, width))
+    variances = xp.reshape(
+        xp.where(valid[..., None], variances, xp.ones_like(variances)), (b * n, width)
+    )
     weight = xp.astype(xp.reshape(valid, (-1,)), xp.dtype(like))
     count = xp.scatter_flat(index, weight, total)[:, None]
     if with_db:
         winners = S.min_depth_winners(xp, index, means[:, 2], total)
         win = weight * xp.astype(winners, xp.dtype(like))
         wins = xp.scatter_flat(index, win, total)[:, None]
-        sums = S.scatter_rows(xp, index, xp.concat([means, variances], axis=-1) * win[:, None],
-                              total)
+        sums = S.scatter_rows(
+            xp, index, xp.concat([means, variances], axis=-1) * win[:, None], total
+        )
         fused = xp.safe_divide(sums, wins)
         mean, var = fused[:, :width], fused[:, width:]
     else:
         precision = weight[:, None] / variances
-        sums = S.scatter_rows(xp, index, xp.concat([means * precision, precision], axis=-1),
-                              total)
+        sums = S.scatter_rows(xp, index, xp.concat([means * precision, precision], axis=-1), total)
         mean = xp.safe_divide(sums[:, :width], sums[:, width:])
         var = xp.safe_divide(xp.broadcast_to(count, (total, width)), sums[:, width:])
     var = xp.maximum(var, xp.full_like(var, low))
@@ -142,8 +147,9 @@ def quantize_to_image(
     prior = [xp.broadcast_to(prior_xy, (*batch, h, w, 2))]
     prior_var = [_as_array(xp, pixel_coords_prior_var, (*batch, h, w, 2), like)]
     if d:
-        prior.append(_as_array(xp, 0.0 if feat_prior is None else feat_prior, (*batch, h, w, d),
-                               like))
+        prior.append(
+            _as_array(xp, 0.0 if feat_prior is None else feat_prior, (*batch, h, w, d), like)
+        )
         prior_var.append(_as_array(xp, feat_prior_var, (*batch, h, w, d), like))
     empty = count == 0
     mean = xp.where(empty, xp.concat(prior, axis=-1), mean)

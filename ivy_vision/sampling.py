@@ -131,8 +131,7 @@ def sample_kernel(xp, image, coords, method, padding, fn):
     image = xp.reshape(_floating(xp, image, coords), (b, h, w, c))
     coords = xp.reshape(coords, (b, n, 2))
     planes = padded_planes(xp, image, padding)
-    out = sample_planes(xp, planes, (b, h, w), coords[..., 0] + 1.0, coords[..., 1] + 1.0,
-                        method)
+    out = sample_planes(xp, planes, (b, h, w), coords[..., 0] + 1.0, coords[..., 1] + 1.0, method)
     return channels_last(xp, out, (*batch, *points, c))
 
 
@@ -188,8 +187,9 @@ def bilinearly_interpolate_image(
         array([[1.5]])
     """
     xp = ivy.get_framework(image, sampling_pixel_coords, f=f)
-    return sample_kernel(xp, image, sampling_pixel_coords, "bilinear", "border",
-                         "bilinearly_interpolate_image")
+    return sample_kernel(
+        xp, image, sampling_pixel_coords, "bilinear", "border", "bilinearly_interpolate_image"
+    )
 
 
 def project_depth(xp, depth, full_mat, uniform_pixel_coords, fn):
@@ -200,8 +200,13 @@ def project_depth(xp, depth, full_mat, uniform_pixel_coords, fn):
     image)."""
     C.check_image(xp, depth, fn, "the depth image", channels=1)
     C.check_matrix(xp, full_mat, 3, 4, fn, "the camera-to-camera full matrix")
-    C.broadcast_right(C.shape_of(xp, depth)[:-3], C.shape_of(xp, full_mat)[:-2], fn,
-                      "the depth image", "the camera-to-camera full matrix")
+    C.broadcast_right(
+        C.shape_of(xp, depth)[:-3],
+        C.shape_of(xp, full_mat)[:-2],
+        fn,
+        "the depth image",
+        "the camera-to-camera full matrix",
+    )
     dshape = C.shape_of(xp, depth)
     h, w = dshape[-3:-1]
     planar_depth = xp.reshape(depth, (*dshape[:-3], 1, h * w))
@@ -223,8 +228,9 @@ def project_depth(xp, depth, full_mat, uniform_pixel_coords, fn):
 def _shift_by_one(xp, full_mat):
     """``full_mat`` whose projections land one pixel right and down (``x + 1``, ``y + 1``): the
     coordinates of the padded images, for free."""
-    return xp.concat([full_mat[..., 0:2, :] + full_mat[..., 2:3, :], full_mat[..., 2:3, :]],
-                     axis=-2)
+    return xp.concat(
+        [full_mat[..., 0:2, :] + full_mat[..., 2:3, :], full_mat[..., 2:3, :]], axis=-2
+    )
 
 
 def inverse_warp(
@@ -276,8 +282,13 @@ def inverse_warp(
     h, w = C.shape_of(xp, depth_tgt)[-3:-1]
     shifted = _shift_by_one(xp, tgt_to_src_full_mat)
     projected = project_depth(xp, depth_tgt, shifted, uniform_pixel_coords, fn)
-    batch = C.broadcast_right(C.shape_of(xp, projected)[:-2], C.shape_of(xp, image_src)[:-3],
-                              fn, "the target depth", "image_src")
+    batch = C.broadcast_right(
+        C.shape_of(xp, projected)[:-2],
+        C.shape_of(xp, image_src)[:-3],
+        fn,
+        "the target depth",
+        "image_src",
+    )
     c = C.shape_of(xp, image_src)[-1]
     b = math.prod(batch)
     z = projected[..., 2, :]
@@ -287,14 +298,16 @@ def inverse_warp(
     xq, yq = projected[..., 0, :] * inverse_z, projected[..., 1, :] * inverse_z
     if padding == "zeros":  # behind the camera: sample the zero border
         xq = xp.where(in_front, xq, xp.zeros_like(xq))
-    image = xp.reshape(xp.broadcast_to(_floating(xp, image_src, z), (*batch, hs, ws, c)),
-                       (b, hs, ws, c))
+    image = xp.reshape(
+        xp.broadcast_to(_floating(xp, image_src, z), (*batch, hs, ws, c)), (b, hs, ws, c)
+    )
     if C.shape_of(xp, xq) != (*batch, h * w):
         xq = xp.broadcast_to(xq, (*batch, h * w))
         yq = xp.broadcast_to(yq, (*batch, h * w))
     planes = padded_planes(xp, image, padding)
-    warped = sample_planes(xp, planes, (b, hs, ws), xp.reshape(xq, (b, h * w)),
-                           xp.reshape(yq, (b, h * w)), method)
+    warped = sample_planes(
+        xp, planes, (b, hs, ws), xp.reshape(xq, (b, h * w)), xp.reshape(yq, (b, h * w)), method
+    )
     front = xp.reshape(xp.broadcast_to(in_front, (*batch, h * w)), (b, h * w))
     if padding == "border":
         warped = xp.where(front, warped, xp.zeros_like(warped))
@@ -357,8 +370,13 @@ def forward_warp(
         )
     dims = (h, w) if target_image_dims is None else C.image_dims_of(target_image_dims, fn)
     projected = project_depth(xp, depth_src, src_to_tgt_full_mat, uniform_pixel_coords, fn)
-    batch = C.broadcast_right(C.shape_of(xp, projected)[:-2], C.shape_of(xp, image_src)[:-3],
-                              fn, "the source depth", "image_src")
+    batch = C.broadcast_right(
+        C.shape_of(xp, projected)[:-2],
+        C.shape_of(xp, image_src)[:-3],
+        fn,
+        "the source depth",
+        "image_src",
+    )
     projected = xp.broadcast_to(projected, (*batch, 3, h * w))
     image_src = _floating(xp, image_src, projected)
     c = C.shape_of(xp, image_src)[-1]

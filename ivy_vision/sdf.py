@@ -17,8 +17,10 @@ __all__ = ["sphere_signed_distances", "cuboid_signed_distances"]
 def _queries(xp, query_positions, fn):
     C.check_last_dim(xp, query_positions, 3, fn, "query_positions")
     if len(C.shape_of(xp, query_positions)) < 2:
-        raise ValueError(f"{fn}: query_positions must be [..., num_points, 3]; got shape "
-                         f"{C.shape_of(xp, query_positions)}.")
+        raise ValueError(
+            f"{fn}: query_positions must be [..., num_points, 3]; got shape "
+            f"{C.shape_of(xp, query_positions)}."
+        )
 
 
 def sphere_signed_distances(

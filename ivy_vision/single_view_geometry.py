@@ -159,8 +159,9 @@ def depth_to_ds_pixel_coords(
     """
     xp = ivy.get_framework(depth, f=f)
     _check_depth(xp, depth, "depth_to_ds_pixel_coords")
-    grid = _grid_for(xp, depth, C.shape_of(xp, depth)[-3:-1], uniform_pixel_coords,
-                     "depth_to_ds_pixel_coords")
+    grid = _grid_for(
+        xp, depth, C.shape_of(xp, depth)[-3:-1], uniform_pixel_coords, "depth_to_ds_pixel_coords"
+    )
     return grid * depth
 
 
@@ -268,8 +269,13 @@ def focal_lengths_and_pp_offsets_to_calib_mat(
     xp = ivy.get_framework(focal_lengths, pp_offsets, f=f)
     C.check_last_dim(xp, focal_lengths, 2, fn, "focal_lengths")
     C.check_last_dim(xp, pp_offsets, 2, fn, "pp_offsets")
-    C.broadcast_right(C.shape_of(xp, focal_lengths)[:-1], C.shape_of(xp, pp_offsets)[:-1], fn,
-                      "focal_lengths", "pp_offsets")
+    C.broadcast_right(
+        C.shape_of(xp, focal_lengths)[:-1],
+        C.shape_of(xp, pp_offsets)[:-1],
+        fn,
+        "focal_lengths",
+        "pp_offsets",
+    )
     fl, pp = xp.broadcast_arrays(focal_lengths, pp_offsets)
     fx, fy, px, py = fl[..., 0], fl[..., 1], pp[..., 0], pp[..., 1]
     zero, one = xp.zeros_like(fx), xp.ones_like(fx)
@@ -317,8 +323,13 @@ def invert_calib_mat(calib_mat: Array, *, f: Framework = None) -> Array:
     """
     xp = ivy.get_framework(calib_mat, f=f)
     C.check_matrix(xp, calib_mat, 3, 3, "invert_calib_mat", "calib_mat")
-    check_invertible(xp, calib_mat, "invert_calib_mat", "the calibration matrix",
-                     "its focal lengths must be non-zero.")
+    check_invertible(
+        xp,
+        calib_mat,
+        "invert_calib_mat",
+        "the calibration matrix",
+        "its focal lengths must be non-zero.",
+    )
     fx, s, px = calib_mat[..., 0, 0], calib_mat[..., 0, 1], calib_mat[..., 0, 2]
     fy, py, k22 = calib_mat[..., 1, 1], calib_mat[..., 1, 2], calib_mat[..., 2, 2]
     zero = xp.zeros_like(fx)
@@ -405,8 +416,13 @@ def calib_and_ext_to_full_mat(calib_mat: Array, ext_mat: Array, *, f: Framework 
     xp = ivy.get_framework(calib_mat, ext_mat, f=f)
     C.check_matrix(xp, calib_mat, 3, 3, "calib_and_ext_to_full_mat", "calib_mat")
     C.check_matrix(xp, ext_mat, 3, 4, "calib_and_ext_to_full_mat", "ext_mat")
-    C.broadcast_batch(C.shape_of(xp, calib_mat)[:-2], C.shape_of(xp, ext_mat)[:-2],
-                      "calib_and_ext_to_full_mat", "calib_mat", "ext_mat")
+    C.broadcast_batch(
+        C.shape_of(xp, calib_mat)[:-2],
+        C.shape_of(xp, ext_mat)[:-2],
+        "calib_and_ext_to_full_mat",
+        "calib_mat",
+        "ext_mat",
+    )
     return xp.matmul(calib_mat, ext_mat)
 
 
@@ -465,8 +481,9 @@ def depth_to_radial_depth(
         array([1.41421356])
     """
     xp = ivy.get_framework(depth, inv_calib_mat, f=f)
-    return depth * _ray_lengths(xp, depth, inv_calib_mat, uniform_pix_coords,
-                                "depth_to_radial_depth")
+    return depth * _ray_lengths(
+        xp, depth, inv_calib_mat, uniform_pix_coords, "depth_to_radial_depth"
+    )
 
 
 def radial_depth_to_depth(
@@ -492,8 +509,9 @@ def radial_depth_to_depth(
         array([1.])
     """
     xp = ivy.get_framework(radial_depth, inv_calib_mat, f=f)
-    return radial_depth / _ray_lengths(xp, radial_depth, inv_calib_mat, uniform_pix_coords,
-                                       "radial_depth_to_depth")
+    return radial_depth / _ray_lengths(
+        xp, radial_depth, inv_calib_mat, uniform_pix_coords, "radial_depth_to_depth"
+    )
 
 
 def ds_pixel_coords_to_radial_depth(
@@ -532,7 +550,9 @@ def _points(xp, coords, fn, what):
     return coords[..., 0:3]
 
 
-def cam_to_ds_pixel_coords(coords_wrt_cam: Array, calib_mat: Array, *, f: Framework = None) -> Array:
+def cam_to_ds_pixel_coords(
+    coords_wrt_cam: Array, calib_mat: Array, *, f: Framework = None
+) -> Array:
     """Project camera-frame points to depth-scaled pixel coordinates: ``K [x, y, z]``.
 
     Args:
@@ -632,8 +652,9 @@ def depth_to_cam_coords(
     """
     xp = ivy.get_framework(depth, inv_calib_mat, f=f)
     C.check_matrix(xp, inv_calib_mat, 3, 3, "depth_to_cam_coords", "inv_calib_mat")
-    return _unproject_depth(xp, depth, inv_calib_mat, uniform_pixel_coords,
-                            "depth_to_cam_coords", "inv_calib_mat")
+    return _unproject_depth(
+        xp, depth, inv_calib_mat, uniform_pixel_coords, "depth_to_cam_coords", "inv_calib_mat"
+    )
 
 
 def world_to_cam_coords(coords_wrt_world: Array, ext_mat: Array, *, f: Framework = None) -> Array:
@@ -704,7 +725,9 @@ def world_to_ds_pixel_coords(
     return C.affine(xp, points, full_mat, fn, "coords_wrt_world", "full_mat")
 
 
-def world_coords_to_depth(coords_wrt_world: Array, full_mat: Array, *, f: Framework = None) -> Array:
+def world_coords_to_depth(
+    coords_wrt_world: Array, full_mat: Array, *, f: Framework = None
+) -> Array:
     """Planar depth of world-frame points seen by a camera.
 
     Args:
@@ -772,8 +795,9 @@ def depth_to_world_coords(
     """
     xp = ivy.get_framework(depth, inv_full_mat, f=f)
     C.check_matrix(xp, inv_full_mat, 3, 4, "depth_to_world_coords", "inv_full_mat")
-    return _unproject_depth(xp, depth, inv_full_mat, uniform_pixel_coords,
-                            "depth_to_world_coords", "inv_full_mat")
+    return _unproject_depth(
+        xp, depth, inv_full_mat, uniform_pixel_coords, "depth_to_world_coords", "inv_full_mat"
+    )
 
 
 def pixel_coords_to_world_ray_vectors(
@@ -812,14 +836,16 @@ def pixel_coords_to_world_ray_vectors(
     if pixel_coords is None:
         if image_dims is None:
             raise ValueError(f"{fn}: give pixel_coords or image_dims (height, width).")
-        grid = C.pixel_grid(xp, C.image_dims_of(image_dims, fn), xp.dtype(inv_full_mat),
-                            xp.dev(inv_full_mat))
+        grid = C.pixel_grid(
+            xp, C.image_dims_of(image_dims, fn), xp.dtype(inv_full_mat), xp.dev(inv_full_mat)
+        )
         vectors = _rays(xp, grid, inv_full_mat, fn)
     else:
         if C.check_last_dim(xp, pixel_coords, (2, 3), fn, "pixel_coords") == 2:
             pixel_coords = C.homogeneous(xp, pixel_coords)
-        vectors = C.transform(xp, pixel_coords, inv_full_mat[..., 0:3], fn, "pixel_coords",
-                              "inv_full_mat")
+        vectors = C.transform(
+            xp, pixel_coords, inv_full_mat[..., 0:3], fn, "pixel_coords", "inv_full_mat"
+        )
     if camera_center is not None:
         C.check_last_dim(xp, camera_center, 3, fn, "camera_center")
         ni = len(C.shape_of(xp, vectors)) - len(C.shape_of(xp, camera_center))

@@ -55,8 +55,9 @@ def ds_pixel_to_ds_pixel_coords(
     xp = ivy.get_framework(ds_pixel_coords1, cam1to2_full_mat, f=f)
     C.check_last_dim(xp, ds_pixel_coords1, 3, fn, "ds_pixel_coords1")
     C.check_matrix(xp, cam1to2_full_mat, 3, 4, fn, "cam1to2_full_mat")
-    return C.affine(xp, ds_pixel_coords1, cam1to2_full_mat, fn, "ds_pixel_coords1",
-                    "cam1to2_full_mat")
+    return C.affine(
+        xp, ds_pixel_coords1, cam1to2_full_mat, fn, "ds_pixel_coords1", "cam1to2_full_mat"
+    )
 
 
 def cam_to_cam_coords(cam_coords1: Array, cam1to2_ext_mat: Array, *, f: Framework = None) -> Array:
@@ -78,8 +79,9 @@ def cam_to_cam_coords(cam_coords1: Array, cam1to2_ext_mat: Array, *, f: Framewor
     xp = ivy.get_framework(cam_coords1, cam1to2_ext_mat, f=f)
     C.check_last_dim(xp, cam_coords1, (3, 4), fn, "cam_coords1")
     C.check_matrix(xp, cam1to2_ext_mat, 3, 4, fn, "cam1to2_ext_mat")
-    points = C.affine(xp, cam_coords1[..., 0:3], cam1to2_ext_mat, fn, "cam_coords1",
-                      "cam1to2_ext_mat")
+    points = C.affine(
+        xp, cam_coords1[..., 0:3], cam1to2_ext_mat, fn, "cam_coords1", "cam1to2_ext_mat"
+    )
     return C.homogeneous(xp, points)
 
 
@@ -135,8 +137,10 @@ def angular_pixel_to_angular_pixel_coords(
 
 def _compose_affine(xp, a, b):
     """``[A | a] [B | b; 0 1] = [A B | A b + a]``."""
-    return xp.concat([xp.matmul(a[..., 0:3], b[..., 0:3]),
-                      xp.matmul(a[..., 0:3], b[..., 3:4]) + a[..., 3:4]], axis=-1)
+    return xp.concat(
+        [xp.matmul(a[..., 0:3], b[..., 0:3]), xp.matmul(a[..., 0:3], b[..., 3:4]) + a[..., 3:4]],
+        axis=-1,
+    )
 
 
 def ext_mats_to_cam1to2_ext_mat(ext_mat1: Array, ext_mat2: Array, *, f: Framework = None) -> Array:
@@ -160,7 +164,9 @@ def ext_mats_to_cam1to2_ext_mat(ext_mat1: Array, ext_mat2: Array, *, f: Framewor
     xp = ivy.get_framework(ext_mat1, ext_mat2, f=f)
     C.check_matrix(xp, ext_mat1, 3, 4, fn, "ext_mat1")
     C.check_matrix(xp, ext_mat2, 3, 4, fn, "ext_mat2")
-    check_invertible(xp, ext_mat1[..., 0:3], fn, "the rotation of ext_mat1", "it must be a rotation.")
+    check_invertible(
+        xp, ext_mat1[..., 0:3], fn, "the rotation of ext_mat1", "it must be a rotation."
+    )
     return _compose_affine(xp, ext_mat2, invert_affine(xp, ext_mat1))
 
 
@@ -185,8 +191,13 @@ def full_mats_to_cam1to2_full_mat(
     xp = ivy.get_framework(full_mat1, full_mat2, f=f)
     C.check_matrix(xp, full_mat1, 3, 4, fn, "full_mat1")
     C.check_matrix(xp, full_mat2, 3, 4, fn, "full_mat2")
-    check_invertible(xp, full_mat1[..., 0:3], fn, "the left 3x3 block of full_mat1",
-                     "its calibration matrix needs non-zero focal lengths.")
+    check_invertible(
+        xp,
+        full_mat1[..., 0:3],
+        fn,
+        "the left 3x3 block of full_mat1",
+        "its calibration matrix needs non-zero focal lengths.",
+    )
     return _compose_affine(xp, full_mat2, invert_affine(xp, full_mat1))
 
 
@@ -222,8 +233,13 @@ def get_fundamental_matrix(
     C.check_matrix(xp, full_mat1, 3, 4, fn, "full_mat1")
     C.check_matrix(xp, full_mat2, 3, 4, fn, "full_mat2")
     if camera_center1 is None:
-        check_invertible(xp, full_mat1[..., 0:3], fn, "the left 3x3 block of full_mat1",
-                         "its calibration matrix needs non-zero focal lengths.")
+        check_invertible(
+            xp,
+            full_mat1[..., 0:3],
+            fn,
+            "the left 3x3 block of full_mat1",
+            "its calibration matrix needs non-zero focal lengths.",
+        )
         camera_center1 = invert_affine(xp, full_mat1)[..., 3]
     else:
         C.check_last_dim(xp, camera_center1, 3, fn, "camera_center1")
@@ -260,6 +276,20 @@ def get_essential_matrix(ext_mat1: Array, ext_mat2: Array, *, f: Framework = Non
     return xp.matmul(xp.vector_to_skew_symmetric_matrix(rel[..., 3]), rel[..., 0:3])
 
 
+def _check_pairs(xp, x, batch, fn, what, batch_what) -> int:
+    """Raise a ValueError unless ``x`` is ``[*batch, 2, *image_shape, 3]`` (its batch
+    broadcasting with ``batch``); return the number of image dimensions."""
+    nb = len(batch)
+    shape = C.shape_of(xp, x)
+    if len(shape) < nb + 2 or shape[nb] != 2 or shape[-1] != 3:
+        raise ValueError(
+            f"{fn}: {what} must be [*batch, 2, *image_shape, 3] with the batch shape {batch} of "
+            f"{batch_what}; got shape {shape}."
+        )
+    C.broadcast_batch(shape[:nb], batch, fn, what, batch_what)
+    return len(shape) - nb - 2
+
+
 def _rays_pair(xp, world_ray_vectors, nb):
     index = (slice(None),) * nb
     return world_ray_vectors[(*index, 0)], world_ray_vectors[(*index, 1)]
@@ -293,24 +323,19 @@ def closest_mutual_points_along_two_skew_rays(
     if len(cshape) < 2 or cshape[-2:] != (2, 3):
         raise ValueError(f"{fn}: camera_centers must be [..., 2, 3]; got shape {cshape}.")
     nb = len(cshape) - 2
-    rshape = C.shape_of(xp, world_ray_vectors)
-    if len(rshape) < nb + 2 or rshape[nb] != 2 or rshape[-1] != 3:
-        raise ValueError(
-            f"{fn}: world_ray_vectors must be [*batch, 2, *image_shape, 3] with the batch "
-            f"shape {cshape[:-2]} of camera_centers; got shape {rshape}."
-        )
-    C.broadcast_batch(rshape[:nb], cshape[:nb], fn, "world_ray_vectors", "camera_centers")
-    ni = len(rshape) - nb - 2
+    ni = _check_pairs(xp, world_ray_vectors, cshape[:-2], fn, "world_ray_vectors", "camera_centers")
     c1, c2 = camera_centers[..., 0, :], camera_centers[..., 1, :]
     c1 = xp.reshape(c1, (*cshape[:nb], *(1,) * ni, 3))
     c2 = xp.reshape(c2, (*cshape[:nb], *(1,) * ni, 3))
     d1, d2 = _rays_pair(xp, world_ray_vectors, nb)
     n = xp.cross(d1, d2)
     n1, n2 = xp.cross(d1, n), xp.cross(d2, n)
-    t1 = xp.safe_divide(xp.sum((c2 - c1) * n2, axis=-1, keepdims=True),
-                        xp.sum(d1 * n2, axis=-1, keepdims=True))
-    t2 = xp.safe_divide(xp.sum((c1 - c2) * n1, axis=-1, keepdims=True),
-                        xp.sum(d2 * n1, axis=-1, keepdims=True))
+    t1 = xp.safe_divide(
+        xp.sum((c2 - c1) * n2, axis=-1, keepdims=True), xp.sum(d1 * n2, axis=-1, keepdims=True)
+    )
+    t2 = xp.safe_divide(
+        xp.sum((c1 - c2) * n1, axis=-1, keepdims=True), xp.sum(d2 * n1, axis=-1, keepdims=True)
+    )
     points = xp.stack([c1 + t1 * d1, c2 + t2 * d2], axis=nb)
     return C.homogeneous(xp, points)
 
@@ -325,8 +350,13 @@ def _pixel_rays(xp, inv_full_mats, ds_pixel_coords, nb):
 
 def _triangulate_cmp(xp, ds_pixel_coords, full_mats, inv_full_mats, camera_centers, nb, fn):
     if inv_full_mats is None:
-        check_invertible(xp, full_mats[..., 0:3], fn, "the left 3x3 block of full_mats",
-                         "their calibration matrices need non-zero focal lengths.")
+        check_invertible(
+            xp,
+            full_mats[..., 0:3],
+            fn,
+            "the left 3x3 block of full_mats",
+            "their calibration matrices need non-zero focal lengths.",
+        )
         inv_full_mats = invert_affine(xp, full_mats)
     C.check_matrix(xp, inv_full_mats, 3, 4, fn, "inv_full_mats")
     if camera_centers is None:
@@ -394,16 +424,11 @@ def triangulate_depth(
     if len(fshape) < 3 or fshape[-3:] != (2, 3, 4):
         raise ValueError(f"{fn}: full_mats must be [..., 2, 3, 4]; got shape {fshape}.")
     nb = len(fshape) - 3
-    pshape = C.shape_of(xp, ds_pixel_coords)
-    if len(pshape) < nb + 2 or pshape[nb] != 2 or pshape[-1] != 3:
-        raise ValueError(
-            f"{fn}: ds_pixel_coords must be [*batch, 2, *image_shape, 3] with the batch shape "
-            f"{fshape[:-3]} of full_mats; got shape {pshape}."
-        )
-    C.broadcast_batch(pshape[:nb], fshape[:nb], fn, "ds_pixel_coords", "full_mats")
+    _check_pairs(xp, ds_pixel_coords, fshape[:-3], fn, "ds_pixel_coords", "full_mats")
     if method == "cmp":
-        world = _triangulate_cmp(xp, ds_pixel_coords, full_mats, inv_full_mats, camera_centers,
-                                 nb, fn)
+        world = _triangulate_cmp(
+            xp, ds_pixel_coords, full_mats, inv_full_mats, camera_centers, nb, fn
+        )
     else:
         world = _triangulate_dlt(xp, ds_pixel_coords, full_mats, nb)
     p1 = full_mats[(*(slice(None),) * nb, 0)]

@@ -107,16 +107,19 @@ def coords_to_voxel_grid(
         except TypeError:
             values = C.concrete(xp, spec)
             if values is None:
-                raise ValueError(f"{fn}: in 'DIMS' mode under compilation, give "
-                                 f"voxel_shape_spec as Python ints.") from None
+                raise ValueError(
+                    f"{fn}: in 'DIMS' mode under compilation, give voxel_shape_spec as Python ints."
+                ) from None
             grid_dims = tuple(int(v) for v in values.reshape(-1, 3).max(axis=0))
         dims = xp.astype(spec, xp.dtype(points))
     else:
         dims = xp.maximum(xp.ceil(xp.safe_divide(extent, spec)), xp.ones_like(spec))
         values = C.concrete(xp, dims)
         if values is None:
-            raise ValueError(f"{fn}: 'RES' mode sizes the grid from the data, so it cannot be "
-                             f"compiled; use 'DIMS' mode with Python ints.")
+            raise ValueError(
+                f"{fn}: 'RES' mode sizes the grid from the data, so it cannot be "
+                f"compiled; use 'DIMS' mode with Python ints."
+            )
         grid_dims = tuple(int(v) for v in values.reshape(-1, 3).max(axis=0))
     if min(grid_dims) < 1:
         raise ValueError(f"{fn}: the grid needs at least one voxel per axis; got {grid_dims}.")

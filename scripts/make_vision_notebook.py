@@ -13,20 +13,28 @@ import pathlib
 import nbformat
 
 CELLS = [
-    ("markdown", """# ivy_vision: multi-view fusion and warping, on any backend
+    (
+        "markdown",
+        """# ivy_vision: multi-view fusion and warping, on any backend
 
 Depth and colour images of a MuJoCo scene are ray-cast from four cameras; ivy_vision unprojects
 them to point clouds, fuses them in a voxel grid (the paper's 100³ example), renders the grid
 into a new view with a depth buffer, and inverse-warps one view into another.
 
 The first cell chooses the backend (`numpy`, `torch`, `jax` or `tensorflow`) and the size of
-the problem; the tests run the notebook at low resolution through environment variables."""),
-    ("code", """import os
+the problem; the tests run the notebook at low resolution through environment variables.""",
+    ),
+    (
+        "code",
+        """import os
 
 BACKEND = os.environ.get("VISION_NOTEBOOK_BACKEND", "torch")  # numpy, torch, jax or tensorflow
 WIDTH = int(os.environ.get("VISION_NOTEBOOK_WIDTH", "160"))    # image width in pixels
-VOXELS = int(os.environ.get("VISION_NOTEBOOK_VOXELS", "100"))  # voxels per axis (paper: 100)"""),
-    ("code", """%matplotlib inline
+VOXELS = int(os.environ.get("VISION_NOTEBOOK_VOXELS", "100"))  # voxels per axis (paper: 100)""",
+    ),
+    (
+        "code",
+        """%matplotlib inline
 import matplotlib.pyplot as plt
 import mujoco
 import numpy as np
@@ -42,13 +50,19 @@ def to_ivy(x):
 
 
 def to_np(x):
-    return ivy.to_numpy(x)"""),
-    ("markdown", """## The scene and its cameras
+    return ivy.to_numpy(x)""",
+    ),
+    (
+        "markdown",
+        """## The scene and its cameras
 
 Four primitives on a floor. Each camera looks at the scene's centre; its depth (planar, along
 the camera's z axis) and colour (the hit geom's colour, shaded by the surface normal) come from
-`mujoco.mj_multiRay`, one ray per pixel centre."""),
-    ("code", """SCENE = '''
+`mujoco.mj_multiRay`, one ray per pixel centre.""",
+    ),
+    (
+        "code",
+        """SCENE = '''
 <mujoco>
   <worldbody>
     <geom type="plane" size="0 0 1" rgba="0.8 0.8 0.8 1"/>
@@ -107,13 +121,19 @@ for k, (depth, colour) in enumerate(views):
     axes[0, k].set_title(f"camera {k}")
 for ax in axes.ravel():
     ax.axis("off")
-plt.show()"""),
-    ("markdown", """## Point clouds fused in a voxel grid
+plt.show()""",
+    ),
+    (
+        "markdown",
+        """## Point clouds fused in a voxel grid
 
 `depth_to_world_coords` unprojects every pixel with the inverse full matrix `P⁻¹`;
 `coords_to_voxel_grid` bins the points of all cameras (with their colours as features) into a
-`VOXELS³` grid: each voxel holds the mean point, the mean colour and the number of points."""),
-    ("code", """points, colours = [], []
+`VOXELS³` grid: each voxel holds the mean point, the mean colour and the number of points.""",
+    ),
+    (
+        "code",
+        """points, colours = [], []
 for cam, (depth, colour) in zip(cams, views):
     world = vis.depth_to_world_coords(to_ivy(depth), cam.inv_full_mat)  # [H, W, 4]
     points.append(to_np(world)[..., :3][depth[..., 0] > 0])
@@ -133,14 +153,20 @@ plt.figure(figsize=(4, 4))
 plt.imshow(np.where(occupied.any(2)[..., None], top_colour, 1.0).transpose(1, 0, 2)[::-1])
 plt.title("voxel grid from above")
 plt.axis("off")
-plt.show()"""),
-    ("markdown", """## Rendering the grid into a new view
+plt.show()""",
+    ),
+    (
+        "markdown",
+        """## Rendering the grid into a new view
 
 The voxels' mean points are projected into a camera that took no picture, and
 `quantize_to_image` renders them with a depth buffer: the nearest voxel wins each pixel. Empty
 voxels get a variance above the threshold, so they are left out. The result is compared with
-that camera's own MuJoCo ray cast."""),
-    ("code", """new_cam = camera((0.2, -1.9, 1.4))
+that camera's own MuJoCo ray cast.""",
+    ),
+    (
+        "code",
+        """new_cam = camera((0.2, -1.9, 1.4))
 true_depth, true_colour = ray_cast(new_cam)
 flat = grid.reshape(-1, grid.shape[-1])
 ds = vis.world_to_ds_pixel_coords(to_ivy(flat[:, :3]), new_cam.full_mat)
@@ -165,13 +191,19 @@ axes[2].imshow(np.where(both, np.abs(rendered_depth - true_depth)[..., 0], np.na
 axes[2].set_title("depth error (m)")
 for ax in axes:
     ax.axis("off")
-plt.show()"""),
-    ("markdown", """## Inverse warping between two views
+plt.show()""",
+    ),
+    (
+        "markdown",
+        """## Inverse warping between two views
 
 Camera 1's colour image is warped into camera 0 through camera 0's depth and the relative
 pose (`inverse_warp`). Pixels that camera 1 cannot see (outside its image, or hidden behind
-another surface: the reprojected depth disagrees with camera 1's own depth there) are masked."""),
-    ("code", """depth0, colour0 = views[0]
+another surface: the reprojected depth disagrees with camera 1's own depth there) are masked.""",
+    ),
+    (
+        "code",
+        """depth0, colour0 = views[0]
 depth1, colour1 = views[1]
 cam0_to_1 = cams[0].full_mat_to(cams[1])
 warped, valid = vis.inverse_warp(to_ivy(colour1), to_ivy(depth0), cam0_to_1, with_validity=True)
@@ -191,14 +223,18 @@ axes[1].imshow(warped); axes[1].set_title("camera 1 warped into camera 0")
 axes[2].imshow(colour0); axes[2].set_title("camera 0")
 for ax in axes:
     ax.axis("off")
-plt.show()"""),
+plt.show()""",
+    ),
 ]
 
 
 def main():
     nb = nbformat.v4.new_notebook()
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
-                                 "language": "python"}
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
     for kind, source in CELLS:
         make = nbformat.v4.new_code_cell if kind == "code" else nbformat.v4.new_markdown_cell
         nb.cells.append(make(source))

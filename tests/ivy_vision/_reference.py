@@ -25,8 +25,10 @@ def to_backend(value, backend, dtype=None):
 
 def run(fn, backend, *args, dtype=None, **kwargs):
     """``fn`` on native arrays of ``backend``; array results (or tuples of them) as numpy."""
-    out = fn(*[to_backend(a, backend, dtype) for a in args],
-             **{k: to_backend(v, backend, dtype) for k, v in kwargs.items()})
+    out = fn(
+        *[to_backend(a, backend, dtype) for a in args],
+        **{k: to_backend(v, backend, dtype) for k, v in kwargs.items()},
+    )
     if isinstance(out, tuple):
         return tuple(numpy_of(o) for o in out)
     return numpy_of(out)
@@ -76,14 +78,16 @@ def homogeneous(p):
 def sphere_of(cam):
     """``[phi, theta, r]`` of camera points, forward-facing z: angles in the frame (z, x, y)."""
     x, y, z = cam[..., 0], cam[..., 1], cam[..., 2]
-    return np.stack([np.arctan2(x, z), np.arctan2(np.hypot(z, x), y),
-                     np.sqrt(x * x + y * y + z * z)], -1)
+    return np.stack(
+        [np.arctan2(x, z), np.arctan2(np.hypot(z, x), y), np.sqrt(x * x + y * y + z * z)], -1
+    )
 
 
 def cam_of_sphere(s):
     phi, theta, r = s[..., 0], s[..., 1], s[..., 2]
-    return np.stack([r * np.sin(theta) * np.sin(phi), r * np.cos(theta),
-                     r * np.sin(theta) * np.cos(phi)], -1)
+    return np.stack(
+        [r * np.sin(theta) * np.sin(phi), r * np.cos(theta), r * np.sin(theta) * np.cos(phi)], -1
+    )
 
 
 # ----------------------------------------------------------------------------------------------
@@ -102,8 +106,13 @@ def sample(image, coords, method="bilinear", padding="border"):
     for b in np.ndindex(*batch):
         pts = coords[b].reshape(-1, 2)[:, ::-1].T
         for c in range(image.shape[-1]):
-            vals = ndi.map_coordinates(image[b][..., c], pts, order=1 if method == "bilinear"
-                                       else 0, mode=SCIPY_MODES[padding], cval=0.0)
+            vals = ndi.map_coordinates(
+                image[b][..., c],
+                pts,
+                order=1 if method == "bilinear" else 0,
+                mode=SCIPY_MODES[padding],
+                cval=0.0,
+            )
             out[b][..., c] = vals.reshape(coords.shape[len(batch) : -1])
     return out
 

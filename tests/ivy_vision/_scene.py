@@ -47,8 +47,9 @@ def scene_sdf(points: np.ndarray) -> np.ndarray:
     ball = np.linalg.norm(p - BALL[0], axis=-1) - BALL[1]
     c, s = np.cos(BOX_YAW), np.sin(BOX_YAW)
     rel = p - BOX[0]
-    local = np.stack([c * rel[..., 0] + s * rel[..., 1], -s * rel[..., 0] + c * rel[..., 1],
-                      rel[..., 2]], -1)
+    local = np.stack(
+        [c * rel[..., 0] + s * rel[..., 1], -s * rel[..., 0] + c * rel[..., 1], rel[..., 2]], -1
+    )
     q = np.abs(local) - BOX[1]
     box = np.linalg.norm(np.maximum(q, 0), axis=-1) + np.minimum(q.max(-1), 0)
     rel = p - POST[0]
@@ -73,8 +74,13 @@ class PinholeCamera:
 
     def __init__(self, eye, target, image_dims=(24, 32), focal=(30.0, 31.0), roll=0.0):
         self.h, self.w = image_dims
-        self.K = np.array([[focal[0], 0.0, (self.w - 1) / 2 + 0.3],
-                           [0.0, focal[1], (self.h - 1) / 2 - 0.2], [0.0, 0.0, 1.0]])
+        self.K = np.array(
+            [
+                [focal[0], 0.0, (self.w - 1) / 2 + 0.3],
+                [0.0, focal[1], (self.h - 1) / 2 - 0.2],
+                [0.0, 0.0, 1.0],
+            ]
+        )
         r = look_at(eye, target)
         cr, sr = np.cos(roll), np.sin(roll)
         self.R = np.array([[cr, -sr, 0], [sr, cr, 0], [0, 0, 1.0]]) @ r
@@ -101,8 +107,20 @@ class PinholeCamera:
         n = len(vec)
         geom = np.zeros(n, np.int32)
         dist = np.zeros(n)
-        mujoco.mj_multiRay(m, d, self.C, np.ascontiguousarray(vec.reshape(-1)), None, 1, -1,
-                           geom, dist, None, n, 100.0)
+        mujoco.mj_multiRay(
+            m,
+            d,
+            self.C,
+            np.ascontiguousarray(vec.reshape(-1)),
+            None,
+            1,
+            -1,
+            geom,
+            dist,
+            None,
+            n,
+            100.0,
+        )
         return dist
 
     def grid(self):
@@ -124,5 +142,8 @@ def cameras(image_dims=(24, 32)):
 def texture(points):
     """A smooth colour ``[..., 3]`` of world points, for warping tests."""
     p = np.asarray(points)[..., 0:3]
-    return np.stack([np.sin(3 * p[..., 0]), np.cos(2 * p[..., 1]), np.sin(p[..., 2] + p[..., 0])],
-                    -1) * 0.5 + 0.5
+    return (
+        np.stack([np.sin(3 * p[..., 0]), np.cos(2 * p[..., 1]), np.sin(p[..., 2] + p[..., 0])], -1)
+        * 0.5
+        + 0.5
+    )

@@ -67,8 +67,9 @@ def test_signature_and_docstring(name):
 @pytest.mark.parametrize("module", MODULES)
 def test_docstring_examples(module):
     globs = {"np": np, **{n: getattr(vis, n) for n in vis.__all__}}
-    result = doctest.testmod(importlib.import_module(module), extraglobs=globs,
-                             optionflags=doctest.NORMALIZE_WHITESPACE)
+    result = doctest.testmod(
+        importlib.import_module(module), extraglobs=globs, optionflags=doctest.NORMALIZE_WHITESPACE
+    )
     assert result.attempted > 0 and result.failed == 0
 
 
@@ -85,8 +86,11 @@ def test_compositions_resolve_the_framework_once():
 
 
 def test_import_loads_no_framework():
-    code = ("import sys, ivy_vision; "
-            "print([m for m in ('torch', 'jax', 'tensorflow') if m in sys.modules])")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         cwd=PACKAGE.parent, check=True)
+    code = (
+        "import sys, ivy_vision; "
+        "print([m for m in ('torch', 'jax', 'tensorflow') if m in sys.modules])"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, cwd=PACKAGE.parent, check=True
+    )
     assert out.stdout.strip() == "[]"

@@ -37,16 +37,21 @@ def _rasterize(tris):
 
 def _geometry(depth, inv_full, full2):
     world = vis.depth_to_world_coords(depth, inv_full)
-    flow = vis.flow_from_depth_and_cam_mats(vis.depth_to_ds_pixel_coords(depth),
-                                            vis.full_mats_to_cam1to2_full_mat(
-                                                vis.projection_matrix_inverse(inv_full), full2))
-    return world, flow, vis.ds_pixel_to_sphere_coords(vis.depth_to_ds_pixel_coords(depth),
-                                                      inv_full[..., 0:3])
+    flow = vis.flow_from_depth_and_cam_mats(
+        vis.depth_to_ds_pixel_coords(depth),
+        vis.full_mats_to_cam1to2_full_mat(vis.projection_matrix_inverse(inv_full), full2),
+    )
+    return (
+        world,
+        flow,
+        vis.ds_pixel_to_sphere_coords(vis.depth_to_ds_pixel_coords(depth), inv_full[..., 0:3]),
+    )
 
 
 def _triangulate(pixels, full_mats):
-    return vis.triangulate_depth(pixels, full_mats), vis.triangulate_depth(pixels, full_mats,
-                                                                            method="dlt")
+    return vis.triangulate_depth(pixels, full_mats), vis.triangulate_depth(
+        pixels, full_mats, method="dlt"
+    )
 
 
 DS2 = K.R.apply(K.FULL12, K.DS)
@@ -56,7 +61,10 @@ TRIS = np.concatenate([rng.uniform(0, 6, (2, 4, 3, 2)), rng.uniform(1, 3, (2, 4,
 CASES = {
     "inverse_warp": (_inverse_warp, (IMAGE, K.DEPTH, K.FULL12)),
     "forward_warp": (_forward_warp, (IMAGE, K.DEPTH, K.FULL12)),
-    "quantize_to_image": (_quantize, (rng.uniform(-1, 5, (2, 20, 2)), rng.uniform(1, 2, (2, 20, 2)))),
+    "quantize_to_image": (
+        _quantize,
+        (rng.uniform(-1, 5, (2, 20, 2)), rng.uniform(1, 2, (2, 20, 2))),
+    ),
     "coords_to_voxel_grid": (_voxels, (rng.uniform(0, 1, (2, 40, 3)), rng.normal(size=(2, 40, 1)))),
     "rasterize_triangles": (_rasterize, (TRIS,)),
     "geometry": (_geometry, (K.DEPTH, K.FULL_INV, K.FULL2)),

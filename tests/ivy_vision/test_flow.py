@@ -26,12 +26,14 @@ def test_depth_from_flow_and_cam_mats(backend):
     flow = _pixels(R.apply(K.FULL12, K.DS)) - _pixels(K.DS)
     full_mats = np.stack([K.FULL, K.FULL2], 1)
     for method in ("cmp", "dlt"):
-        out = vis.depth_from_flow_and_cam_mats(native(flow, backend), native(full_mats, backend),
-                                               triangulation_method=method)
+        out = vis.depth_from_flow_and_cam_mats(
+            native(flow, backend), native(full_mats, backend), triangulation_method=method
+        )
         check(out, K.DEPTH, backend, rtol=1e-8, atol=1e-8)
     inverses = np.linalg.inv(K.homo44(full_mats))[..., :3, :]
-    out = vis.depth_from_flow_and_cam_mats(native(flow, backend), native(full_mats, backend),
-                                           native(inverses, backend))
+    out = vis.depth_from_flow_and_cam_mats(
+        native(flow, backend), native(full_mats, backend), native(inverses, backend)
+    )
     check(out, K.DEPTH, backend, rtol=1e-8, atol=1e-8)
 
 
@@ -51,8 +53,12 @@ def test_project_flow_to_epipolar_line(backend):
     move = out - noisy
     cross = move[..., 0] * lines[..., 1] - move[..., 1] * lines[..., 0]
     np.testing.assert_allclose(cross / np.linalg.norm(lines[..., :2], axis=-1), 0, atol=1e-9)
-    check(vis.project_flow_to_epipolar_line(native(exact, backend), native(f, backend)), exact,
-          backend, atol=1e-8)
+    check(
+        vis.project_flow_to_epipolar_line(native(exact, backend), native(f, backend)),
+        exact,
+        backend,
+        atol=1e-8,
+    )
 
 
 def test_pixel_cost_volume(backend):
@@ -71,10 +77,24 @@ def _object_scene():
     cam = np.concatenate([rng.uniform(-1, 1, (2, 3, 4, 2)), rng.uniform(2, 4, (2, 3, 4, 1))], -1)
     ids = rng.integers(0, 3, (2, 3, 4, 1)).astype(np.float64)  # 0: static, 1 and 2: moving
     obj_ids = np.array([[[1.0], [2.0]]] * 2)
-    trans = np.stack([np.stack([np.concatenate([R.random_rotation(rng), rng.normal(0, .3, (3, 1))],
-                                               -1) for _ in range(2)]) for _ in range(2)])
-    cam12 = np.concatenate([np.stack([R.random_rotation(rng) for _ in range(2)]) * 0
-                            + np.eye(3), rng.normal(0, .2, (2, 3, 1))], -1)
+    trans = np.stack(
+        [
+            np.stack(
+                [
+                    np.concatenate([R.random_rotation(rng), rng.normal(0, 0.3, (3, 1))], -1)
+                    for _ in range(2)
+                ]
+            )
+            for _ in range(2)
+        ]
+    )
+    cam12 = np.concatenate(
+        [
+            np.stack([R.random_rotation(rng) for _ in range(2)]) * 0 + np.eye(3),
+            rng.normal(0, 0.2, (2, 3, 1)),
+        ],
+        -1,
+    )
     return cam, ids, obj_ids, trans, cam12
 
 
@@ -106,13 +126,18 @@ def test_velocities(backend):
     previous = _moved(cam, ids, trans, np.broadcast_to(np.eye(3, 4), (2, 3, 4)))
     expected = np.where(ids > 0, (cam - previous) / dt[:, None, None], 0.0)
     out = vis.velocity_from_cam_coords_id_image_and_object_trans(
-        *[native(a, backend) for a in (cam, ids, obj_ids, trans, dt)])
+        *[native(a, backend) for a in (cam, ids, obj_ids, trans, dt)]
+    )
     check(out, expected, backend, atol=1e-12)
     # from flow: frame t-1 is frame t moved by a camera motion; zero flow, identity motion
     shift = np.concatenate([np.broadcast_to(np.eye(3), (2, 3, 3)), np.full((2, 3, 1), 0.1)], -1)
     cam_tm1 = cam - 0.1
     velocity, valid = vis.velocity_from_flow_cam_coords_and_cam_mats(
-        native(np.zeros((2, 3, 4, 2)), backend), native(cam, backend), native(cam_tm1, backend),
-        native(shift, backend), native(dt, backend))
+        native(np.zeros((2, 3, 4, 2)), backend),
+        native(cam, backend),
+        native(cam_tm1, backend),
+        native(shift, backend),
+        native(dt, backend),
+    )
     check(velocity, np.zeros_like(cam), backend, atol=1e-12)
     assert np.all(numpy_of(valid))

@@ -38,8 +38,9 @@ def test_against_reference(name, dtype, backend):
 def test_uniform_pixel_coords(backend):
     out = vis.create_uniform_pixel_coords_image((3, 4), (2,), f=backend)
     check(out, np.broadcast_to(R.pixel_grid(3, 4), (2, 3, 4, 3)), backend, dtype="float32")
-    out = vis.create_uniform_pixel_coords_image((3, 4), normalized=True, homogeneous=False,
-                                                dtype="float64", f=backend)
+    out = vis.create_uniform_pixel_coords_image(
+        (3, 4), normalized=True, homogeneous=False, dtype="float64", f=backend
+    )
     check(out, R.pixel_grid(3, 4)[..., :2] / [4.0, 3.0], backend)
 
 
@@ -49,8 +50,9 @@ def test_ray_vectors_of_every_pixel(backend):
     check(out, expected / np.linalg.norm(expected, axis=-1, keepdims=True), backend)
     # with the camera centre given, and depth-scaled coordinates: the same unit vectors
     centers = native(K.CENTER, backend)
-    out = vis.pixel_coords_to_world_ray_vectors(native(K.FULL_INV, backend), native(K.DS, backend),
-                                                centers)
+    out = vis.pixel_coords_to_world_ray_vectors(
+        native(K.FULL_INV, backend), native(K.DS, backend), centers
+    )
     check(out, expected / np.linalg.norm(expected, axis=-1, keepdims=True), backend)
 
 
@@ -105,7 +107,11 @@ def test_fundamental_matrix(backend):
     x1 = R.apply(K.FULL, K.WORLD)
     x2 = R.apply(K.FULL2, K.WORLD)
     residual = np.einsum("bni,bij,bnj->bn", x2, f, x1)
-    scale = np.linalg.norm(f, axis=(-2, -1))[:, None] * np.linalg.norm(x1, axis=-1) * np.linalg.norm(x2, axis=-1)
+    scale = (
+        np.linalg.norm(f, axis=(-2, -1))[:, None]
+        * np.linalg.norm(x1, axis=-1)
+        * np.linalg.norm(x2, axis=-1)
+    )
     np.testing.assert_allclose(residual / scale, 0.0, atol=1e-13)
     ess = K._skew(K.EXT12[:, :, 3]) @ K.EXT12[:, :, :3]
     expected = np.swapaxes(np.linalg.inv(K.K), -1, -2) @ ess @ np.linalg.inv(K.K)
@@ -114,8 +120,12 @@ def test_fundamental_matrix(backend):
     sign = np.sign(np.sum(normed * expected, axis=(-2, -1)))[:, None, None]
     np.testing.assert_allclose(normed * sign, expected, atol=1e-10)
     # with the camera centre and pseudo-inverse given
-    f2 = vis.get_fundamental_matrix(native(K.FULL, backend), native(K.FULL2, backend),
-                                    native(K.CENTER, backend), native(np.linalg.pinv(K.FULL), backend))
+    f2 = vis.get_fundamental_matrix(
+        native(K.FULL, backend),
+        native(K.FULL2, backend),
+        native(K.CENTER, backend),
+        native(np.linalg.pinv(K.FULL), backend),
+    )
     check(f2, f, backend, rtol=1e-9)
 
 
@@ -124,14 +134,18 @@ def test_closest_mutual_points(backend):
     rng = np.random.default_rng(11)
     centers = rng.standard_normal((2, 2, 3))
     rays = rng.standard_normal((2, 2, 3, 4, 3))
-    out = numpy_of(vis.closest_mutual_points_along_two_skew_rays(native(centers, backend),
-                                                                 native(rays, backend)))
+    out = numpy_of(
+        vis.closest_mutual_points_along_two_skew_rays(
+            native(centers, backend), native(rays, backend)
+        )
+    )
     for b in range(2):
         for i, j in np.ndindex(3, 4):
             d1, d2 = rays[b, 0, i, j], rays[b, 1, i, j]
             a = np.array([[d1 @ d1, -d1 @ d2], [d1 @ d2, -d2 @ d2]])
-            rhs = np.array([(centers[b, 1] - centers[b, 0]) @ d1,
-                            (centers[b, 1] - centers[b, 0]) @ d2])
+            rhs = np.array(
+                [(centers[b, 1] - centers[b, 0]) @ d1, (centers[b, 1] - centers[b, 0]) @ d2]
+            )
             t1, t2 = np.linalg.solve(a, rhs)
             np.testing.assert_allclose(out[b, 0, i, j, :3], centers[b, 0] + t1 * d1, atol=1e-10)
             np.testing.assert_allclose(out[b, 1, i, j, :3], centers[b, 1] + t2 * d2, atol=1e-10)

@@ -23,7 +23,9 @@ EXT1 = np.broadcast_to(np.eye(3, 4), (2, 3, 4))
 
 
 def _camera(xp, pose, intrinsics):
-    calib = vis.focal_lengths_and_pp_offsets_to_calib_mat(intrinsics[..., 0:2], intrinsics[..., 2:4])
+    calib = vis.focal_lengths_and_pp_offsets_to_calib_mat(
+        intrinsics[..., 0:2], intrinsics[..., 2:4]
+    )
     ext = mech.rot_vec_pose_to_mat_pose(pose, f=xp)[..., 0:3, :]
     return calib, ext
 
@@ -78,49 +80,78 @@ CASES = {
     "reprojection (depth, pose, intrinsics)": (_reprojection, (DEPTH, POSE, INTRINSICS)),
     "flow (depth, pose, intrinsics)": (_flow, (DEPTH, POSE, INTRINSICS)),
     "inverse_warp (image, depth, pose, intrinsics)": (
-        _inverse_warp, (IMAGE, DEPTH, POSE, INTRINSICS)),
+        _inverse_warp,
+        (IMAGE, DEPTH, POSE, INTRINSICS),
+    ),
     "forward_warp (image, depth, pose, intrinsics)": (
-        _forward_warp, (IMAGE, DEPTH, POSE * 0.2, INTRINSICS)),
+        _forward_warp,
+        (IMAGE, DEPTH, POSE * 0.2, INTRINSICS),
+    ),
     "radial depth": (lambda d, k: vis.depth_to_radial_depth(d, k), (DEPTH, K.K_INV)),
     "sphere coords": (lambda ds, k: vis.ds_pixel_to_sphere_coords(ds, k), (K.DS, K.K_INV)),
     "angular pixels": (lambda s: vis.sphere_to_angular_pixel_coords(s, 2.0), (K.SPHERE,)),
-    "ray vectors": (lambda p, px: vis.pixel_coords_to_world_ray_vectors(p, px),
-                    (K.FULL_INV, K.PIXELS)),
-    "sample_image border": (lambda im, c: vis.sample_image(im, c), (IMAGE, rng.uniform(-1, 5.5, (2, 9, 2)))),
-    "sample_image zeros": (lambda im, c: vis.sample_image(im, c, padding="zeros"),
-                           (IMAGE, rng.uniform(-1, 5.5, (2, 9, 2)))),
+    "ray vectors": (
+        lambda p, px: vis.pixel_coords_to_world_ray_vectors(p, px),
+        (K.FULL_INV, K.PIXELS),
+    ),
+    "sample_image border": (
+        lambda im, c: vis.sample_image(im, c),
+        (IMAGE, rng.uniform(-1, 5.5, (2, 9, 2))),
+    ),
+    "sample_image zeros": (
+        lambda im, c: vis.sample_image(im, c, padding="zeros"),
+        (IMAGE, rng.uniform(-1, 5.5, (2, 9, 2))),
+    ),
     "triangulate cmp": (_triangulation(PIXELS2, "cmp"), (PIXELS2,)),
     "triangulate dlt": (_triangulation(PIXELS2, "dlt"), (PIXELS2,)),
     "fundamental matrix": (lambda a, b: vis.get_fundamental_matrix(a, b), (K.FULL, K.FULL2)),
     "essential matrix": (lambda a, b: vis.get_essential_matrix(a, b), (K.EXT, K.EXT2)),
     "quantize_to_image": (
         lambda c, ft: vis.quantize_to_image(c, (4, 5), ft, None, False, 1e-2, 1e-2)[0],
-        (rng.uniform(0, 4, (2, 12, 2)), rng.uniform(1, 2, (2, 12, 2)))),
+        (rng.uniform(0, 4, (2, 12, 2)), rng.uniform(1, 2, (2, 12, 2))),
+    ),
     "quantize_to_image depth buffer": (
         lambda c, ft: vis.quantize_to_image(c, (4, 5), ft, None, True)[0],
-        (rng.uniform(0, 4, (2, 12, 2)), rng.uniform(1, 2, (2, 12, 2)))),
+        (rng.uniform(0, 4, (2, 12, 2)), rng.uniform(1, 2, (2, 12, 2))),
+    ),
     "coords_to_voxel_grid": (
         lambda p, ft: vis.coords_to_voxel_grid(p, (2, 3, 2), "DIMS", (0, 0, 0, 1, 1, 1), ft)[0],
-        (rng.uniform(0.05, 0.95, (2, 30, 3)), rng.standard_normal((2, 30, 2)))),
+        (rng.uniform(0.05, 0.95, (2, 30, 3)), rng.standard_normal((2, 30, 2))),
+    ),
     "rasterize_triangles": (
         lambda t: xp_concat(vis.rasterize_triangles(t, (6, 7))[0::2]),
-        (np.concatenate([rng.uniform(0, 6, (1, 3, 3, 2)), rng.uniform(1, 3, (1, 3, 3, 1))], -1),)),
-    "sphere sdf": (lambda c, r, q: vis.sphere_signed_distances(c, r, q),
-                   (rng.standard_normal((2, 3, 3)), rng.uniform(.2, 1, (2, 3, 1)),
-                    rng.standard_normal((2, 6, 3)))),
-    "cuboid sdf": (lambda e, d, q: vis.cuboid_signed_distances(e, d, q),
-                   (np.concatenate([K.ROT[:, None], rng.standard_normal((2, 1, 3, 1))], -1),
-                    rng.uniform(.5, 1, (2, 1, 3)), rng.standard_normal((2, 6, 3)) * 2)),
+        (np.concatenate([rng.uniform(0, 6, (1, 3, 3, 2)), rng.uniform(1, 3, (1, 3, 3, 1))], -1),),
+    ),
+    "sphere sdf": (
+        lambda c, r, q: vis.sphere_signed_distances(c, r, q),
+        (
+            rng.standard_normal((2, 3, 3)),
+            rng.uniform(0.2, 1, (2, 3, 1)),
+            rng.standard_normal((2, 6, 3)),
+        ),
+    ),
+    "cuboid sdf": (
+        lambda e, d, q: vis.cuboid_signed_distances(e, d, q),
+        (
+            np.concatenate([K.ROT[:, None], rng.standard_normal((2, 1, 3, 1))], -1),
+            rng.uniform(0.5, 1, (2, 1, 3)),
+            rng.standard_normal((2, 6, 3)) * 2,
+        ),
+    ),
     "termination probabilities": (
         lambda s, d, ft: vis.render_rays_via_termination_probabilities(
-            vis.ray_termination_probabilities(s, d), ft),
-        (rng.uniform(0, 2, (3, 8)), rng.uniform(0.1, 0.3, (3, 8)), rng.standard_normal((3, 8, 2)))),
+            vis.ray_termination_probabilities(s, d), ft
+        ),
+        (rng.uniform(0, 2, (3, 8)), rng.uniform(0.1, 0.3, (3, 8)), rng.standard_normal((3, 8, 2))),
+    ),
     "variance smoothing": (
         lambda m, v: xp_concat(vis.smooth_image_from_var_image(m, v, 3, 0.5)),
-        (IMAGE, rng.uniform(0.5, 2, IMAGE.shape))),
+        (IMAGE, rng.uniform(0.5, 2, IMAGE.shape)),
+    ),
     "weighted smoothing": (
         lambda m, w: xp_concat(vis.weighted_image_smooth(m, w, 2)),
-        (IMAGE, rng.uniform(0.5, 2, IMAGE.shape))),
+        (IMAGE, rng.uniform(0.5, 2, IMAGE.shape)),
+    ),
 }
 
 

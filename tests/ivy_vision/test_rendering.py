@@ -20,12 +20,12 @@ rng = np.random.default_rng(23)
 # ----------------------------------------------------------------------------------------------
 
 
-def _quantize_reference(coords, feat, dims, with_db, coords_var, feat_var, prior_feat,
-                        prior_var, low, high):
+def _quantize_reference(
+    coords, feat, dims, with_db, coords_var, feat_var, prior_feat, prior_var, low, high
+):
     h, w = dims
     d = feat.shape[-1]
-    mean = np.concatenate([R.pixel_grid(h, w)[..., :2], np.broadcast_to(prior_feat, (h, w, d))],
-                          -1)
+    mean = np.concatenate([R.pixel_grid(h, w)[..., :2], np.broadcast_to(prior_feat, (h, w, d))], -1)
     var = np.broadcast_to(prior_var, (h, w, 2 + d)).copy()
     count = np.zeros((h, w, 1))
     groups = {}
@@ -35,7 +35,8 @@ def _quantize_reference(coords, feat, dims, with_db, coords_var, feat_var, prior
         if not (0 <= col < w and 0 <= row < h) or np.any(v >= high):
             continue
         groups.setdefault((int(row), int(col)), []).append(
-            (np.concatenate([coords[i], feat[i]]), v))
+            (np.concatenate([coords[i], feat[i]]), v)
+        )
     for (r, c), items in groups.items():
         m = np.array([x for x, _ in items])
         v = np.array([y for _, y in items])
@@ -63,12 +64,30 @@ def test_quantize_to_image(with_db, backend):
     feat_var[:, 7, 1] = 2e12  # left out
     prior = rng.standard_normal((2, 4, 5, 3))
     out = vis.quantize_to_image(
-        native(coords, backend), dims, native(feat, backend), native(prior, backend), with_db,
-        native(coords_var, backend), native(feat_var, backend), 5.0, 7.0, (1e-3, 1e12))
+        native(coords, backend),
+        dims,
+        native(feat, backend),
+        native(prior, backend),
+        with_db,
+        native(coords_var, backend),
+        native(feat_var, backend),
+        5.0,
+        7.0,
+        (1e-3, 1e12),
+    )
     for b in range(2):
-        expected = _quantize_reference(coords[b], feat[b], dims, with_db, coords_var[b],
-                                       feat_var[b], prior[b], np.array([5.0, 5, 7, 7, 7]),
-                                       1e-3, 1e12)
+        expected = _quantize_reference(
+            coords[b],
+            feat[b],
+            dims,
+            with_db,
+            coords_var[b],
+            feat_var[b],
+            prior[b],
+            np.array([5.0, 5, 7, 7, 7]),
+            1e-3,
+            1e12,
+        )
         for got, want in zip(out, expected):
             np.testing.assert_allclose(numpy_of(got)[b], want, rtol=1e-12, atol=1e-12)
 
@@ -78,8 +97,18 @@ def test_quantize_to_image_defaults(backend):
     coords = rng.uniform(0, [3.4, 2.4], (30, 2))
     feat = rng.uniform(1, 2, (30, 2))
     mean, var, count = vis.quantize_to_image(native(coords, backend), (3, 4), native(feat, backend))
-    expected, _, _ = _quantize_reference(coords, feat, (3, 4), False, np.full((30, 2), 1e-3),
-                                         np.full((30, 2), 1e-3), 0.0, 1e12, 1e-3, 1e12)
+    expected, _, _ = _quantize_reference(
+        coords,
+        feat,
+        (3, 4),
+        False,
+        np.full((30, 2), 1e-3),
+        np.full((30, 2), 1e-3),
+        0.0,
+        1e12,
+        1e-3,
+        1e12,
+    )
     check(mean, expected, backend, atol=1e-12)
     assert numpy_of(count).sum() == 30
     assert numpy_of(mean).dtype == np.float64
@@ -96,8 +125,12 @@ def _rasterize_reference(tris, dims):
     ids = np.full((h, w), -1)
     bary = np.zeros((h, w, 3))
     for t, tri in enumerate(tris):
-        a = np.array([[tri[1, 0] - tri[0, 0], tri[2, 0] - tri[0, 0]],
-                      [tri[1, 1] - tri[0, 1], tri[2, 1] - tri[0, 1]]])
+        a = np.array(
+            [
+                [tri[1, 0] - tri[0, 0], tri[2, 0] - tri[0, 0]],
+                [tri[1, 1] - tri[0, 1], tri[2, 1] - tri[0, 1]],
+            ]
+        )
         if abs(np.linalg.det(a)) < 1e-12 or np.any(tri[:, 2] <= 0):
             continue
         for i, j in np.ndindex(h, w):
@@ -141,8 +174,9 @@ def test_rasterized_depth_of_a_projected_plane_is_exact(backend):
 
 
 def test_trimesh_of_images(backend):
-    expected = np.array([[0, 1, 3], [1, 2, 4], [3, 4, 6], [4, 5, 7],
-                         [4, 1, 3], [5, 2, 4], [7, 4, 6], [8, 5, 7]])
+    expected = np.array(
+        [[0, 1, 3], [1, 2, 4], [3, 4, 6], [4, 5, 7], [4, 1, 3], [5, 2, 4], [7, 4, 6], [8, 5, 7]]
+    )
     out = vis.create_trimesh_indices_for_image((3, 3), f=backend)
     np.testing.assert_array_equal(numpy_of(out), expected)
     coords = rng.standard_normal((3, 3, 3))
@@ -164,8 +198,9 @@ def test_weighted_and_variance_smoothing(backend):
     mean = rng.standard_normal((2, 5, 6, 2))
     weights = rng.uniform(0.1, 2, (2, 5, 6, 2))
     k = 3
-    out_mean, out_weights = vis.weighted_image_smooth(native(mean, backend),
-                                                      native(weights, backend), k)
+    out_mean, out_weights = vis.weighted_image_smooth(
+        native(mean, backend), native(weights, backend), k
+    )
     expected_mean = np.zeros((2, 3, 4, 2))
     expected_weights = np.zeros((2, 3, 4, 2))
     for b, i, j in np.ndindex(2, 3, 4):
@@ -176,17 +211,22 @@ def test_weighted_and_variance_smoothing(backend):
     check(out_weights, expected_weights, backend)
 
     scale = np.array([0.5, 2.0])
-    out_mean, out_var = vis.smooth_image_from_var_image(native(mean, backend),
-                                                        native(weights, backend), k, scale)
+    out_mean, out_var = vis.smooth_image_from_var_image(
+        native(mean, backend), native(weights, backend), k, scale
+    )
     expected_mean, expected_var = np.zeros((2, 3, 4, 2)), np.zeros((2, 3, 4, 2))
     for b, i, j in np.ndindex(2, 3, 4):
         dist = np.hypot(*np.mgrid[-1:2, -1:2])[..., None]
         v = weights[b, i : i + k, j : j + k] * (1 + dist * scale)
-        expected_mean[b, i, j] = np.sum(mean[b, i : i + k, j : j + k] / v, (0, 1)) / np.sum(1 / v, (0, 1))
+        expected_mean[b, i, j] = np.sum(mean[b, i : i + k, j : j + k] / v, (0, 1)) / np.sum(
+            1 / v, (0, 1)
+        )
         expected_var[b, i, j] = k * k / np.sum(1 / v, (0, 1))
     check(out_mean, expected_mean, backend)
     check(out_var, expected_var, backend)
-    alias = vis.smooth_image_fom_var_image(native(mean, backend), native(weights, backend), k, scale)
+    alias = vis.smooth_image_fom_var_image(
+        native(mean, backend), native(weights, backend), k, scale
+    )
     check(alias[1], expected_var, backend)
 
 
@@ -199,17 +239,20 @@ def test_signed_distances(backend):
     centres = rng.standard_normal((2, 3, 3))
     radii = rng.uniform(0.2, 1, (2, 3, 1))
     queries = rng.standard_normal((2, 10, 3)) * 2
-    out = vis.sphere_signed_distances(native(centres, backend), native(radii, backend),
-                                      native(queries, backend))
-    expected = np.min(np.linalg.norm(queries[:, None] - centres[:, :, None], axis=-1)
-                      - radii, axis=1)[..., None]
+    out = vis.sphere_signed_distances(
+        native(centres, backend), native(radii, backend), native(queries, backend)
+    )
+    expected = np.min(
+        np.linalg.norm(queries[:, None] - centres[:, :, None], axis=-1) - radii, axis=1
+    )[..., None]
     check(out, expected, backend)
     rot = np.stack([np.stack([R.random_rotation(rng) for _ in range(2)]) for _ in range(2)])
     pos = rng.standard_normal((2, 2, 3))
     ext = np.concatenate([rot, -(rot @ pos[..., None])], -1)
     dims = rng.uniform(0.5, 2, (2, 2, 3))
-    out = vis.cuboid_signed_distances(native(ext, backend), native(dims, backend),
-                                      native(queries, backend))
+    out = vis.cuboid_signed_distances(
+        native(ext, backend), native(dims, backend), native(queries, backend)
+    )
     expected = np.full((2, 10), np.inf)
     for b, c, p in np.ndindex(2, 2, 10):
         local = rot[b, c] @ (queries[b, p] - pos[b, c])
@@ -229,9 +272,13 @@ def test_termination_probabilities_and_rendering(backend):
     spacing = rng.uniform(0.01, 0.5, (2, 4, 9))
     alpha = 1 - np.exp(-density * spacing)
     survive = np.cumprod(np.concatenate([np.ones((2, 4, 1)), 1 - alpha[..., :-1]], -1), -1)
-    check(vis.sampled_volume_density_to_occupancy_probability(native(density, backend),
-                                                              native(spacing, backend)),
-          alpha, backend)
+    check(
+        vis.sampled_volume_density_to_occupancy_probability(
+            native(density, backend), native(spacing, backend)
+        ),
+        alpha,
+        backend,
+    )
     weights = vis.ray_termination_probabilities(native(density, backend), native(spacing, backend))
     check(weights, alpha * survive, backend)
     feats = rng.standard_normal((2, 4, 9, 3))
@@ -268,8 +315,14 @@ def test_render_implicit_features_and_depth(backend):
     dirs = np.array([[[0.0, 0.0, 1.0], [0.6, 0.0, 0.8]]])
     near, far = np.ones((1, 2)), np.full((1, 2), 4.0)
     feat, var, depth, depth_var = vis.render_implicit_features_and_depth(
-        network, native(np.zeros((1, 3)), backend), native(dirs, backend), native(near, backend),
-        native(far, backend), 96, render_variance=True)
+        network,
+        native(np.zeros((1, 3)), backend),
+        native(dirs, backend),
+        native(near, backend),
+        native(far, backend),
+        96,
+        render_variance=True,
+    )
     wall = np.array([2.0, 2.0 / 0.8])
     assert np.all(np.abs(numpy_of(depth)[0, :, 0] - wall) <= 3 / 96 + 1e-9)
     check(feat, np.broadcast_to([0.25, 0.0], (1, 2, 2)), backend, atol=1e-9)
@@ -279,7 +332,9 @@ def test_render_implicit_features_and_depth(backend):
 def test_sampled_pixels(backend):
     assert vis.downsampled_image_dims_from_desired_num_pixels((480, 640), 1000) == ([27, 37], 999)
     assert vis.downsampled_image_dims_from_desired_num_pixels((480, 640), 1000, True) == (
-        [27, 36], 972)
+        [27, 36],
+        972,
+    )
     coords = numpy_of(vis.create_sampled_pixel_coords_image((12, 16), (3, 4), (2,), f=backend))
     assert coords.shape == (2, 3, 4, 2)
     cells = np.floor(coords / [4, 4])  # every sample in its own 4 x 4 cell
@@ -287,8 +342,9 @@ def test_sampled_pixels(backend):
     np.testing.assert_array_equal(cells[..., 1], np.broadcast_to(np.arange(3)[:, None], (2, 3, 4)))
     image = np.stack(np.meshgrid(np.arange(16.0), np.arange(12.0)), -1)[None]  # (x, y) of pixels
     image = np.concatenate([image, image[..., :1] * 0 + 7], -1)
-    xy, seven = vis.sample_images([native(image[..., :2], backend), native(image[..., 2:], backend)],
-                                  12)
+    xy, seven = vis.sample_images(
+        [native(image[..., :2], backend), native(image[..., 2:], backend)], 12
+    )
     xy = numpy_of(xy)
     assert xy.shape == (1, 12, 2) and np.all(numpy_of(seven) == 7)
     assert len({tuple(p) for p in np.floor(xy[0] / 4)}) == 12

@@ -17,8 +17,13 @@ from tests.ivy_vision._scene import cameras, texture
 rng = np.random.default_rng(7)
 IMAGE = rng.standard_normal((2, 5, 7, 3))
 # points inside, on the border, half a pixel out and far out (never exactly on .5 for nearest)
-COORDS = np.concatenate([rng.uniform(-3, 10, (2, 60, 2)),
-                         np.array([[[0.0, 0.0], [6.0, 4.0], [-0.4, 2.2], [6.3, -0.7]]] * 2)], 1)
+COORDS = np.concatenate(
+    [
+        rng.uniform(-3, 10, (2, 60, 2)),
+        np.array([[[0.0, 0.0], [6.0, 4.0], [-0.4, 2.2], [6.3, -0.7]]] * 2),
+    ],
+    1,
+)
 
 
 @pytest.mark.parametrize("dtype", ["float64", "float32"])
@@ -26,8 +31,12 @@ COORDS = np.concatenate([rng.uniform(-3, 10, (2, 60, 2)),
 @pytest.mark.parametrize("padding", ["border", "zeros"])
 def test_sample_image_equals_scipy(padding, method, dtype, backend):
     expected = R.sample(IMAGE, COORDS, method, padding)
-    out = vis.sample_image(native(IMAGE.astype(dtype), backend), native(COORDS.astype(dtype), backend),
-                           method=method, padding=padding)
+    out = vis.sample_image(
+        native(IMAGE.astype(dtype), backend),
+        native(COORDS.astype(dtype), backend),
+        method=method,
+        padding=padding,
+    )
     check(out, expected, backend, dtype=dtype, **({"atol": 1e-5} if dtype == "float32" else {}))
 
 
@@ -37,10 +46,17 @@ def test_sample_image_equals_torch_grid_sample(padding, backend):
     image = torch.from_numpy(IMAGE).permute(0, 3, 1, 2)
     h, w = IMAGE.shape[1:3]
     grid = COORDS / np.array([w - 1, h - 1]) * 2 - 1
-    expected = torch.nn.functional.grid_sample(
-        image, torch.from_numpy(grid)[:, None], mode="bilinear", padding_mode=padding,
-        align_corners=True,
-    )[:, :, 0].permute(0, 2, 1).numpy()
+    expected = (
+        torch.nn.functional.grid_sample(
+            image,
+            torch.from_numpy(grid)[:, None],
+            mode="bilinear",
+            padding_mode=padding,
+            align_corners=True,
+        )[:, :, 0]
+        .permute(0, 2, 1)
+        .numpy()
+    )
     out = vis.sample_image(native(IMAGE, backend), native(COORDS, backend), padding=padding)
     check(out, expected, backend)
 
@@ -91,11 +107,18 @@ def _views():
 @pytest.mark.parametrize("padding", ["zeros", "border"])
 def test_inverse_warp_between_cameras(padding, backend):
     cam1, cam2, depth1, _, _, colour2 = _views()
-    full12 = (np.concatenate([cam2.P, [[0, 0, 0, 1.0]]]) @ np.linalg.inv(
-        np.concatenate([cam1.P, [[0, 0, 0, 1.0]]])))[:3]
+    full12 = (
+        np.concatenate([cam2.P, [[0, 0, 0, 1.0]]])
+        @ np.linalg.inv(np.concatenate([cam1.P, [[0, 0, 0, 1.0]]]))
+    )[:3]
     expected = R.inverse_warp(colour2, depth1, full12, padding)
-    out, valid = vis.inverse_warp(native(colour2, backend), native(depth1, backend),
-                                  native(full12, backend), padding=padding, with_validity=True)
+    out, valid = vis.inverse_warp(
+        native(colour2, backend),
+        native(depth1, backend),
+        native(full12, backend),
+        padding=padding,
+        with_validity=True,
+    )
     check(out, expected, backend)
     projected = R.apply(full12, R.pixel_grid(cam1.h, cam1.w) * depth1)
     px = projected[..., :2] / projected[..., 2:3]
@@ -107,11 +130,18 @@ def test_inverse_warp_between_cameras(padding, backend):
 @pytest.mark.parametrize("with_db", [True, False])
 def test_forward_warp_between_cameras(with_db, backend):
     cam1, cam2, depth1, _, colour1, _ = _views()
-    full12 = (np.concatenate([cam2.P, [[0, 0, 0, 1.0]]]) @ np.linalg.inv(
-        np.concatenate([cam1.P, [[0, 0, 0, 1.0]]])))[:3]
+    full12 = (
+        np.concatenate([cam2.P, [[0, 0, 0, 1.0]]])
+        @ np.linalg.inv(np.concatenate([cam1.P, [[0, 0, 0, 1.0]]]))
+    )[:3]
     image, depth, valid = R.splat(colour1, depth1, full12, (10, 14), with_db)
-    out = vis.forward_warp(native(colour1, backend), native(depth1, backend),
-                           native(full12, backend), (10, 14), with_db=with_db)
+    out = vis.forward_warp(
+        native(colour1, backend),
+        native(depth1, backend),
+        native(full12, backend),
+        (10, 14),
+        with_db=with_db,
+    )
     check(out[0], image, backend)
     check(out[1], depth, backend)
     np.testing.assert_array_equal(numpy_of(out[2]), valid)
@@ -124,10 +154,12 @@ def test_forward_warp_depth_buffer_keeps_the_nearest(backend):
     depth = np.array([[[2.0], [1.0]]])
     # both pixels move to x = 0: shift the far one by -x_c ... use a matrix that drops x
     full = np.array([[0.0, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]])
-    out, out_depth, valid = vis.forward_warp(native(image, backend), native(depth, backend),
-                                             native(full, backend))
+    out, out_depth, valid = vis.forward_warp(
+        native(image, backend), native(depth, backend), native(full, backend)
+    )
     check(out[..., 0], np.array([[2.0, 0.0]]), backend)
     check(out_depth[..., 0], np.array([[1.0, 0.0]]), backend)
-    out, _, _ = vis.forward_warp(native(image, backend), native(depth, backend),
-                                 native(full, backend), with_db=False)
+    out, _, _ = vis.forward_warp(
+        native(image, backend), native(depth, backend), native(full, backend), with_db=False
+    )
     check(out[..., 0], np.array([[1.5, 0.0]]), backend)

@@ -46,8 +46,11 @@ def _indices(points, lower, upper, dims):
 def test_counts_and_means_with_bounds(dtype, backend):
     dims = (4, 5, 6)
     grid, out_dims, res, lower = vis.coords_to_voxel_grid(
-        native(POINTS.astype(dtype), backend), dims, coord_bounds=BOUNDS,
-        features=native(FEATS.astype(dtype), backend))
+        native(POINTS.astype(dtype), backend),
+        dims,
+        coord_bounds=BOUNDS,
+        features=native(FEATS.astype(dtype), backend),
+    )
     grid = numpy_of(grid)
     assert grid.shape == (2, 4, 5, 6, 3 + 2 + 1) and grid.dtype == np.dtype(dtype)
     lo, hi = np.array(BOUNDS[:3]), np.array(BOUNDS[3:])
@@ -75,8 +78,7 @@ def test_bounds_from_the_data_and_homogeneous_points(backend):
 
 def test_resolution_mode(backend):
     res = (0.3, 0.25, 0.5)
-    grid, dims, out_res, lower = vis.coords_to_voxel_grid(native(POINTS, backend), res,
-                                                          mode="RES")
+    grid, dims, out_res, lower = vis.coords_to_voxel_grid(native(POINTS, backend), res, mode="RES")
     grid, dims = numpy_of(grid), numpy_of(dims)
     extent = POINTS.max(1) - POINTS.min(1)
     np.testing.assert_array_equal(dims, np.ceil(extent / res))
@@ -84,20 +86,24 @@ def test_resolution_mode(backend):
     assert grid.shape[1:4] == tuple(dims.max(0).astype(int))
     for b in range(2):
         d = dims[b].astype(int)
-        hist, _ = np.histogramdd(POINTS[b], bins=d, range=list(zip(POINTS[b].min(0),
-                                                                   POINTS[b].max(0))))
+        hist, _ = np.histogramdd(
+            POINTS[b], bins=d, range=list(zip(POINTS[b].min(0), POINTS[b].max(0)))
+        )
         np.testing.assert_array_equal(grid[b, : d[0], : d[1], : d[2], -1], hist)
 
 
 def test_batched_bounds_and_unbatched_points(backend):
     bounds = np.array([[0, 0, 0, 1, 1, 1.0], [-0.5, -0.5, -0.5, 1.5, 1.5, 1.5]])
-    grid, _, _, _ = vis.coords_to_voxel_grid(native(POINTS, backend), (2, 2, 2),
-                                             coord_bounds=native(bounds, backend))
+    grid, _, _, _ = vis.coords_to_voxel_grid(
+        native(POINTS, backend), (2, 2, 2), coord_bounds=native(bounds, backend)
+    )
     for b in range(2):
-        hist, _ = np.histogramdd(POINTS[b], bins=(2, 2, 2),
-                                 range=list(zip(bounds[b, :3], bounds[b, 3:])))
+        hist, _ = np.histogramdd(
+            POINTS[b], bins=(2, 2, 2), range=list(zip(bounds[b, :3], bounds[b, 3:]))
+        )
         np.testing.assert_array_equal(numpy_of(grid)[b, ..., -1], hist)
-    grid, _, _, _ = vis.coords_to_voxel_grid(native(POINTS[0], backend), (2, 3, 4),
-                                             coord_bounds=BOUNDS)
+    grid, _, _, _ = vis.coords_to_voxel_grid(
+        native(POINTS[0], backend), (2, 3, 4), coord_bounds=BOUNDS
+    )
     hist, _ = np.histogramdd(POINTS[0], bins=(2, 3, 4), range=list(zip(BOUNDS[:3], BOUNDS[3:])))
     np.testing.assert_array_equal(numpy_of(grid)[..., -1], hist)
