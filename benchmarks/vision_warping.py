@@ -7,10 +7,11 @@ lands. Both sides take the same inputs and compute the camera-to-camera matrix i
 call (kornia inverts the calibration matrix, so ivy does too). Images are float32, channel-last
 for ivy ``[B, H, W, 3]`` and channel-first for kornia ``[B, 3, H, W]`` (each library's own
 layout). Every output is checked against kornia's (or, without kornia, against ivy on numpy in
-float64) before it is timed. The implementations take turns call by call
-(benchmarks/_timing.py), and the minimum over the repeats (the least disturbed call on a shared
-machine) is reported in milliseconds with the median beside it, and the ratio of the minima to
-kornia's (> 1 means slower than kornia).
+float64) before it is timed. Each ivy_vision variant (backend, eager or compiled) runs in a
+process of its own with kornia beside it (another framework's thread pools and allocations
+would otherwise slow whatever runs after them), the two taking turns call by call (benchmarks/_timing.py); the minimum over the repeats (the least
+disturbed call on a shared machine) is reported in milliseconds with the median beside it, and
+the ratio of the minima to kornia's in the same process (> 1 means slower than kornia).
 
 kornia is a benchmark-only dependency: ``.venv/bin/pip install kornia`` (check with
 ``--dry-run`` that it keeps torch at 2.13.0). Without it the kornia rows and ratios are left
@@ -25,7 +26,9 @@ from __future__ import annotations
 
 import argparse
 import importlib.util
+import json
 import os
+import subprocess
 import sys
 import time
 import timeit
@@ -114,21 +117,31 @@ def _sync(x):
     return x
 
 
-def _implementations(backends, torch_compile):
-    """(name, backend, channel_first, fn) of everything to time."""
+COMPILERS = {"torch": "torch.compile", "jax": "jax.jit", "tensorflow": "tf.function"}
+
+
+def _variants(backends, torch_compile):
+    """``(backend, compiled)`` of every ivy_vision variant to time."""
+    out = []
+    for backend in backends:
+        out.append((backend, False))
+        if backend in COMPILERS and (backend != "torch" or torch_compile):
+            out.append((backend, True))
+    return out
+
+
+def _implementations(backend, compiled):
+    """(name, backend, channel_first, fn): kornia, if installed, and one ivy_vision variant."""
     impls = []
     if importlib.util.find_spec("kornia") is not None:
-        impls.append(("kornia warp_frame_depth (torch)", "torch", True, _kornia_warp()))
-    for backend in backends:
-        impls.append((f"ivy_vision {backend}", backend, False, ivy_warp))
-        if backend == "numpy":
-            continue
-        if backend == "torch" and not torch_compile:
-            continue
-        label = {"torch": "torch.compile", "jax": "jax.jit", "tensorflow": "tf.function"}[backend]
+        impls.append((KORNIA, "torch", True, _kornia_warp()))
+    if compiled:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            impls.append((f"ivy_vision {label}", backend, False, ivy.compile_fn(ivy_warp)))
+            fn = ivy.compile_fn(ivy_warp)
+        impls.append((f"ivy_vision {COMPILERS[backend]}", backend, False, fn))
+    else:
+        impls.append((f"ivy_vision {backend}", backend, False, ivy_warp))
     return impls
 
 
@@ -151,6 +164,64 @@ def _set_threads(threads, backends):
         tf.config.threading.set_inter_op_parallelism_threads(threads)
 
 
+def _reference(data):
+    """kornia's warp (channel-last), or ivy on numpy in float64 without kornia."""
+    keys = ("image", "depth", "pose", "calib")
+    if importlib.util.find_spec("kornia") is None:
+        return ivy_warp(*[data[k].astype(np.float64) for k in keys])
+    import torch
+
+    arrays = [np.moveaxis(data[k], -1, 1) if k in ("image", "depth") else data[k] for k in keys]
+    out = _kornia_warp()(*[torch.from_numpy(np.ascontiguousarray(a)) for a in arrays])
+    return out.permute(0, 2, 3, 1).numpy()
+
+
+def _measure(variant, args):
+    """Rows ``(size, name, min ms, median ms, kornia min ms, max err)`` of one ivy_vision
+    variant (``backend`` or ``backend:compiled``), kornia timed in the same process, the two
+    taking turns call by call."""
+    backend, _, compiled = variant.partition(":")
+    _set_threads(args.threads, [backend])
+    clock = time.perf_counter if args.clock == "wall" else time.process_time
+    rows = []
+    for size in args.sizes.split(","):
+        h, w = (int(v) for v in size.split("x"))
+        data = _inputs(args.batch, h, w)
+        if backend == "torch":  # compile each size afresh, with static shapes, as jax and tf do
+            import torch
+
+            torch._dynamo.reset()
+        reference = _reference(data)
+        timers, errors = {}, {}
+        for name, impl_backend, channel_first, fn in _implementations(backend, bool(compiled)):
+            arrays = [data[k] for k in ("image", "depth", "pose", "calib")]
+            if channel_first:
+                arrays[0], arrays[1] = (np.moveaxis(a, -1, 1) for a in arrays[:2])
+            arrays = [_native(a, impl_backend) for a in arrays]
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                out = _to_numpy(_sync(fn(*arrays)))
+            if channel_first:
+                out = np.moveaxis(out, 1, -1)
+            # kornia divides by z + 1e-8 (float32): a few 1e-4 of difference
+            errors[name] = float(np.max(np.abs(out - reference)))
+            if errors[name] > 2e-3:
+                raise AssertionError(f"{name} {size}: max difference {errors[name]:.2e}")
+            _sync(fn(*arrays))
+            timers[name] = timeit.Timer(lambda fn=fn, a=arrays: _sync(fn(*a)), timer=clock)
+        samples = interleaved_samples(timers, number=1, repeats=args.repeats)
+        kornia = min(samples[KORNIA]) * 1e3 if KORNIA in samples else None
+        for name, values in samples.items():
+            if name != KORNIA:
+                rows.append(
+                    (size, name, min(values) * 1e3, median(values) * 1e3, kornia, errors[name])
+                )
+    return rows
+
+
+KORNIA = "kornia warp_frame_depth (torch)"
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", default="240x320,480x640", help="HxW image sizes")
@@ -167,13 +238,16 @@ def main(argv=None):
         "--clock",
         default="wall",
         choices=["wall", "process"],
-        help="wall time, or this process's CPU time (steadier on a machine "
-        "shared with other work; with --threads 1 it is the compute time)",
+        help="wall time, or the process's CPU time (steadier on a machine shared with other "
+        "work; with --threads 1 it is the compute time)",
     )
+    parser.add_argument("--worker", help=argparse.SUPPRESS)  # one variant, rows as JSON
     args = parser.parse_args(argv)
+    if args.worker:
+        print(json.dumps(_measure(args.worker, args)))
+        return
 
     backends = [b for b in args.backends.split(",") if importlib.util.find_spec(b) is not None]
-    _set_threads(args.threads, backends)
     have_kornia = importlib.util.find_spec("kornia") is not None
     if not have_kornia:
         print(
@@ -182,66 +256,50 @@ def main(argv=None):
         )
     print(
         f"batch {args.batch}, float32, 3 channels, {args.threads} thread(s), "
-        f"{args.repeats} interleaved repeats, {args.clock} clock\n"
+        f"{args.repeats} interleaved repeats, {args.clock} clock; each variant in its own "
+        f"process, kornia timed beside it\n"
     )
-    clock = time.perf_counter if args.clock == "wall" else time.process_time
-    header = f"{'size':9} {'implementation':34} {'ms':>8} {'median':>8}"
-    header += f" {'vs kornia':>9}" if have_kornia else ""
+    header = f"{'size':9} {'implementation':28} {'ms':>8} {'median':>8}"
+    header += f" {'kornia ms':>9} {'vs kornia':>9}" if have_kornia else ""
     print(header + f" {'max err':>9}")
     print("-" * (len(header) + 10))
+    rows = []
+    # a process per variant: one framework's threads and allocations never slow another's
+    for backend, compiled in _variants(backends, not args.no_torch_compile):
+        forwarded = [
+            "--sizes",
+            args.sizes,
+            "--batch",
+            str(args.batch),
+            "--repeats",
+            str(args.repeats),
+            "--threads",
+            str(args.threads),
+            "--clock",
+            args.clock,
+        ]
+        forwarded += ["--no-torch-compile"] if args.no_torch_compile else []
+        out = subprocess.run(
+            [
+                sys.executable,
+                __file__,
+                *forwarded,
+                "--worker",
+                backend + (":c" if compiled else ""),
+            ],
+            env={**os.environ, "OMP_WAIT_POLICY": "PASSIVE"},  # idle OpenMP threads sleep
+            capture_output=True,
+            text=True,
+            check=True,
+        )
+        rows += json.loads(out.stdout.strip().splitlines()[-1])
     for size in args.sizes.split(","):
-        h, w = (int(v) for v in size.split("x"))
-        data = _inputs(args.batch, h, w)
-        if "torch" in backends:  # compile each size afresh, with static shapes, as jax and tf do
-            import torch
-
-            torch._dynamo.reset()
-        impls = _implementations(backends, not args.no_torch_compile)
-        if have_kornia:
-            import torch
-
-            reference = (
-                _kornia_warp()(
-                    *[
-                        torch.from_numpy(
-                            np.ascontiguousarray(
-                                np.moveaxis(data[k], -1, 1) if k in ("image", "depth") else data[k]
-                            )
-                        )
-                        for k in ("image", "depth", "pose", "calib")
-                    ]
-                )
-                .permute(0, 2, 3, 1)
-                .numpy()
-            )
-        else:
-            reference = ivy_warp(
-                *[data[k].astype(np.float64) for k in ("image", "depth", "pose", "calib")]
-            )
-        timers, errors = {}, {}
-        for name, backend, channel_first, fn in impls:
-            arrays = [data[k] for k in ("image", "depth", "pose", "calib")]
-            if channel_first:
-                arrays[0], arrays[1] = (np.moveaxis(a, -1, 1) for a in arrays[:2])
-            arrays = [_native(a, backend) for a in arrays]
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")
-                out = _to_numpy(_sync(fn(*arrays)))
-            if channel_first:
-                out = np.moveaxis(out, 1, -1)
-            # kornia divides by z + 1e-8 (float32): a few 1e-4 of difference
-            errors[name] = float(np.max(np.abs(out - reference)))
-            if errors[name] > 2e-3:
-                raise AssertionError(f"{name} {size}: max difference {errors[name]:.2e}")
-            _sync(fn(*arrays))
-            timers[name] = timeit.Timer(lambda fn=fn, a=arrays: _sync(fn(*a)), timer=clock)
-        samples = interleaved_samples(timers, number=1, repeats=args.repeats)
-        best = {name: min(s) * 1e3 for name, s in samples.items()}
-        kornia = best.get("kornia warp_frame_depth (torch)")
-        for name, _, _, _ in impls:
-            row = f"{size:9} {name:34} {best[name]:8.2f} {median(samples[name]) * 1e3:8.2f}"
-            row += f" {best[name] / kornia:9.2f}" if kornia else ""
-            print(row + f" {errors[name]:9.1e}")
+        for row_size, name, best, med, kornia, err in rows:
+            if row_size != size:
+                continue
+            row = f"{size:9} {name:28} {best:8.2f} {med:8.2f}"
+            row += f" {kornia:9.2f} {best / kornia:9.2f}" if kornia else ""
+            print(row + f" {err:9.1e}")
         print()
 
 
