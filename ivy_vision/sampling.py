@@ -260,8 +260,8 @@ def inverse_warp(
         method: ``'bilinear'`` or ``'nearest'`` sampling.
         padding: ``'zeros'`` (outside the source image is 0, as kornia's warp_frame_depth) or
             ``'border'``.
-        with_validity: also return where the projection lies in front of the source camera and
-            inside its image.
+        with_validity: also return where the target depth is positive and its projection lies
+            in front of the source camera and inside its image.
         f: framework name or namespace; inferred from the inputs if None.
 
     Returns:
@@ -317,6 +317,8 @@ def inverse_warp(
     inside = xp.logical_and(
         xp.logical_and(xq >= 0.5, xq <= ws + 0.5), xp.logical_and(yq >= 0.5, yq <= hs + 0.5)
     )
+    measured = xp.reshape(depth_tgt, (*C.shape_of(xp, depth_tgt)[:-3], h * w)) > 0
+    inside = xp.logical_and(inside, measured)
     valid = xp.logical_and(front, xp.reshape(xp.broadcast_to(inside, (*batch, h * w)), (b, h * w)))
     return warped, xp.reshape(valid, (*batch, h, w, 1))
 
@@ -336,7 +338,8 @@ def forward_warp(
 
     With the depth buffer (``with_db``), the nearest point to the target camera wins each
     pixel (the mean of exact ties); without it, the points landing in a pixel are averaged.
-    Target pixels that receive no point are 0 and invalid.
+    Source pixels without depth (``<= 0``) are left out; target pixels that receive no point
+    are 0 and invalid.
 
     Args:
         image_src: source images *[batch_shape, h, w, c]*.
@@ -386,7 +389,8 @@ def forward_warp(
     inverse_z = 1.0 / xp.where(in_front, z, xp.ones_like(z))
     x, y = projected[..., 0, :] * inverse_z, projected[..., 1, :] * inverse_z
     values = xp.concat([xp.reshape(image_src, (*batch, h * w, c)), z[..., None]], axis=-1)
-    flat, valid = S.pixel_indices(xp, x, y, in_front, dims)
+    measured = xp.reshape(depth_src, (*C.shape_of(xp, depth_src)[:-3], h * w)) > 0
+    flat, valid = S.pixel_indices(xp, x, y, xp.logical_and(in_front, measured), dims)
     size = dims[0] * dims[1]
     index, b = S.global_indices(xp, flat, size)
     total = b * size + 1

@@ -138,7 +138,7 @@ def splat(image, depth, full_mat, dims, with_db=True):
     for i in range(h):
         for j in range(w):
             p = full_mat[:, :3] @ (np.array([j, i, 1.0]) * depth[i, j, 0]) + full_mat[:, 3]
-            if p[2] <= 0:
+            if p[2] <= 0 or depth[i, j, 0] <= 0:
                 continue
             col, row = np.floor(p[0] / p[2] + 0.5), np.floor(p[1] / p[2] + 0.5)
             if not (0 <= col < wt and 0 <= row < ht):
