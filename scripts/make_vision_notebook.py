@@ -1,6 +1,9 @@
 """Write ``notebooks/vision_multiview.ipynb`` from the cells below (run it after editing them):
 
-    python scripts/make_vision_notebook.py
+    python scripts/make_vision_notebook.py [--execute]
+
+``--execute`` runs it once (the first cell's defaults: torch, 160 pixels wide, 100^3 voxels)
+and saves it with its outputs, so that the figures show where the notebook is read.
 
 The notebook: several depth cameras of a MuJoCo scene -> point clouds fused in a voxel grid
 (the paper's 100^3 example) -> rendered into a new view; and an inverse warp between two views.
@@ -229,6 +232,11 @@ plt.show()""",
 
 
 def main():
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--execute", action="store_true", help="run it and save the outputs")
+    args = parser.parse_args()
     nb = nbformat.v4.new_notebook()
     nb.metadata["kernelspec"] = {
         "name": "python3",
@@ -238,8 +246,15 @@ def main():
     for kind, source in CELLS:
         make = nbformat.v4.new_code_cell if kind == "code" else nbformat.v4.new_markdown_cell
         nb.cells.append(make(source))
-    path = pathlib.Path(__file__).resolve().parents[1] / "notebooks" / "vision_multiview.ipynb"
+    root = pathlib.Path(__file__).resolve().parents[1]
+    path = root / "notebooks" / "vision_multiview.ipynb"
     path.parent.mkdir(exist_ok=True)
+    if args.execute:
+        from nbclient import NotebookClient
+
+        NotebookClient(
+            nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(root)}}
+        ).execute()
     nbformat.write(nb, path)
     print(path)
 

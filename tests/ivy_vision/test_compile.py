@@ -11,6 +11,9 @@ import ivy_vision as vis
 from tests.helpers import native, numpy_of
 from tests.ivy_vision import _cases as K
 
+# torch.compile's internals still call the deprecated torch.jit.script_method
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning:torch.*")
+
 rng = np.random.default_rng(41)
 IMAGE = rng.standard_normal((2, 4, 5, 3))
 
