@@ -4,7 +4,10 @@ namespace ``xp`` first; nothing here dispatches.
 Model constants are float64 numpy arrays computed once; :func:`constants` converts them, per
 call, to the dtype and device of the input (under ``jax.jit``, ``tf.function`` and
 ``torch.compile`` they become constants of the compiled program, so the conversion costs nothing
-there).
+there). They are converted from Python lists, not numpy arrays: ``ivy.torch.asarray`` reads
+``ndarray.flags``, which ``torch.compile`` cannot trace (a graph break per constant). Nothing is
+cached between calls: an array made while ``tf.function`` or ``jax.jit`` traces belongs to that
+trace.
 """
 
 from __future__ import annotations
@@ -12,10 +15,28 @@ from __future__ import annotations
 import numpy as np
 
 
-def constants(xp, like, arrays: dict) -> dict:
-    """``{name: numpy array}`` -> ``{name: backend array}`` of ``like``'s dtype and device."""
+def to_backend(xp, value, like):
+    """``value`` (numpy array, number, nested list, or array) as an array of ``like``'s
+    framework, dtype and device; arrays that already are pass through, keeping gradients."""
+    if isinstance(value, type(like)) and value.dtype == like.dtype:
+        return value
+    if isinstance(value, (np.ndarray, np.generic)):
+        value = value.tolist()
+    return xp.asarray(value, dtype=like.dtype, device=xp.dev(like))
+
+
+def as_lists(arrays: dict) -> dict:
+    """``{name: numpy array}`` -> ``{name: nested list}``, once, when a model is built: kernels
+    then touch no numpy object (``torch.compile`` traces numpy arrays and breaks its graph on
+    ``tolist``)."""
+    return {k: np.asarray(v, dtype=np.float64).tolist() for k, v in arrays.items()}
+
+
+def constants(xp, like, lists: dict) -> dict:
+    """``{name: nested list}`` (from :func:`as_lists`) -> ``{name: backend array}`` of ``like``'s
+    dtype and device."""
     dtype, device = like.dtype, xp.dev(like)
-    return {k: xp.asarray(v, dtype=dtype, device=device) for k, v in arrays.items()}
+    return {k: xp.asarray(v, dtype=dtype, device=device) for k, v in lists.items()}
 
 
 def check_floating(xp, x, name: str, owner: str) -> None:
@@ -45,19 +66,23 @@ def broadcast_leading(xp, const, like, like_trailing: int):
     return const + zeros[(Ellipsis,) + (None,) * len(const.shape)]
 
 
-def select_last(xp, x, indices: np.ndarray, size: int):
-    """``x[..., indices]`` for a static index list: a slice when the indices are contiguous,
-    else one matrix product with a 0/1 selection matrix (exact: sums of ``x * 1`` and zeros;
-    no fancy indexing, which tensorflow lacks)."""
-    indices = np.asarray(indices, dtype=np.int64)
-    if indices.size == 0:
-        return x[..., 0:0]
-    start = int(indices[0])
-    if np.array_equal(indices, np.arange(start, start + indices.size)):
-        return x[..., start : start + indices.size]
-    selection = np.zeros((size, indices.size))
-    selection[indices, np.arange(indices.size)] = 1.0
-    selection = xp.asarray(selection, dtype=x.dtype, device=xp.dev(x))
+def gather_spec(indices, size: int):
+    """A static gather of ``x[..., indices]`` along a last axis of length ``size``:
+    ``("slice", start, stop)`` when the indices are contiguous, else ``("matrix", rows)``, a 0/1
+    selection matrix as nested lists (exact: sums of ``x * 1`` and zeros; no fancy indexing,
+    which tensorflow lacks)."""
+    indices = [int(i) for i in indices]
+    if indices and indices == list(range(indices[0], indices[0] + len(indices))):
+        return ("slice", indices[0], indices[0] + len(indices))
+    rows = [[1.0 if i == j else 0.0 for j in indices] for i in range(size)]
+    return ("matrix", rows)
+
+
+def gather_last(xp, x, spec):
+    """``x[..., indices]`` for a :func:`gather_spec`."""
+    if spec[0] == "slice":
+        return x[..., spec[1] : spec[2]]
+    selection = xp.asarray(spec[1], dtype=x.dtype, device=xp.dev(x))
     return xp.matmul(x[..., None, :], selection)[..., 0, :]
 
 

@@ -120,6 +120,7 @@ class KinematicTree:
         self._qpos_limits(m)
         self._build_plan(np.asarray(m.body_jntadr), np.asarray(m.body_jntnum))
         self._build_dofs()
+        self._build_kernel_data()
 
     # ------------------------------------------------------------------------------------------
     # Construction
@@ -257,6 +258,23 @@ class KinematicTree:
         if self._dof_permutation is not None:
             self._dof_consts["perm"] = self._dof_permutation
 
+    def _build_kernel_data(self) -> None:
+        """Everything the kernels read, as Python ints, floats and nested lists: no numpy object
+        is touched while a function is traced (``torch.compile`` breaks its graph on numpy)."""
+        self._k_consts = A.as_lists(self._consts)
+        self._k_dofs = A.as_lists(self._dof_consts)
+        self._k_hinge = A.gather_spec(self._hinge_qadr, self.nq)
+        self._k_joints = tuple(
+            (int(t), int(q), float(self.qpos0[q]), int(b))
+            for t, q, b in zip(self._jnt_type, self._jnt_qadr, self._jnt_body)
+        )
+        self._k_site_body = tuple(int(b) for b in self._site_body)
+        self._k_sites = A.as_lists({"r": self._site_rot.reshape(-1, 3, 3), "p": self._site_pos})
+        self._k_site_each = tuple(
+            A.as_lists({"r": self._site_rot[s], "p": self._site_pos[s]}) for s in range(self.nsite)
+        )
+        self._k_chain = tuple(self._chains[b][:, None].tolist() for b in range(self.nbody))
+
     # ------------------------------------------------------------------------------------------
     # Names
     # ------------------------------------------------------------------------------------------
@@ -343,9 +361,9 @@ class KinematicTree:
             shape = tuple(qpos.shape[:-1]) + (0, 4, 4)
             return xp.zeros(shape, dtype=qpos.dtype, device=xp.dev(qpos))
         rots, poss, _ = self._frames(xp, qpos)
-        c = A.constants(xp, qpos, {"r": self._site_rot, "p": self._site_pos})
-        body_rot = _stack_batched(xp, [rots[b] for b in self._site_body], qpos, -3)
-        body_pos = _stack_batched(xp, [poss[b] for b in self._site_body], qpos, -2)
+        c = A.constants(xp, qpos, self._k_sites)
+        body_rot = _stack_batched(xp, [rots[b] for b in self._k_site_body], qpos, -3)
+        body_pos = _stack_batched(xp, [poss[b] for b in self._k_site_body], qpos, -2)
         rot = xp.matmul(body_rot, c["r"])
         pos = body_pos + A.matvec(xp, body_rot, c["p"])
         return A.assemble_poses(xp, rot, pos)
@@ -374,7 +392,7 @@ class KinematicTree:
         rots, poss, _ = self._frames(xp, qpos)
         body_rot = _stack_batched(xp, [rots[b] for b in ids], qpos, -3)
         body_pos = _stack_batched(xp, [poss[b] for b in ids], qpos, -2)
-        points = xp.asarray(points, dtype=qpos.dtype, device=xp.dev(qpos))
+        points = A.to_backend(xp, points, qpos)
         return body_pos + A.matvec(xp, body_rot, points)
 
     def jacobian(
@@ -413,8 +431,8 @@ class KinematicTree:
         rots, poss, joint_frames = self._frames(xp, qpos, joint_frames=True)
         if site is not None:
             s = self.site_id(site)
-            b = int(self._site_body[s])
-            c = A.constants(xp, qpos, {"r": self._site_rot[s], "p": self._site_pos[s]})
+            b = self._k_site_body[s]
+            c = A.constants(xp, qpos, self._k_site_each[s])
             frame_rot = xp.matmul(rots[b], c["r"])
             frame_pos = poss[b] + A.matvec(xp, rots[b], c["p"])
         else:
@@ -422,10 +440,10 @@ class KinematicTree:
             frame_rot, frame_pos = rots[b], poss[b]
         target = frame_pos
         if point is not None:
-            point = xp.asarray(point, dtype=qpos.dtype, device=xp.dev(qpos))
+            point = A.to_backend(xp, point, qpos)
             target = frame_pos + A.matvec(xp, frame_rot, point)
         axes, anchors = self._dof_axes(xp, qpos, rots, poss, joint_frames)
-        c = A.constants(xp, qpos, {**self._dof_consts, "chain": self._chains[b][:, None]})
+        c = A.constants(xp, qpos, {**self._k_dofs, "chain": self._k_chain[b]})
         offset = target[..., None, :] - anchors
         linear = c["rot"] * A.cross(xp, axes, offset) + c["trans"] * axes
         angular = c["rot"] * axes
@@ -494,10 +512,10 @@ class KinematicTree:
     def _frames(self, xp, qpos, joint_frames: bool = False):
         """World rotations and positions of every body (lists; constant bodies unbatched), and
         of the frame right after each joint (for the Jacobian)."""
-        c = A.constants(xp, qpos, self._consts)
+        c = A.constants(xp, qpos, self._k_consts)
         mats, vecs = c["mats"], c["vecs"]
-        if len(self._hinge_qadr):
-            theta = A.select_last(xp, qpos, self._hinge_qadr, self.nq) - c["hq0"]
+        if "hA" in c:
+            theta = A.gather_last(xp, qpos, self._k_hinge) - c["hq0"]
             sin, vers = _sin_versine(xp, theta)
             hinge_rot = c["hA"] + sin[..., None, None] * c["hB"] + vers[..., None, None] * c["hC"]
             hinge_pos = c["hP"] - sin[..., None] * c["hK"] - vers[..., None] * c["hK2"]
@@ -508,7 +526,7 @@ class KinematicTree:
                 rots[i], poss[i] = mats[step.mat], vecs[step.vec]
                 continue
             if step.kind == "free":
-                adr = int(self._jnt_qadr[step.joints[0]])
+                adr = self._k_joints[step.joints[0]][1]
                 rot = _quaternion_rot(xp, qpos[..., adr + 3 : adr + 7])
                 pos = qpos[..., adr : adr + 3]
                 frames[step.joints[0]] = (rot, pos)
@@ -535,12 +553,12 @@ class KinematicTree:
 
     def _apply_joint(self, xp, qpos, c, j, rot, pos):
         """The frame after joint ``j``, given the (world) frame before it."""
-        adr, kind = int(self._jnt_qadr[j]), int(self._jnt_type[j])
+        kind, adr, ref, _ = self._k_joints[j]
         if kind == _SLIDE:
-            shift = qpos[..., adr : adr + 1] - float(self.qpos0[adr])
+            shift = qpos[..., adr : adr + 1] - ref
             return rot, pos + A.matvec(xp, rot, c["jaxis"][j]) * shift
         if kind == _HINGE:
-            sin, vers = _sin_versine(xp, qpos[..., adr] - float(self.qpos0[adr]))
+            sin, vers = _sin_versine(xp, qpos[..., adr] - ref)
             local = c["mats"][0] + sin[..., None, None] * c["jK"][j] + vers[..., None, None] * (
                 c["jK2"][j]
             )
@@ -552,7 +570,7 @@ class KinematicTree:
 
     def _dof_axes(self, xp, qpos, rots, poss, frames):
         """World axes and anchors of every dof *[batch_shape, nv, 3]*, in dof order."""
-        c = A.constants(xp, qpos, self._dof_consts)
+        c = A.constants(xp, qpos, self._k_dofs)
         axes, anchors = [], []
         if self._hs_joints:
             rot = _stack_batched(xp, [frames[j][0] for j in self._hs_joints], qpos, -3)
@@ -560,9 +578,9 @@ class KinematicTree:
             axes.append(A.matvec(xp, rot, c["hs_axis"]))
             anchors.append(pos + A.matvec(xp, rot, c["hs_pos"]))
         for j in self._ball_free_joints:
-            b = int(self._jnt_body[j])
+            kind, _, _, b = self._k_joints[j]
             body_axes = xp.swapaxes(rots[b], -1, -2)  # rows: the body frame's axes
-            if self._jnt_type[j] == _BALL:
+            if kind == _BALL:
                 rot, pos = frames[j]
                 anchor = pos + A.matvec(xp, rot, c["jpos"][j])
                 axes.append(body_axes)

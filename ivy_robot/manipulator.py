@@ -108,7 +108,8 @@ class Manipulator:
             self.joint_upper = _as_vector(joint_limits[1], n, "joint_limits[1]")
         # distance between consecutive frame origins (constant for revolute joints)
         self.link_lengths = np.hypot(self.a, self.d)
-        self._consts = self._link_constants()
+        self._consts = A.as_lists(self._link_constants())
+        self._weights = {}  # sample_links interpolation weights, by samples_per_metre
 
     def _link_constants(self) -> dict:
         n, a, d = self.num_joints, self.a, self.d
@@ -222,11 +223,7 @@ class Manipulator:
         frames = self._chain(xp, joint_angles, c)
         tool = xp.matmul(frames[-1], c["tool"])
         origins = xp.stack([m[..., 0:3, 3] for m in frames + [tool]], axis=-2)
-        weights = xp.asarray(
-            self._sample_weights(samples_per_metre),
-            dtype=joint_angles.dtype,
-            device=xp.dev(joint_angles),
-        )
+        weights = A.to_backend(xp, self._sample_weights(samples_per_metre), joint_angles)
         return xp.matmul(weights, origins)
 
     def num_link_samples(self, samples_per_metre: float = 25.0) -> int:
@@ -242,26 +239,30 @@ class Manipulator:
             >>> PandaModel().num_link_samples(25)
             34
         """
-        return int(self._sample_weights(samples_per_metre).shape[0])
+        return len(self._sample_weights(samples_per_metre))
 
-    def _sample_weights(self, samples_per_metre: float) -> np.ndarray:
-        """Interpolation weights *[num_samples, num_joints + 2]* over the frame origins."""
+    def _sample_weights(self, samples_per_metre: float) -> list:
+        """Interpolation weights *[num_samples, num_joints + 2]* over the frame origins, as
+        nested lists (computed once per density, in plain Python)."""
         if samples_per_metre <= 0:
             raise ValueError(
                 f"sample_links: samples_per_metre must be positive, got {samples_per_metre}"
             )
-        lengths = list(self.link_lengths) + [float(np.linalg.norm(self.tool_pose[0:3, 3]))]
+        if samples_per_metre in self._weights:
+            return self._weights[samples_per_metre]
+        lengths = [float(v) for v in self.link_lengths]
+        lengths.append(float(np.linalg.norm(self.tool_pose[0:3, 3])))
+        width = len(lengths) + 1
         rows = []
         for i, length in enumerate(lengths):
             count = math.ceil(length * samples_per_metre - 1e-9)
             for k in range(count if length > 0 else 0):
-                t = k / count
-                row = np.zeros(len(lengths) + 1)
-                row[i], row[i + 1] = 1.0 - t, t
+                row = [0.0] * width
+                row[i], row[i + 1] = 1.0 - k / count, k / count
                 rows.append(row)
-        last = np.zeros(len(lengths) + 1)
-        last[-1] = 1.0
-        return np.stack(rows + [last])
+        rows.append([0.0] * (width - 1) + [1.0])
+        self._weights[samples_per_metre] = rows
+        return rows
 
 
 class PandaModel(Manipulator):

@@ -114,10 +114,7 @@ def joint_limit_cost(q: Array, lower: Array, upper: Array, *, f: Framework = Non
 
 
 def _as(xp, value, like):
-    value = np.asarray(value, dtype=np.float64) if isinstance(value, (list, tuple)) else value
-    if isinstance(value, type(like)) and value.dtype == like.dtype:
-        return value
-    return xp.asarray(value, dtype=like.dtype, device=xp.dev(like))
+    return A.to_backend(xp, value, like)
 
 
 class TrajectoryResult(NamedTuple):
@@ -151,17 +148,20 @@ class _SplinePlanner:
             raise ValueError(f"planner: unknown cost weights {sorted(unknown)}")
         anchor_times = np.linspace(0.0, 1.0, self.num_anchors + 2)[:, None]
         self.sample_times = np.linspace(0.0, 1.0, self.num_samples)
-        self._weights = np.asarray(
+        self.path_weights = np.asarray(
             spline_weights(anchor_times, self.sample_times[:, None], order, method=method)
         )
         self._anchor_times, self._order, self._method = anchor_times, order, method
+        # what the compiled step reads, as Python lists (no numpy inside traced code)
+        self._k_weights = self.path_weights.tolist()
+        self._k_interior = anchor_times[1:-1].tolist()
 
     # -- what a subclass provides -------------------------------------------------------------
 
     def _sphere_centres(self, xp, path):  # [num_samples, num_spheres, 3]
         raise NotImplementedError
 
-    def _radii(self) -> np.ndarray:
+    def _radii(self) -> list:
         raise NotImplementedError
 
     def _limits_cost(self, xp, path):
@@ -195,7 +195,7 @@ class _SplinePlanner:
         """
         xp = ivy.get_framework(start, goal, f=f)
         self._check_ends(xp, start, goal)
-        t = _as(xp, self._anchor_times[1:-1], start)
+        t = _as(xp, self._k_interior, start)
         return start + t * (goal - start)
 
     def path(
@@ -225,7 +225,7 @@ class _SplinePlanner:
         """
         xp = ivy.get_framework(anchors, start, goal, f=f)
         if num_samples is None or num_samples == self.num_samples:
-            weights = self._weights
+            weights = self._k_weights
         else:
             times = np.linspace(0.0, 1.0, int(num_samples))[:, None]
             weights = np.asarray(
@@ -423,34 +423,39 @@ class ArmPlanner(_SplinePlanner):
             self.spheres = robot.collision_spheres(sphere_spacing) if spheres is None else spheres
             self.lower, self.upper = robot.qpos_lower, robot.qpos_upper
             self._radius = np.asarray(self.spheres.radii, dtype=np.float64)
+            self._k_bodies = [int(b) for b in self.spheres.body_ids]
+            self._k_centres = np.asarray(self.spheres.centres, dtype=np.float64).tolist()
         elif isinstance(robot, Manipulator):
             self.dim = robot.num_joints
             self.samples_per_metre = float(samples_per_metre)
             count = robot.num_link_samples(self.samples_per_metre)
             self._radius = np.full(count, float(link_radius))
             self.lower, self.upper = robot.joint_lower, robot.joint_upper
+        self._k_radius = self._radius.tolist()
+        self._k_limits = None
+        if np.isfinite(self.lower).any() or np.isfinite(self.upper).any():
+            self._k_limits = (
+                np.where(np.isfinite(self.lower), self.lower, -1e30).tolist(),
+                np.where(np.isfinite(self.upper), self.upper, 1e30).tolist(),
+            )
         else:
             raise TypeError(
                 f"ArmPlanner: robot must be a KinematicTree or a Manipulator, got "
                 f"{type(robot).__name__}"
             )
 
-    def _radii(self) -> np.ndarray:
-        return self._radius
+    def _radii(self) -> list:
+        return self._k_radius
 
     def _sphere_centres(self, xp, path):
         if isinstance(self.robot, KinematicTree):
-            return self.robot.transform_points(
-                path, self.spheres.body_ids, self.spheres.centres, f=xp
-            )
+            return self.robot.transform_points(path, self._k_bodies, self._k_centres, f=xp)
         return self.robot.sample_links(path, self.samples_per_metre, f=xp)
 
     def _limits_cost(self, xp, path):
-        if not (np.isfinite(self.lower).any() or np.isfinite(self.upper).any()):
+        if self._k_limits is None:
             return None
-        lower = np.where(np.isfinite(self.lower), self.lower, -1e30)
-        upper = np.where(np.isfinite(self.upper), self.upper, 1e30)
-        return xp.mean(joint_limit_cost(path, lower, upper, f=xp))
+        return xp.mean(joint_limit_cost(path, *self._k_limits, f=xp))
 
     def sphere_centres(self, path: Array, *, f: Framework = None) -> Array:
         """World centres of the collision spheres along a joint path.
@@ -523,9 +528,10 @@ class DronePlanner(_SplinePlanner):
         self._radius = np.broadcast_to(
             np.asarray(body_radius, dtype=np.float64), (body.num_points,)
         ).copy()
+        self._k_radius = self._radius.tolist()
 
-    def _radii(self) -> np.ndarray:
-        return self._radius
+    def _radii(self) -> list:
+        return self._k_radius
 
     def _sphere_centres(self, xp, path):
         return self.body.sample_body(mech.rot_vec_pose_to_mat_pose(path, f=xp), f=xp)

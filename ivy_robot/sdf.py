@@ -43,11 +43,7 @@ _TYPE_NAMES = {_PLANE: "plane", _SPHERE: "sphere", _CAPSULE: "capsule", _CYLINDE
 
 
 def _param(xp, value, like):
-    """A parameter as an array of ``like``'s framework, dtype and device (arrays that already
-    are pass through, keeping their gradients)."""
-    if isinstance(value, type(like)) and value.dtype == like.dtype:
-        return value
-    return xp.asarray(value, dtype=like.dtype, device=xp.dev(like))
+    return A.to_backend(xp, value, like)
 
 
 def _to_local(xp, points, pose):
@@ -281,11 +277,13 @@ class SceneSDF:
         for code in sorted(set(codes.tolist())):
             index = np.flatnonzero(codes[order] == code)
             self._groups.append((code, int(index[0]), int(index[-1]) + 1))
-        self._consts = {
-            "rot_t": np.swapaxes(self.poses[:, 0:3, 0:3], -1, -2),
-            "pos": self.poses[:, 0:3, 3],
-            "sizes": self.sizes,
-        }
+        self._consts = A.as_lists(
+            {
+                "rot_t": np.swapaxes(self.poses[:, 0:3, 0:3], -1, -2),
+                "pos": self.poses[:, 0:3, 3],
+                "sizes": self.sizes,
+            }
+        )
 
     @classmethod
     def from_mjcf(cls, source: Any, *, exclude: Sequence[str] = ()) -> SceneSDF:

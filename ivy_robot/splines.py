@@ -96,8 +96,7 @@ def _bspline_basis(xp, x, knots, count):
     t = [float(k) for k in knots]
     last = max(i for i in range(len(t) - 1) if t[i] < t[i + 1])
     x = x[..., None]
-    lo = xp.asarray(t[:-1], dtype=x.dtype, device=xp.dev(x))
-    hi = xp.asarray(t[1:], dtype=x.dtype, device=xp.dev(x))
+    lo, hi = A.to_backend(xp, t[:-1], x), A.to_backend(xp, t[1:], x)
     inside = xp.logical_and(x >= lo, x < hi)
     closed = xp.asarray([i == last for i in range(len(t) - 1)], device=xp.dev(x))
     at_end = xp.logical_and(closed, x == hi)
@@ -106,10 +105,10 @@ def _bspline_basis(xp, x, knots, count):
         m = len(t) - 1 - degree
         left_den = [t[i + degree] - t[i] for i in range(m)]
         right_den = [t[i + degree + 1] - t[i + 1] for i in range(m)]
-        ti = xp.asarray(t[:m], dtype=x.dtype, device=xp.dev(x))
-        tr = xp.asarray(t[degree + 1 : degree + 1 + m], dtype=x.dtype, device=xp.dev(x))
-        inv_l = xp.asarray([1.0 / v if v > 0 else 0.0 for v in left_den], dtype=x.dtype)
-        inv_r = xp.asarray([1.0 / v if v > 0 else 0.0 for v in right_den], dtype=x.dtype)
+        ti = A.to_backend(xp, t[:m], x)
+        tr = A.to_backend(xp, t[degree + 1 : degree + 1 + m], x)
+        inv_l = A.to_backend(xp, [1.0 / v if v > 0 else 0.0 for v in left_den], x)
+        inv_r = A.to_backend(xp, [1.0 / v if v > 0 else 0.0 for v in right_den], x)
         basis = (x - ti) * inv_l * basis[..., :m] + (tr - x) * inv_r * basis[..., 1 : m + 1]
     return basis[..., :count]
 
