@@ -413,6 +413,11 @@ class ArmPlanner(_SplinePlanner):
             weights=weights,
         )
         self.robot = robot
+        if not isinstance(robot, (KinematicTree, Manipulator)):
+            raise TypeError(
+                f"ArmPlanner: robot must be a KinematicTree or a Manipulator, got "
+                f"{type(robot).__name__}"
+            )
         if isinstance(robot, KinematicTree):
             if any(t in ("ball", "free") for t in robot.joint_types):
                 raise ValueError(
@@ -425,7 +430,7 @@ class ArmPlanner(_SplinePlanner):
             self._radius = np.asarray(self.spheres.radii, dtype=np.float64)
             self._k_bodies = [int(b) for b in self.spheres.body_ids]
             self._k_centres = np.asarray(self.spheres.centres, dtype=np.float64).tolist()
-        elif isinstance(robot, Manipulator):
+        else:
             self.dim = robot.num_joints
             self.samples_per_metre = float(samples_per_metre)
             count = robot.num_link_samples(self.samples_per_metre)
@@ -437,11 +442,6 @@ class ArmPlanner(_SplinePlanner):
             self._k_limits = (
                 np.where(np.isfinite(self.lower), self.lower, -1e30).tolist(),
                 np.where(np.isfinite(self.upper), self.upper, 1e30).tolist(),
-            )
-        else:
-            raise TypeError(
-                f"ArmPlanner: robot must be a KinematicTree or a Manipulator, got "
-                f"{type(robot).__name__}"
             )
 
     def _radii(self) -> list:

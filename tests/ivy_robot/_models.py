@@ -112,3 +112,41 @@ def random_qpos(model, rng: np.random.Generator, batch: int) -> np.ndarray:
             quat = rng.normal(size=(batch, 4))
             q[:, qa : qa + 4] = quat * rng.uniform(0.5, 2.0, size=(batch, 1))
     return q
+
+
+# Obstacles for the Panda of ivy_robot.panda_mjcf: a post in front of the arm that the straight
+# joint-space path from START to GOAL sweeps through, and the floor.
+ARM_OBSTACLES = """
+    <geom name="floor" type="plane" size="2 2 .1" contype="0" conaffinity="1"/>
+    <geom name="post" type="box" pos="0.6 0 0.2" size="0.06 0.06 0.2" contype="0" conaffinity="1"/>
+"""
+ARM_START = np.array([-1.2, 0.5, 0.0, -1.8, 0.0, 2.3, 0.8])
+ARM_GOAL = np.array([1.2, 0.5, 0.0, -1.8, 0.0, 2.3, 0.8])
+
+# A drone (five spheres on a cross) and pillars between its start and goal.
+DRONE_POINTS = np.array(
+    [[0.0, 0.0, 0.0], [0.15, 0.0, 0.0], [-0.15, 0.0, 0.0], [0.0, 0.15, 0.0], [0.0, -0.15, 0.0]]
+)
+DRONE_RADIUS = 0.05
+DRONE_START = np.array([-1.0, -1.0, 0.6, 0.0, 0.0, 0.0])
+DRONE_GOAL = np.array([1.0, 1.0, 0.6, 0.0, 0.0, 1.0])
+DRONE_SCENE = """
+<mujoco model="drone_scene">
+  <worldbody>
+    <geom name="floor" type="plane" size="3 3 .1" contype="0" conaffinity="1"/>
+    <geom name="pillar" type="cylinder" pos="0.08 -0.05 0.6" size="0.3 0.6" contype="0" conaffinity="1"/>
+    <geom name="crate" type="box" pos="0.5 -0.4 0.4" size="0.2 0.2 0.4" euler="0 0 0.4"
+          contype="0" conaffinity="1"/>
+    <geom name="beam" type="capsule" fromto="-0.8 0.6 0.2 -0.2 0.9 1.2" size="0.1"
+          contype="0" conaffinity="1"/>
+    <body name="drone">
+      <freejoint/>
+      <geom type="sphere" size="{r}" pos="0 0 0" contype="1" conaffinity="0"/>
+      <geom type="sphere" size="{r}" pos="0.15 0 0" contype="1" conaffinity="0"/>
+      <geom type="sphere" size="{r}" pos="-0.15 0 0" contype="1" conaffinity="0"/>
+      <geom type="sphere" size="{r}" pos="0 0.15 0" contype="1" conaffinity="0"/>
+      <geom type="sphere" size="{r}" pos="0 -0.15 0" contype="1" conaffinity="0"/>
+    </body>
+  </worldbody>
+</mujoco>
+""".replace("{r}", str(DRONE_RADIUS))
