@@ -43,8 +43,7 @@ def check_floating(xp, x, name: str, owner: str) -> None:
     """Raise a TypeError unless ``x`` has a real floating dtype."""
     if not xp.isdtype(x.dtype, "real floating"):
         raise TypeError(
-            f"{owner}: {name} has dtype {x.dtype}; give a floating-point array "
-            "(float32 or float64)"
+            f"{owner}: {name} has dtype {x.dtype}; give a floating-point array (float32 or float64)"
         )
 
 
@@ -102,7 +101,9 @@ def assemble_poses(xp, rot, pos):
     """``[[R, t], [0, 0, 0, 1]]`` ``[..., 4, 4]`` from ``R`` ``[..., 3, 3]`` and ``t``
     ``[..., 3]``."""
     top = xp.concat([rot, pos[..., None]], axis=-1)
-    bottom = xp.concat([xp.zeros_like(top[..., 0:1, 0:3]), xp.ones_like(top[..., 0:1, 0:1])], axis=-1)
+    bottom = xp.concat(
+        [xp.zeros_like(top[..., 0:1, 0:3]), xp.ones_like(top[..., 0:1, 0:1])], axis=-1
+    )
     return xp.concat([top, bottom], axis=-2)
 
 

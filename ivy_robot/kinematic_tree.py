@@ -77,9 +77,9 @@ class KinematicTree:
     ranges per qpos entry, infinite where unlimited and for quaternions and free positions).
 
     Example:
-        >>> tree = KinematicTree.from_mjcf(xml)
-        >>> T = tree.forward_kinematics(torch.zeros(5, tree.nq, dtype=torch.float64))
-        >>> T.shape          # (5, nbody, 4, 4)
+        >>> tree = KinematicTree.from_mjcf(panda_mjcf())
+        >>> tree.forward_kinematics(np.zeros((5, tree.nq))).shape   # any backend's arrays
+        (5, 10, 4, 4)
     """
 
     def __init__(self, model: Any) -> None:
@@ -140,9 +140,9 @@ class KinematicTree:
             ValueError: an unsupported joint type, or a model MuJoCo cannot compile.
 
         Example:
-            >>> tree = KinematicTree.from_mjcf("reacher.xml")
-            >>> tree.body_names[:2]
-            ('world', 'body0')
+            >>> tree = KinematicTree.from_mjcf(panda_mjcf())   # or a path, or an MjModel
+            >>> tree.body_names[:3], tree.nq
+            (('world', 'link0', 'link1'), 7)
         """
         return cls(load_mjcf(source))
 
@@ -199,7 +199,9 @@ class KinematicTree:
                 else:
                     mats.append(rot), vecs.append(pos)
                     plan.append(
-                        _BodyPlan("chain", moving_parent, len(mats) - 1, len(vecs) - 1, None, joints)
+                        _BodyPlan(
+                            "chain", moving_parent, len(mats) - 1, len(vecs) - 1, None, joints
+                        )
                     )
         self._plan = tuple(plan)
         self._hinge_qadr = np.asarray(hinge.pop("qadr"), dtype=np.int64)
@@ -207,9 +209,7 @@ class KinematicTree:
         if len(self._hinge_qadr):
             consts.update({"h" + k: np.stack(v) for k, v in hinge.items()})
         # per-joint constants, for joints applied one by one
-        one_by_one = any(
-            len(p.joints) > (p.hinge is not None) for p in plan if p.kind == "chain"
-        )
+        one_by_one = any(len(p.joints) > (p.hinge is not None) for p in plan if p.kind == "chain")
         if one_by_one:
             consts["jK"] = np.stack([A.skew(a) for a in self._jnt_axis])
             consts["jK2"] = consts["jK"] @ consts["jK"]
@@ -289,8 +289,8 @@ class KinematicTree:
             The index, in MuJoCo's order.
 
         Example:
-            >>> tree.body_id("world")
-            0
+            >>> tree.body_id("link1")     # tree: the Panda of panda_mjcf()
+            2
         """
         return _lookup(body, self.body_names, "body")
 
@@ -304,8 +304,8 @@ class KinematicTree:
             The index, in MuJoCo's order.
 
         Example:
-            >>> tree.site_id(tree.site_names[0])
-            0
+            >>> tree.site_id("grasp")
+            1
         """
         return _lookup(site, self.site_names, "site")
 
@@ -332,7 +332,8 @@ class KinematicTree:
 
         Example:
             >>> T = tree.forward_kinematics(np.zeros(tree.nq))
-            >>> T[tree.body_id("fingertip"), :3, 3]      # its world position
+            >>> T[tree.body_id("hand"), :3, 3].round(3)      # its world position
+            array([0.088, 0.   , 0.926])
         """
         xp = ivy.get_framework(qpos, f=f)
         self._check_qpos(xp, qpos)
@@ -352,8 +353,8 @@ class KinematicTree:
             Homogeneous poses *[batch_shape, nsite, 4, 4]*.
 
         Example:
-            >>> tree.site_poses(np.zeros(tree.nq)).shape
-            (1, 4, 4)
+            >>> tree.site_poses(np.zeros((3, tree.nq))).shape
+            (3, 2, 4, 4)
         """
         xp = ivy.get_framework(qpos, f=f)
         self._check_qpos(xp, qpos)
@@ -384,7 +385,8 @@ class KinematicTree:
             World positions *[batch_shape, num_points, 3]*.
 
         Example:
-            >>> tree.transform_points(q, ["fingertip"], np.zeros((1, 3)))   # its origin
+            >>> tree.transform_points(np.zeros(7), ["hand"], np.zeros((1, 3))).round(3)
+            array([[0.088, 0.   , 0.926]])
         """
         xp = ivy.get_framework(qpos, f=f)
         self._check_qpos(xp, qpos)
@@ -420,9 +422,9 @@ class KinematicTree:
             velocity (``jacp``), rows 3-5 the angular velocity (``jacr``), in the world frame.
 
         Example:
-            >>> J = tree.jacobian(q, "fingertip")
-            >>> J.shape
-            (6, 4)
+            >>> J = tree.jacobian(np.zeros(7), "hand")
+            >>> J.shape, J[3:, 0]         # joint 1 turns the hand about the world z axis
+            ((6, 7), array([0., 0., 1.]))
         """
         xp = ivy.get_framework(qpos, f=f)
         self._check_qpos(xp, qpos)
@@ -466,7 +468,8 @@ class KinematicTree:
 
         Example:
             >>> spheres = tree.collision_spheres(0.05)
-            >>> points = tree.transform_points(q, spheres.body_ids, spheres.centres)
+            >>> tree.transform_points(np.zeros(7), spheres.body_ids, spheres.centres).shape
+            (31, 3)
         """
         if spacing <= 0:
             raise ValueError(f"collision_spheres: spacing must be positive, got {spacing}")
@@ -538,8 +541,9 @@ class KinematicTree:
                 rot, pos = mats[step.mat], vecs[step.vec]
             if step.parent is not None:
                 parent_rot = rots[step.parent]
-                rot, pos = xp.matmul(parent_rot, rot), poss[step.parent] + A.matvec(
-                    xp, parent_rot, pos
+                rot, pos = (
+                    xp.matmul(parent_rot, rot),
+                    poss[step.parent] + A.matvec(xp, parent_rot, pos),
                 )
             joints = step.joints
             if step.hinge is not None:
@@ -559,8 +563,10 @@ class KinematicTree:
             return rot, pos + A.matvec(xp, rot, c["jaxis"][j]) * shift
         if kind == _HINGE:
             sin, vers = _sin_versine(xp, qpos[..., adr] - ref)
-            local = c["mats"][0] + sin[..., None, None] * c["jK"][j] + vers[..., None, None] * (
-                c["jK2"][j]
+            local = (
+                c["mats"][0]
+                + sin[..., None, None] * c["jK"][j]
+                + vers[..., None, None] * (c["jK2"][j])
             )
         else:  # ball
             local = _quaternion_rot(xp, qpos[..., adr : adr + 4])
@@ -630,15 +636,11 @@ def _stack_batched(xp, arrays, like, axis):
     """Stack arrays of which some lack the batch dimensions of ``like`` (constants)."""
     trailing = -axis - 1  # 3x3 matrices stacked at -3 have 2 trailing axes, vectors 1
     full = len(like.shape) - 1 + trailing
-    arrays = [
-        a if len(a.shape) == full else A.broadcast_leading(xp, a, like, 1) for a in arrays
-    ]
+    arrays = [a if len(a.shape) == full else A.broadcast_leading(xp, a, like, 1) for a in arrays]
     return xp.stack(arrays, axis=axis)
 
 
 def _concat_batched(xp, arrays, like):
     full = len(like.shape) - 1 + 2
-    arrays = [
-        a if len(a.shape) == full else A.broadcast_leading(xp, a, like, 1) for a in arrays
-    ]
+    arrays = [a if len(a.shape) == full else A.broadcast_leading(xp, a, like, 1) for a in arrays]
     return arrays[0] if len(arrays) == 1 else xp.concat(arrays, axis=-2)

@@ -57,8 +57,8 @@ def smoothness_cost(path: Array, *, f: Framework = None) -> Array:
         its ends.
 
     Example:
-        >>> smoothness_cost(np.linspace(0, 1, 11)[:, None])
-        array(1.)
+        >>> float(smoothness_cost(np.linspace(0, 1, 11)[:, None]))
+        1.0
     """
     xp = ivy.get_framework(path, f=f)
     steps = path[..., 1:, :] - path[..., :-1, :]
@@ -103,8 +103,8 @@ def joint_limit_cost(q: Array, lower: Array, upper: Array, *, f: Framework = Non
         *[batch_shape]*.
 
     Example:
-        >>> joint_limit_cost(np.array([0.5, 2.0]), np.array([0.0, 0.0]), np.array([1.0, 1.0]))
-        array(1.)
+        >>> float(joint_limit_cost(np.array([0.5, 2.0]), np.zeros(2), np.ones(2)))
+        1.0
     """
     xp = ivy.get_framework(q, f=f)
     zero = xp.zeros_like(q)
@@ -190,8 +190,8 @@ class _SplinePlanner:
             *[num_anchors, dim]*.
 
         Example:
-            >>> planner.initial_anchors(start, goal).shape
-            (5, 7)
+            >>> planner.initial_anchors(start, goal).shape   # planner: the drone of DronePlanner
+            (3, 6)
         """
         xp = ivy.get_framework(start, goal, f=f)
         self._check_ends(xp, start, goal)
@@ -221,7 +221,9 @@ class _SplinePlanner:
             *[num_samples, dim]*.
 
         Example:
-            >>> dense = planner.path(result.anchors, start, goal, 500)
+            >>> anchors = planner.initial_anchors(start, goal)
+            >>> planner.path(anchors, start, goal).shape, planner.path(anchors, start, goal, 500).shape
+            ((48, 6), (500, 6))
         """
         xp = ivy.get_framework(anchors, start, goal, f=f)
         if num_samples is None or num_samples == self.num_samples:
@@ -247,7 +249,9 @@ class _SplinePlanner:
             ``{'smoothness': ..., 'obstacle': ..., 'limits': ...}`` of 0-d arrays (weighted).
 
         Example:
-            >>> {k: float(v) for k, v in planner.cost_terms(anchors, start, goal).items()}
+            >>> terms = planner.cost_terms(planner.initial_anchors(start, goal), start, goal)
+            >>> sorted(terms)
+            ['obstacle', 'smoothness']
         """
         xp = ivy.get_framework(anchors, start, goal, f=f)
         path = self.path(anchors, start, goal, f=xp)
@@ -276,7 +280,8 @@ class _SplinePlanner:
             A 0-d array.
 
         Example:
-            >>> planner.cost(planner.initial_anchors(start, goal), start, goal)
+            >>> float(planner.cost(planner.initial_anchors(start, goal), start, goal)) > 0
+            True
         """
         xp = ivy.get_framework(anchors, start, goal, f=f)
         terms = self.cost_terms(anchors, start, goal, f=xp)
@@ -298,8 +303,12 @@ class _SplinePlanner:
             The step function (compiled on its first call).
 
         Example:
-            >>> step = planner.step_fn(ivy.Adam(0.05))
-            >>> cost, anchors, state = step(anchors, optimizer.init(anchors), start, goal)
+            >>> import torch
+            >>> optimizer = ivy.Adam(0.05)
+            >>> step = planner.step_fn(optimizer, compile=False)
+            >>> anchors = planner.initial_anchors(torch.tensor(start), torch.tensor(goal))
+            >>> state = optimizer.init({"anchors": anchors})
+            >>> cost, anchors, state = step(anchors, state, torch.tensor(start), torch.tensor(goal))
         """
 
         def step(anchors, state, start, goal):
@@ -339,8 +348,9 @@ class _SplinePlanner:
             :class:`TrajectoryResult`: anchors, path and the cost per iteration.
 
         Example:
-            >>> result = planner.optimise(start, goal, 100)
-            >>> result.costs[-1] < result.costs[0]
+            >>> import torch
+            >>> result = planner.optimise(torch.tensor(start), torch.tensor(goal), 30, compile=False)
+            >>> bool(result.costs[-1] < result.costs[0])
             True
         """
         xp = ivy.get_framework(start, goal, f=f)
@@ -383,8 +393,11 @@ class ArmPlanner(_SplinePlanner):
         link_radius: the radius around a manipulator's link points.
 
     Example:
-        >>> planner = ArmPlanner(KinematicTree.from_mjcf(xml), SceneSDF.from_mjcf(xml, exclude=...))
-        >>> result = planner.optimise(start, goal, 100)
+        >>> xml = panda_mjcf('<geom name="post" type="box" pos="0.6 0 0.2" size="0.06 0.06 0.2"/>')
+        >>> scene = SceneSDF.from_mjcf(xml, exclude=["link0"])
+        >>> planner = ArmPlanner(KinematicTree.from_mjcf(xml), scene)
+        >>> len(planner.radii)          # collision spheres from the arm's capsules
+        31
     """
 
     def __init__(
@@ -468,7 +481,9 @@ class ArmPlanner(_SplinePlanner):
             *[num_samples, num_spheres, 3]*; the radii are ``self.radii``.
 
         Example:
-            >>> planner.sphere_centres(result.path).shape
+            >>> scene = SceneSDF(["ball"], ["sphere"], [[0.1, 0, 0]], [np.eye(4)])
+            >>> ArmPlanner(tree, scene).sphere_centres(np.zeros((48, 7))).shape
+            (48, 31, 3)
         """
         xp = ivy.get_framework(path, f=f)
         return self._sphere_centres(xp, path)
@@ -494,8 +509,11 @@ class DronePlanner(_SplinePlanner):
             (no joint limits).
 
     Example:
-        >>> planner = DronePlanner(RigidMobile(points), scene, body_radius=0.05)
-        >>> result = planner.optimise(start_pose, goal_pose, 100)
+        >>> scene = SceneSDF(["ball"], ["sphere"], [[0.3, 0, 0]], [np.eye(4)])
+        >>> planner = DronePlanner(RigidMobile([[0.0, 0.0, 0.0]]), scene, body_radius=0.1)
+        >>> start, goal = np.array([-1.0, 0.05, 0, 0, 0, 0]), np.array([1.0, 0, 0, 0, 0, 0])
+        >>> float(planner.cost(planner.initial_anchors(start, goal), start, goal)) > 4.0
+        True
     """
 
     dim = 6
@@ -547,7 +565,8 @@ class DronePlanner(_SplinePlanner):
             *[num_samples, num_points, 3]*.
 
         Example:
-            >>> planner.sphere_centres(result.path).shape
+            >>> planner.sphere_centres(np.zeros((48, 6))).shape
+            (48, 1, 3)
         """
         xp = ivy.get_framework(path, f=f)
         return self._sphere_centres(xp, path)

@@ -45,9 +45,10 @@ class RigidMobile:
             *[batch_shape, num_points, 3]*.
 
         Example:
-            >>> pose = mech.rot_vec_pose_to_mat_pose(torch.zeros(10, 6))
-            >>> drone.sample_body(pose).shape
-            torch.Size([10, 3, 3])
+            >>> drone = RigidMobile(np.array([[0.0, 0.0, 0.0], [0.15, 0.0, 0.0]]))
+            >>> poses = mech.rot_vec_pose_to_mat_pose(np.zeros((10, 6)))
+            >>> drone.sample_body(poses).shape
+            (10, 2, 3)
         """
         xp = ivy.get_framework(poses, f=f)
         shape = tuple(poses.shape)

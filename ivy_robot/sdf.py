@@ -26,7 +26,7 @@ import numpy as np
 import ivy
 from ivy.typing import Array, Framework
 from ivy_robot import _arrays as A
-from ivy_robot.mjcf import load_mjcf, mujoco_quaternion_to_rot_mat
+from ivy_robot.mjcf import load_mjcf
 
 __all__ = [
     "sphere_sdf",
@@ -96,7 +96,9 @@ def _capsule_kernel(xp, p, radius, half_length):
 # ----------------------------------------------------------------------------------------------
 
 
-def sphere_sdf(points: Array, centre: Array, radius: Array | float, *, f: Framework = None) -> Array:
+def sphere_sdf(
+    points: Array, centre: Array, radius: Array | float, *, f: Framework = None
+) -> Array:
     """Signed distance to a sphere.
 
     Args:
@@ -245,9 +247,10 @@ class SceneSDF:
         poses: world-from-shape poses *[num_shapes, 4, 4]* (numpy).
 
     Example:
-        >>> scene = SceneSDF.from_mjcf(xml)
-        >>> scene(torch.zeros(100, 3, dtype=torch.float64)).shape
-        torch.Size([100])
+        >>> scene = SceneSDF(["ball", "floor"], ["sphere", "plane"], [[0.5, 0, 0], [0, 0, 0]],
+        ...                  [np.eye(4), np.eye(4)])
+        >>> scene(np.array([[0.0, 0.0, 2.0], [0.0, 0.0, 0.1]]))     # min over the shapes
+        array([ 1.5, -0.4])
     """
 
     def __init__(
@@ -260,9 +263,7 @@ class SceneSDF:
         known = {v: k for k, v in _TYPE_NAMES.items()}
         bad = [(n, t) for n, t in zip(names, types) if t not in known]
         if bad:
-            raise ValueError(
-                f"SceneSDF: unsupported shape types {bad}; supported: {sorted(known)}"
-            )
+            raise ValueError(f"SceneSDF: unsupported shape types {bad}; supported: {sorted(known)}")
         if not names:
             raise ValueError("SceneSDF: the scene has no shapes")
         sizes = np.asarray(sizes, dtype=np.float64).reshape(len(names), 3)
@@ -302,7 +303,9 @@ class SceneSDF:
                 SDF), unless excluded; or no static geom at all.
 
         Example:
-            >>> scene = SceneSDF.from_mjcf(panda_mjcf(obstacles), exclude=["link0"])
+            >>> post = '<geom name="post" type="box" pos="0.6 0 0.2" size="0.06 0.06 0.2"/>'
+            >>> SceneSDF.from_mjcf(panda_mjcf(post), exclude=["link0"])   # not the arm's base
+            SceneSDF(1 box)
         """
         import mujoco
 
@@ -361,8 +364,12 @@ class SceneSDF:
             *[batch_shape, num_shapes]*, shapes in the order of ``self.names``.
 
         Example:
-            >>> scene.distances(np.zeros((5, 3))).shape
-            (5, scene.num_shapes)
+            >>> scene = SceneSDF(["ball", "floor"], ["sphere", "plane"], [[0.5, 0, 0], [0, 0, 0]],
+            ...                  [np.eye(4), np.eye(4)])
+            >>> scene.distances(np.array([[0.0, 0.0, 2.0]]))   # shapes in scene.names' order
+            array([[2. , 1.5]])
+            >>> scene.names
+            ('floor', 'ball')
         """
         xp = ivy.get_framework(points, f=f)
         _check_points(xp, points, "SceneSDF")
@@ -394,6 +401,7 @@ class SceneSDF:
             *[batch_shape]*.
 
         Example:
+            >>> scene = SceneSDF(["ball"], ["sphere"], [[0.5, 0, 0]], [np.eye(4)])
             >>> scene(np.zeros((5, 3))).shape
             (5,)
         """

@@ -77,9 +77,7 @@ def _polyharmonic(xp, anchor_points, anchor_values, sample_points, order):
     lhs = xp.concat(
         [
             xp.concat([phi, poly], axis=-1),
-            xp.concat(
-                [xp.swapaxes(poly, -1, -2), xp.zeros_like(poly[..., : dim + 1, :])], axis=-1
-            ),
+            xp.concat([xp.swapaxes(poly, -1, -2), xp.zeros_like(poly[..., : dim + 1, :])], axis=-1),
         ],
         axis=-2,
     )
@@ -140,7 +138,9 @@ def _bspline(xp, anchor_points, anchor_values, sample_points):
         ) from err
     params = params.reshape(-1, n)
     if not np.all(params == params[0]):
-        raise ValueError("sample_spline_path: bspline anchor_points must be the same in every batch")
+        raise ValueError(
+            "sample_spline_path: bspline anchor_points must be the same in every batch"
+        )
     params = params[0]
     if np.any(np.diff(params) <= 0):
         raise ValueError("sample_spline_path: bspline anchor_points must be strictly increasing")
@@ -202,7 +202,9 @@ def sample_spline_path(
         )
     if method == "bspline":
         if order != 3:
-            raise ValueError(f"sample_spline_path: the bspline method is cubic (order 3), got {order}")
+            raise ValueError(
+                f"sample_spline_path: the bspline method is cubic (order 3), got {order}"
+            )
         return _bspline(xp, anchor_points, anchor_values, sample_points)
     if order not in (1, 2, 3):
         raise ValueError(f"sample_spline_path: order must be 1, 2 or 3, got {order!r}")
@@ -232,8 +234,11 @@ def spline_weights(
         *[num_samples, num_anchors]*.
 
     Example:
-        >>> W = spline_weights(np.linspace(0, 1, 5)[:, None], np.linspace(0, 1, 100)[:, None])
-        >>> path = W @ anchor_values                     # [100, value_dim]
+        >>> t, s = np.linspace(0, 1, 5)[:, None], np.linspace(0, 1, 100)[:, None]
+        >>> W = spline_weights(t, s)
+        >>> values = np.random.default_rng(0).normal(size=(5, 3))
+        >>> bool(np.allclose(W @ values, sample_spline_path(t, values, s)))
+        True
     """
     xp = ivy.get_framework(anchor_points, sample_points, f=f)
     n = anchor_points.shape[-2]

@@ -37,11 +37,22 @@ def _model(source):
 @pytest.fixture(scope="module")
 def compiled():
     """Each model compiled once by MuJoCo and once as a KinematicTree."""
-    return {name: (_model(src), ivy_robot.KinematicTree.from_mjcf(src)) for name, src in MODELS.items()}
+    return {
+        name: (_model(src), ivy_robot.KinematicTree.from_mjcf(src)) for name, src in MODELS.items()
+    }
 
 
 def test_gymnasium_models_present():
-    expected = {"reacher", "pusher", "ant", "humanoid", "half_cheetah", "hopper", "walker2d", "swimmer"}
+    expected = {
+        "reacher",
+        "pusher",
+        "ant",
+        "humanoid",
+        "half_cheetah",
+        "hopper",
+        "walker2d",
+        "swimmer",
+    }
     assert expected <= set(GYMNASIUM), f"missing Gymnasium models: {expected - set(GYMNASIUM)}"
 
 
@@ -88,12 +99,19 @@ def test_names_and_attributes(compiled):
     assert tree.body_names == tuple(model.body(i).name for i in range(model.nbody))
     assert tree.body_names[0] == "world"
     assert tree.site_names == ("elbow_site", "tip", "drone_cam")
-    assert (tree.nq, tree.nv, tree.nbody, tree.nsite) == (model.nq, model.nv, model.nbody, model.nsite)
+    assert (tree.nq, tree.nv, tree.nbody, tree.nsite) == (
+        model.nq,
+        model.nv,
+        model.nbody,
+        model.nsite,
+    )
     assert tree.joint_types[tree.joint_names.index("drone_free")] == "free"
     np.testing.assert_array_equal(tree.parent_ids, model.body_parentid)
     np.testing.assert_array_equal(tree.qpos0, model.qpos0)
     knee = model.jnt_qposadr[model.joint("knee").id]
-    np.testing.assert_allclose([tree.qpos_lower[knee], tree.qpos_upper[knee]], np.radians([-90, 90]))
+    np.testing.assert_allclose(
+        [tree.qpos_lower[knee], tree.qpos_upper[knee]], np.radians([-90, 90])
+    )
     assert np.isinf(tree.qpos_lower[model.jnt_qposadr[model.joint("shoulder").id]])
     assert "nq=26" in repr(tree)
 
@@ -167,9 +185,7 @@ def test_transform_points_and_collision_spheres(backend, compiled):
     assert set(np.unique(spheres.body_ids)) == {tree.body_id(f"link{i}") for i in range(1, 8)} | {
         tree.body_id("hand")
     }
-    centres = numpy_of(
-        tree.transform_points(native(q, backend), spheres.body_ids, spheres.centres)
-    )
+    centres = numpy_of(tree.transform_points(native(q, backend), spheres.body_ids, spheres.centres))
     for k, qk in enumerate(q):
         ref.qpos[:] = qk
         mujoco.mj_kinematics(model, ref)

@@ -33,9 +33,9 @@ def _trans(x, y, z):
     return m
 
 
-def reference_frames(a, d, alpha, theta, convention, base=np.eye(4)):
+def reference_frames(a, d, alpha, theta, convention, base=None):
     """Frames 0..n for one configuration: A_i = Rz Tz Tx Rx (standard) or Rx Tx Rz Tz."""
-    frames = [base]
+    frames = [np.eye(4) if base is None else base]
     for ai, di, al, th in zip(a, d, alpha, theta):
         if convention == "standard":
             link = _rot_z(th) @ _trans(0, 0, di) @ _trans(ai, 0, 0) @ _rot_x(al)
@@ -66,7 +66,9 @@ def test_link_matrices_match_reference(convention, backend):
         base_pose=base, tool_pose=tool,
     )  # fmt: skip
     q = rng.uniform(-3, 3, size=(4, n))
-    want = np.stack([reference_frames(a, d, alpha, scales * qk + offsets, convention, base) for qk in q])
+    want = np.stack(
+        [reference_frames(a, d, alpha, scales * qk + offsets, convention, base) for qk in q]
+    )
     got = numpy_of(arm.link_matrices(native(q, backend)))
     assert_close(got, want)
     assert_close(numpy_of(arm.end_effector_pose(native(q, backend))), want[:, -1] @ tool)

@@ -164,9 +164,7 @@ def test_bad_input(arm_planner, drone_planner):
     with pytest.raises(ValueError, match=r"goal must have shape \(6,\)"):
         drone_planner.optimise(np.zeros(6), np.zeros(7), 1)
     with pytest.raises(ValueError, match="ball or free joints"):
-        ivy_robot.ArmPlanner(
-            ivy_robot.KinematicTree.from_mjcf(DRONE_SCENE), drone_planner.scene
-        )
+        ivy_robot.ArmPlanner(ivy_robot.KinematicTree.from_mjcf(DRONE_SCENE), drone_planner.scene)
     with pytest.raises(ValueError, match="unknown cost weights"):
         ivy_robot.DronePlanner(ivy_robot.RigidMobile(DRONE_POINTS), drone_planner.scene,
                                weights={"speed": 1.0})  # fmt: skip

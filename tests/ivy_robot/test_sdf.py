@@ -61,7 +61,9 @@ def reference():
             data.mocap_pos[0] = p
             mujoco.mj_kinematics(model, data)
             want.append(mujoco.mj_geomDistance(model, data, probe, g, 10.0, None) + PROBE)
-        geoms[name] = dict(pose=pose, size=model.geom_size[g].copy(), points=points, want=np.array(want))
+        geoms[name] = dict(
+            pose=pose, size=model.geom_size[g].copy(), points=points, want=np.array(want)
+        )
     return model, geoms
 
 

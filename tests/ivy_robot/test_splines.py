@@ -74,7 +74,9 @@ def test_batches_and_weights(backend):
     assert_close(got, want.reshape(20, 2, 3, 5).transpose(1, 2, 0, 3), **TOL)
     for method in ("polyharmonic", "bspline"):
         weights = numpy_of(
-            ivy_robot.spline_weights(native(times, backend), native(samples, backend), method=method)
+            ivy_robot.spline_weights(
+                native(times, backend), native(samples, backend), method=method
+            )
         )
         direct = ivy_robot.sample_spline_path(times, values[0, 0], samples, method=method)
         assert_close(weights @ values[0, 0], direct, **TOL)
@@ -87,9 +89,7 @@ def test_gradients_with_respect_to_anchor_values(order, diff_backend):
     samples = rng.uniform(size=(12, 1))
     values = rng.normal(size=(5, 2))
     t, s = native(times, diff_backend), native(samples, diff_backend)
-    check_gradients(
-        diff_backend, lambda v: ivy_robot.sample_spline_path(t, v, s, order), [values]
-    )
+    check_gradients(diff_backend, lambda v: ivy_robot.sample_spline_path(t, v, s, order), [values])
 
 
 def test_gradients_with_respect_to_sample_points(diff_backend):
