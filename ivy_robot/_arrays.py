@@ -39,6 +39,15 @@ def constants(xp, like, lists: dict) -> dict:
     return {k: xp.asarray(v, dtype=dtype, device=device) for k, v in lists.items()}
 
 
+def check_last_axis(xp, x, size: int, name: str, owner: str, meaning: str) -> None:
+    """Raise a ValueError unless ``x`` is ``[..., size]``, and a TypeError unless it is
+    floating."""
+    shape = tuple(x.shape)
+    if len(shape) == 0 or shape[-1] != size:
+        raise ValueError(f"{owner}: {name} has shape {shape}; its last axis must hold {meaning}")
+    check_floating(xp, x, name, owner)
+
+
 def check_floating(xp, x, name: str, owner: str) -> None:
     """Raise a TypeError unless ``x`` has a real floating dtype."""
     if not xp.isdtype(x.dtype, "real floating"):
@@ -83,18 +92,6 @@ def gather_last(xp, x, spec):
         return x[..., spec[1] : spec[2]]
     selection = xp.asarray(spec[1], dtype=x.dtype, device=xp.dev(x))
     return xp.matmul(x[..., None, :], selection)[..., 0, :]
-
-
-def matvec(xp, m, v):
-    """``m @ v`` for matrices ``[..., n, k]`` and vectors ``[..., k]``."""
-    return xp.matmul(m, v[..., None])[..., 0]
-
-
-def cross(xp, a, b):
-    """Cross product over the last axis, broadcasting on every backend."""
-    ax, ay, az = a[..., 0], a[..., 1], a[..., 2]
-    bx, by, bz = b[..., 0], b[..., 1], b[..., 2]
-    return xp.stack([ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx], axis=-1)
 
 
 def assemble_poses(xp, rot, pos):

@@ -366,7 +366,7 @@ class KinematicTree:
         body_rot = _stack_batched(xp, [rots[b] for b in self._k_site_body], qpos, -3)
         body_pos = _stack_batched(xp, [poss[b] for b in self._k_site_body], qpos, -2)
         rot = xp.matmul(body_rot, c["r"])
-        pos = body_pos + A.matvec(xp, body_rot, c["p"])
+        pos = body_pos + xp.matvec(body_rot, c["p"])
         return A.assemble_poses(xp, rot, pos)
 
     def transform_points(
@@ -395,7 +395,7 @@ class KinematicTree:
         body_rot = _stack_batched(xp, [rots[b] for b in ids], qpos, -3)
         body_pos = _stack_batched(xp, [poss[b] for b in ids], qpos, -2)
         points = A.to_backend(xp, points, qpos)
-        return body_pos + A.matvec(xp, body_rot, points)
+        return body_pos + xp.matvec(body_rot, points)
 
     def jacobian(
         self,
@@ -436,18 +436,18 @@ class KinematicTree:
             b = self._k_site_body[s]
             c = A.constants(xp, qpos, self._k_site_each[s])
             frame_rot = xp.matmul(rots[b], c["r"])
-            frame_pos = poss[b] + A.matvec(xp, rots[b], c["p"])
+            frame_pos = poss[b] + xp.matvec(rots[b], c["p"])
         else:
             b = self.body_id(body)
             frame_rot, frame_pos = rots[b], poss[b]
         target = frame_pos
         if point is not None:
             point = A.to_backend(xp, point, qpos)
-            target = frame_pos + A.matvec(xp, frame_rot, point)
+            target = frame_pos + xp.matvec(frame_rot, point)
         axes, anchors = self._dof_axes(xp, qpos, rots, poss, joint_frames)
         c = A.constants(xp, qpos, {**self._k_dofs, "chain": self._k_chain[b]})
         offset = target[..., None, :] - anchors
-        linear = c["rot"] * A.cross(xp, axes, offset) + c["trans"] * axes
+        linear = c["rot"] * xp.cross(axes, offset, axis=-1) + c["trans"] * axes
         angular = c["rot"] * axes
         jac = xp.concat([linear, angular], axis=-1) * c["chain"]
         return xp.swapaxes(jac, -1, -2)
@@ -504,13 +504,8 @@ class KinematicTree:
     # ------------------------------------------------------------------------------------------
 
     def _check_qpos(self, xp, qpos) -> None:
-        shape = tuple(qpos.shape)
-        if len(shape) == 0 or shape[-1] != self.nq:
-            raise ValueError(
-                f"KinematicTree: qpos has shape {shape}; its last axis must hold the model's "
-                f"nq={self.nq} joint positions (MuJoCo's qpos order)"
-            )
-        A.check_floating(xp, qpos, "qpos", "KinematicTree")
+        meaning = f"the model's nq={self.nq} joint positions (MuJoCo's qpos order)"
+        A.check_last_axis(xp, qpos, self.nq, "qpos", "KinematicTree", meaning)
 
     def _frames(self, xp, qpos, joint_frames: bool = False):
         """World rotations and positions of every body (lists; constant bodies unbatched), and
@@ -543,7 +538,7 @@ class KinematicTree:
                 parent_rot = rots[step.parent]
                 rot, pos = (
                     xp.matmul(parent_rot, rot),
-                    poss[step.parent] + A.matvec(xp, parent_rot, pos),
+                    poss[step.parent] + xp.matvec(parent_rot, pos),
                 )
             joints = step.joints
             if step.hinge is not None:
@@ -560,7 +555,7 @@ class KinematicTree:
         kind, adr, ref, _ = self._k_joints[j]
         if kind == _SLIDE:
             shift = qpos[..., adr : adr + 1] - ref
-            return rot, pos + A.matvec(xp, rot, c["jaxis"][j]) * shift
+            return rot, pos + xp.matvec(rot, c["jaxis"][j]) * shift
         if kind == _HINGE:
             sin, vers = _sin_versine(xp, qpos[..., adr] - ref)
             local = (
@@ -570,9 +565,9 @@ class KinematicTree:
             )
         else:  # ball
             local = _quaternion_rot(xp, qpos[..., adr : adr + 4])
-        anchor = pos + A.matvec(xp, rot, c["jpos"][j])
+        anchor = pos + xp.matvec(rot, c["jpos"][j])
         new_rot = xp.matmul(rot, local)
-        return new_rot, anchor - A.matvec(xp, new_rot, c["jpos"][j])
+        return new_rot, anchor - xp.matvec(new_rot, c["jpos"][j])
 
     def _dof_axes(self, xp, qpos, rots, poss, frames):
         """World axes and anchors of every dof *[batch_shape, nv, 3]*, in dof order."""
@@ -581,14 +576,14 @@ class KinematicTree:
         if self._hs_joints:
             rot = _stack_batched(xp, [frames[j][0] for j in self._hs_joints], qpos, -3)
             pos = _stack_batched(xp, [frames[j][1] for j in self._hs_joints], qpos, -2)
-            axes.append(A.matvec(xp, rot, c["hs_axis"]))
-            anchors.append(pos + A.matvec(xp, rot, c["hs_pos"]))
+            axes.append(xp.matvec(rot, c["hs_axis"]))
+            anchors.append(pos + xp.matvec(rot, c["hs_pos"]))
         for j in self._ball_free_joints:
             kind, _, _, b = self._k_joints[j]
             body_axes = xp.swapaxes(rots[b], -1, -2)  # rows: the body frame's axes
             if kind == _BALL:
                 rot, pos = frames[j]
-                anchor = pos + A.matvec(xp, rot, c["jpos"][j])
+                anchor = pos + xp.matvec(rot, c["jpos"][j])
                 axes.append(body_axes)
                 anchors.append(xp.stack([anchor] * 3, axis=-2))
             else:

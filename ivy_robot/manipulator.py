@@ -136,13 +136,8 @@ class Manipulator:
         }
 
     def _check(self, xp, q) -> None:
-        shape = tuple(q.shape)
-        if len(shape) == 0 or shape[-1] != self.num_joints:
-            raise ValueError(
-                f"Manipulator: joint_angles has shape {shape}; its last axis must hold "
-                f"{self.num_joints} joint angles"
-            )
-        A.check_floating(xp, q, "joint_angles", "Manipulator")
+        meaning = f"{self.num_joints} joint angles"
+        A.check_last_axis(xp, q, self.num_joints, "joint_angles", "Manipulator", meaning)
 
     def _chain(self, xp, q, c):
         theta = q * c["scales"] + c["offsets"]

@@ -52,7 +52,7 @@ def _to_local(xp, points, pose):
         return points
     pose = _param(xp, pose, points)
     rot_t = xp.swapaxes(pose[..., 0:3, 0:3], -1, -2)
-    return A.matvec(xp, rot_t, points - pose[..., 0:3, 3])
+    return xp.matvec(rot_t, points - pose[..., 0:3, 3])
 
 
 def _check_points(xp, points, owner):
@@ -89,6 +89,14 @@ def _capsule_kernel(xp, p, radius, half_length):
     z = xp.minimum(xp.maximum(p[..., 2], -half_length), half_length)
     offset = xp.stack([p[..., 0], p[..., 1], p[..., 2] - z], axis=-1)
     return xp.safe_norm(offset, axis=-1) - radius
+
+
+def _axial_sdf(kernel, owner, points, radius, half_length, pose, f):
+    """A shape about the z axis of its frame (capsule, cylinder), from its public function."""
+    xp = ivy.get_framework(points, f=f)
+    _check_points(xp, points, owner)
+    local = _to_local(xp, points, pose)
+    return kernel(xp, local, _param(xp, radius, points), _param(xp, half_length, points))
 
 
 # ----------------------------------------------------------------------------------------------
@@ -166,14 +174,7 @@ def capsule_sdf(
         >>> capsule_sdf(np.array([[0.0, 0.0, 2.0]]), 0.5, 1.0)
         array([0.5])
     """
-    xp = ivy.get_framework(points, f=f)
-    _check_points(xp, points, "capsule_sdf")
-    return _capsule_kernel(
-        xp,
-        _to_local(xp, points, pose),
-        _param(xp, radius, points),
-        _param(xp, half_length, points),
-    )
+    return _axial_sdf(_capsule_kernel, "capsule_sdf", points, radius, half_length, pose, f)
 
 
 def cylinder_sdf(
@@ -200,14 +201,7 @@ def cylinder_sdf(
         >>> cylinder_sdf(np.array([[3.0, 4.0, 0.0]]), 1.0, 1.0)
         array([4.])
     """
-    xp = ivy.get_framework(points, f=f)
-    _check_points(xp, points, "cylinder_sdf")
-    return _cylinder_kernel(
-        xp,
-        _to_local(xp, points, pose),
-        _param(xp, radius, points),
-        _param(xp, half_length, points),
-    )
+    return _axial_sdf(_cylinder_kernel, "cylinder_sdf", points, radius, half_length, pose, f)
 
 
 def plane_sdf(points: Array, pose: Array | None = None, *, f: Framework = None) -> Array:
@@ -374,7 +368,7 @@ class SceneSDF:
         xp = ivy.get_framework(points, f=f)
         _check_points(xp, points, "SceneSDF")
         c = A.constants(xp, points, self._consts)
-        local = A.matvec(xp, c["rot_t"], points[..., None, :] - c["pos"])
+        local = xp.matvec(c["rot_t"], points[..., None, :] - c["pos"])
         parts = []
         for code, lo, hi in self._groups:
             p, size = local[..., lo:hi, :], c["sizes"][lo:hi]
