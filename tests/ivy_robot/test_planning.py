@@ -124,16 +124,23 @@ def test_manipulator_planner(graph_backend):
     assert clearance.min() > -0.02
 
 
-def test_compiled_step_equals_eager(graph_backend, drone_planner):
-    start, goal = native(DRONE_START, graph_backend), native(DRONE_GOAL, graph_backend)
-    anchors = drone_planner.initial_anchors(start, goal)
+def test_compiled_step_equals_eager(graph_backend):
+    """A small drone problem (eager jax pays a compilation per primitive and shape)."""
+    scene = ivy_robot.SceneSDF(["ball"], ["sphere"], [[0.3, 0, 0]], [np.eye(4)])
+    planner = ivy_robot.DronePlanner(
+        ivy_robot.RigidMobile(DRONE_POINTS[:2]), scene, num_anchors=2, num_samples=8
+    )
+    start = native(np.array([-1.0, 0.05, 0.0, 0.1, 0.0, 0.0]), graph_backend)
+    goal = native(np.array([1.0, 0.0, 0.0, 0.0, 0.2, 0.3]), graph_backend)
+    anchors = planner.initial_anchors(start, goal)
     optimizer = ivy.SGD(1e-3)
     state = optimizer.init({"anchors": anchors})
-    eager = drone_planner.step_fn(optimizer, compile=False)(anchors, state, start, goal)
-    compiled = drone_planner.step_fn(optimizer)(anchors, state, start, goal)
+    eager = planner.step_fn(optimizer, compile=False)(anchors, state, start, goal)
+    compiled = planner.step_fn(optimizer)(anchors, state, start, goal)
     assert_close(numpy_of(compiled[0]), numpy_of(eager[0]))
     assert_close(numpy_of(compiled[1]), numpy_of(eager[1]))
-    terms = drone_planner.cost_terms(anchors, start, goal)
+    assert not np.allclose(numpy_of(compiled[1]), numpy_of(anchors))  # the step moved them
+    terms = planner.cost_terms(anchors, start, goal)
     total = sum(float(numpy_of(v)) for v in terms.values())
     assert np.isclose(total, float(numpy_of(eager[0])), rtol=1e-12)
 
