@@ -30,6 +30,7 @@ from ivy.errors import (
     NoFrameworkError,
     UnknownFrameworkError,
 )
+from ivy.typing import Framework
 
 __all__ = [
     "get_framework",
@@ -263,7 +264,7 @@ dispatch_globals["_infer"] = _infer
 # ----------------------------------------------------------------------------------------------
 
 
-def get_framework(*args: Any, f: Any = None) -> types.ModuleType:
+def get_framework(*args: Any, f: Framework = None) -> types.ModuleType:
     """Return the backend namespace to use for ``args``.
 
     Priority: explicit ``f`` > the globally set framework > inference from the inputs (which
@@ -336,7 +337,7 @@ class _Use:
         return f"<ivy.{self._ns.backend}.use>"
 
 
-def set_framework(framework: Any) -> _Scope:
+def set_framework(framework: str | types.ModuleType) -> _Scope:
     """Set the framework globally: ``ivy.<fn>`` becomes the backend function itself.
 
     Usable as a statement (undo with :func:`unset_framework`) or as a context manager, which

@@ -21,10 +21,12 @@ Example:
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 import optree
+
+from ivy.typing import Nest
 
 __all__ = [
     "map_nest",
@@ -43,7 +45,7 @@ _OPTS = dict(none_is_leaf=False, namespace="")
 _NO_INITIAL = object()
 
 
-def map_nest(fn: Callable[[Any], Any], nest: Any, /) -> Any:
+def map_nest(fn: Callable[[Any], Any], nest: Nest, /) -> Nest:
     """Apply ``fn`` to every leaf of ``nest``; the result has the structure of ``nest``.
 
     Args:
@@ -60,7 +62,7 @@ def map_nest(fn: Callable[[Any], Any], nest: Any, /) -> Any:
     return optree.tree_map(fn, nest, **_OPTS)
 
 
-def multi_map_nest(fn: Callable[..., Any], nest: Any, /, *nests: Any) -> Any:
+def multi_map_nest(fn: Callable[..., Any], nest: Nest, /, *nests: Nest) -> Nest:
     """Apply ``fn`` leafwise to several nests of the same structure.
 
     ``fn`` receives one leaf from each nest, in order. The first nest decides the structure; the
@@ -82,7 +84,7 @@ def multi_map_nest(fn: Callable[..., Any], nest: Any, /, *nests: Any) -> Any:
     return optree.tree_map(fn, nest, *nests, **_OPTS)
 
 
-def map_nest_with_path(fn: Callable[[tuple, Any], Any], nest: Any, /) -> Any:
+def map_nest_with_path(fn: Callable[[tuple, Any], Any], nest: Nest, /) -> Nest:
     """Like :func:`map_nest`, with the leaf's path (a tuple of keys and indices) as first argument.
 
     Example:
@@ -92,7 +94,7 @@ def map_nest_with_path(fn: Callable[[tuple, Any], Any], nest: Any, /) -> Any:
     return optree.tree_map_with_path(fn, nest, **_OPTS)
 
 
-def flatten_nest(nest: Any, /) -> tuple[list[Any], optree.PyTreeSpec]:
+def flatten_nest(nest: Nest, /) -> tuple[list[Any], optree.PyTreeSpec]:
     """The leaves of ``nest`` in a list, and its structure (a treespec).
 
     Args:
@@ -109,7 +111,7 @@ def flatten_nest(nest: Any, /) -> tuple[list[Any], optree.PyTreeSpec]:
     return optree.tree_flatten(nest, **_OPTS)
 
 
-def unflatten_nest(treespec: optree.PyTreeSpec, leaves: Any, /) -> Any:
+def unflatten_nest(treespec: optree.PyTreeSpec, leaves: Iterable[Any], /) -> Nest:
     """Rebuild a nest of structure ``treespec`` from ``leaves`` (an iterable, in flatten order).
 
     Example:
@@ -120,7 +122,7 @@ def unflatten_nest(treespec: optree.PyTreeSpec, leaves: Any, /) -> Any:
     return optree.tree_unflatten(treespec, leaves)
 
 
-def nest_leaves(nest: Any, /) -> list[Any]:
+def nest_leaves(nest: Nest, /) -> list[Any]:
     """The leaves of ``nest`` in flatten order (sorted dict keys, then list order).
 
     Example:
@@ -130,7 +132,7 @@ def nest_leaves(nest: Any, /) -> list[Any]:
     return optree.tree_leaves(nest, **_OPTS)
 
 
-def nest_structure(nest: Any, /) -> optree.PyTreeSpec:
+def nest_structure(nest: Nest, /) -> optree.PyTreeSpec:
     """The structure (treespec) of ``nest``; two nests line up when their structures are equal.
 
     Example:
@@ -140,7 +142,7 @@ def nest_structure(nest: Any, /) -> optree.PyTreeSpec:
     return optree.tree_structure(nest, **_OPTS)
 
 
-def reduce_nest(fn: Callable[[Any, Any], Any], nest: Any, /, initial: Any = _NO_INITIAL) -> Any:
+def reduce_nest(fn: Callable[[Any, Any], Any], nest: Nest, /, initial: Any = _NO_INITIAL) -> Any:
     """Fold the leaves of ``nest`` with ``fn(accumulated, leaf)``, as ``functools.reduce`` does
     (starting from ``initial`` when given).
 
@@ -153,7 +155,7 @@ def reduce_nest(fn: Callable[[Any, Any], Any], nest: Any, /, initial: Any = _NO_
     return optree.tree_reduce(fn, nest, initial, **_OPTS)
 
 
-def is_leaf_nest(nest: Any, /) -> bool:
+def is_leaf_nest(nest: Nest, /) -> bool:
     """True when ``nest`` is a single leaf (an array or scalar), False for a node or None.
 
     Example:

@@ -8,17 +8,8 @@ selected with ``where``) and have finite gradients there.
 from __future__ import annotations
 
 import ivy
-from ivy_mechanics._math import (
-    ONE_MINUS_COS_OVER_X2,
-    SE3_LOG_D,
-    X_MINUS_SIN_OVER_X3,
-    cross,
-    horner,
-    split_small,
-    stack_vector,
-    sum_sq,
-)
-from ivy_mechanics._typing import Array, Framework
+from ivy.typing import Array, Framework
+from ivy_mechanics._series import ONE_MINUS_COS_OVER_X2, SE3_LOG_D, X_MINUS_SIN_OVER_X3
 from ivy_mechanics.orientation import _kernels as K
 from ivy_mechanics.pose import assemble_mat_pose
 
@@ -34,7 +25,7 @@ __all__ = [
 ]
 
 
-def so3_hat(vector: Array, f: Framework = None) -> Array:
+def so3_hat(vector: Array, *, f: Framework = None) -> Array:
     """Skew-symmetric matrix ``[w]x`` with ``[w]x @ p = w x p``.
 
     Args:
@@ -54,7 +45,7 @@ def so3_hat(vector: Array, f: Framework = None) -> Array:
     return K.hat(xp, vector)
 
 
-def so3_vee(matrix: Array, f: Framework = None) -> Array:
+def so3_vee(matrix: Array, *, f: Framework = None) -> Array:
     """Inverse of :func:`so3_hat`: the vector of the skew-symmetric part of ``matrix``.
 
     Args:
@@ -69,8 +60,7 @@ def so3_vee(matrix: Array, f: Framework = None) -> Array:
         array([1., 2., 3.])
     """
     xp = ivy.get_framework(matrix, f=f)
-    return 0.5 * stack_vector(
-        xp,
+    return 0.5 * xp.stack_vector(
         [
             matrix[..., 2, 1] - matrix[..., 1, 2],
             matrix[..., 0, 2] - matrix[..., 2, 0],
@@ -79,7 +69,7 @@ def so3_vee(matrix: Array, f: Framework = None) -> Array:
     )
 
 
-def so3_exp(rot_vec: Array, f: Framework = None) -> Array:
+def so3_exp(rot_vec: Array, *, f: Framework = None) -> Array:
     """Exponential map of SO(3): the rotation matrix of a rotation vector (same as
     :func:`rot_vec_to_rot_mat`).
 
@@ -100,7 +90,7 @@ def so3_exp(rot_vec: Array, f: Framework = None) -> Array:
     return K.rotvec_to_mat(xp, rot_vec)
 
 
-def so3_log(rot_mat: Array, f: Framework = None) -> Array:
+def so3_log(rot_mat: Array, *, f: Framework = None) -> Array:
     """Logarithm map of SO(3): the rotation vector (angle in [0, pi]) of a rotation matrix
     (same as :func:`rot_mat_to_rot_vec`).
 
@@ -119,7 +109,7 @@ def so3_log(rot_mat: Array, f: Framework = None) -> Array:
     return K.mat_to_rotvec(xp, rot_mat)
 
 
-def se3_hat(twist: Array, f: Framework = None) -> Array:
+def se3_hat(twist: Array, *, f: Framework = None) -> Array:
     """The 4x4 matrix ``[[ [w]x, v ], [0, 0]]`` of a twist ``[v, w]``.
 
     Args:
@@ -138,7 +128,7 @@ def se3_hat(twist: Array, f: Framework = None) -> Array:
     return xp.concat([top, xp.zeros_like(top[..., 0:1, :])], axis=-2)
 
 
-def se3_vee(matrix: Array, f: Framework = None) -> Array:
+def se3_vee(matrix: Array, *, f: Framework = None) -> Array:
     """Inverse of :func:`se3_hat`: the twist ``[v, w]`` of a 4x4 (or 3x4) matrix.
 
     Args:
@@ -156,7 +146,7 @@ def se3_vee(matrix: Array, f: Framework = None) -> Array:
     return xp.concat([matrix[..., 0:3, 3], so3_vee(matrix[..., 0:3, 0:3], f=xp)], axis=-1)
 
 
-def se3_exp(twist: Array, f: Framework = None) -> Array:
+def se3_exp(twist: Array, *, f: Framework = None) -> Array:
     """Exponential map of SE(3): the pose ``[[exp(w), V v], [0, 1]]`` reached by moving along a
     twist ``[v, w]`` for unit time, with ``V = I + B [w]x + C [w]x^2``,
     ``B = (1 - cos t) / t^2`` and ``C = (t - sin t) / t^3``.
@@ -174,18 +164,18 @@ def se3_exp(twist: Array, f: Framework = None) -> Array:
     """
     xp = ivy.get_framework(twist, f=f)
     v, w = twist[..., 0:3], twist[..., 3:6]
-    t2 = sum_sq(xp, w)
-    small, t = split_small(xp, t2)
-    half_sin = xp.sin(0.5 * t)
-    t_sq = t * t  # t2 where used, 1 where small
-    b = xp.where(small, horner(t2, ONE_MINUS_COS_OVER_X2), 2.0 * half_sin * half_sin / t_sq)
-    c = xp.where(small, horner(t2, X_MINUS_SIN_OVER_X3), (t - xp.sin(t)) / (t_sq * t))
-    w_v = cross(xp, w, v)
-    position = v + b * w_v + c * cross(xp, w, w_v)
+    t2 = xp.sum(w * w, axis=-1, keepdims=True)
+    b, c = xp.taylor_switch(
+        t2,
+        (ONE_MINUS_COS_OVER_X2, X_MINUS_SIN_OVER_X3),
+        lambda t: (2.0 * xp.sin(0.5 * t) ** 2 / (t * t), (t - xp.sin(t)) / (t * t * t)),
+    )
+    w_v = xp.cross(w, v)
+    position = v + b * w_v + c * xp.cross(w, w_v)
     return assemble_mat_pose(xp, K.rotvec_to_mat(xp, w), position)
 
 
-def se3_log(mat_pose: Array, f: Framework = None) -> Array:
+def se3_log(mat_pose: Array, *, f: Framework = None) -> Array:
     """Logarithm map of SE(3): the twist ``[v, w]`` with ``se3_exp([v, w]) = pose``, rotation
     angle in [0, pi]: ``v = t - [w]x t / 2 + D [w]x^2 t``, ``D = (1 - (t/2) cot(t/2)) / t^2``.
 
@@ -203,11 +193,10 @@ def se3_log(mat_pose: Array, f: Framework = None) -> Array:
     xp = ivy.get_framework(mat_pose, f=f)
     position = mat_pose[..., 0:3, 3]
     w = K.mat_to_rotvec(xp, mat_pose[..., 0:3, 0:3])
-    t2 = sum_sq(xp, w)
-    small, t = split_small(xp, t2)
-    half = 0.5 * t
-    half_cot = half * xp.cos(half) / xp.sin(half)
-    d = xp.where(small, horner(t2, SE3_LOG_D), (1.0 - half_cot) / (t * t))
-    w_p = cross(xp, w, position)
-    v = position - 0.5 * w_p + d * cross(xp, w, w_p)
+    t2 = xp.sum(w * w, axis=-1, keepdims=True)
+    d = xp.taylor_switch(
+        t2, SE3_LOG_D, lambda t: (1.0 - 0.5 * t * xp.cos(0.5 * t) / xp.sin(0.5 * t)) / (t * t)
+    )
+    w_p = xp.cross(w, position)
+    v = position - 0.5 * w_p + d * xp.cross(w, w_p)
     return xp.concat([v, w], axis=-1)

@@ -15,8 +15,7 @@ A pose maps body coordinates to world coordinates: ``p_world = R @ p_body + t``.
 from __future__ import annotations
 
 import ivy
-from ivy_mechanics._math import cross, matvec
-from ivy_mechanics._typing import Array, Framework
+from ivy.typing import Array, Framework
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -59,7 +58,7 @@ def _split_mat_pose(mat_pose):
     return mat_pose[..., 0:3, 0:3], mat_pose[..., 0:3, 3]
 
 
-def make_transformation_homogeneous(matrices: Array, f: Framework = None) -> Array:
+def make_transformation_homogeneous(matrices: Array, *, f: Framework = None) -> Array:
     """Append the row ``[0, 0, 0, 1]`` to ``[R, t]`` matrices.
 
     Args:
@@ -85,7 +84,7 @@ def make_transformation_homogeneous(matrices: Array, f: Framework = None) -> Arr
 # ----------------------------------------------------------------------------------------------
 
 
-def quaternion_pose_to_mat_pose(quat_pose: Array, f: Framework = None) -> Array:
+def quaternion_pose_to_mat_pose(quat_pose: Array, *, f: Framework = None) -> Array:
     """Homogeneous matrix of a quaternion pose (the quaternion is normalised).
 
     Args:
@@ -103,7 +102,7 @@ def quaternion_pose_to_mat_pose(quat_pose: Array, f: Framework = None) -> Array:
     return assemble_mat_pose(xp, K.quat_to_mat(xp, quat_pose[..., 3:7]), quat_pose[..., 0:3])
 
 
-def mat_pose_to_quaternion_pose(mat_pose: Array, f: Framework = None) -> Array:
+def mat_pose_to_quaternion_pose(mat_pose: Array, *, f: Framework = None) -> Array:
     """Quaternion pose (``qw >= 0``) of a matrix pose.
 
     Args:
@@ -122,7 +121,7 @@ def mat_pose_to_quaternion_pose(mat_pose: Array, f: Framework = None) -> Array:
     return xp.concat([position, K.mat_to_quat(xp, rot_mat)], axis=-1)
 
 
-def rot_vec_pose_to_mat_pose(rot_vec_pose: Array, f: Framework = None) -> Array:
+def rot_vec_pose_to_mat_pose(rot_vec_pose: Array, *, f: Framework = None) -> Array:
     """Homogeneous matrix of a rotation-vector pose.
 
     Args:
@@ -144,7 +143,7 @@ def rot_vec_pose_to_mat_pose(rot_vec_pose: Array, f: Framework = None) -> Array:
     return assemble_mat_pose(xp, rot_mat, rot_vec_pose[..., 0:3])
 
 
-def mat_pose_to_rot_vec_pose(mat_pose: Array, f: Framework = None) -> Array:
+def mat_pose_to_rot_vec_pose(mat_pose: Array, *, f: Framework = None) -> Array:
     """Rotation-vector pose of a matrix pose (angle in [0, pi]).
 
     Args:
@@ -164,7 +163,7 @@ def mat_pose_to_rot_vec_pose(mat_pose: Array, f: Framework = None) -> Array:
 
 
 def euler_pose_to_mat_pose(
-    euler_pose: Array, convention: str = "zyx", f: Framework = None
+    euler_pose: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
     """Homogeneous matrix of an Euler pose (scipy's spelling of ``convention``).
 
@@ -185,7 +184,9 @@ def euler_pose_to_mat_pose(
     return assemble_mat_pose(xp, rot_mat, euler_pose[..., 0:3])
 
 
-def mat_pose_to_euler_pose(mat_pose: Array, convention: str = "zyx", f: Framework = None) -> Array:
+def mat_pose_to_euler_pose(
+    mat_pose: Array, convention: str = "zyx", *, f: Framework = None
+) -> Array:
     """Euler pose of a matrix pose.
 
     Args:
@@ -206,7 +207,7 @@ def mat_pose_to_euler_pose(mat_pose: Array, convention: str = "zyx", f: Framewor
     return xp.concat([position, euler], axis=-1)
 
 
-def axis_angle_pose_to_mat_pose(axis_angle_pose: Array, f: Framework = None) -> Array:
+def axis_angle_pose_to_mat_pose(axis_angle_pose: Array, *, f: Framework = None) -> Array:
     """Homogeneous matrix of an axis-angle pose (unit axis).
 
     Args:
@@ -227,7 +228,7 @@ def axis_angle_pose_to_mat_pose(axis_angle_pose: Array, f: Framework = None) -> 
     )
 
 
-def mat_pose_to_axis_angle_pose(mat_pose: Array, f: Framework = None) -> Array:
+def mat_pose_to_axis_angle_pose(mat_pose: Array, *, f: Framework = None) -> Array:
     """Axis-angle pose of a matrix pose (angle in [0, pi], axis +z at angle 0).
 
     Args:
@@ -252,7 +253,7 @@ def mat_pose_to_axis_angle_pose(mat_pose: Array, f: Framework = None) -> Array:
 # ----------------------------------------------------------------------------------------------
 
 
-def quaternion_pose_to_rot_vec_pose(quat_pose: Array, f: Framework = None) -> Array:
+def quaternion_pose_to_rot_vec_pose(quat_pose: Array, *, f: Framework = None) -> Array:
     """Rotation-vector pose of a quaternion pose.
 
     Args:
@@ -270,7 +271,7 @@ def quaternion_pose_to_rot_vec_pose(quat_pose: Array, f: Framework = None) -> Ar
     return xp.concat([quat_pose[..., 0:3], K.quat_to_rotvec(xp, quat_pose[..., 3:7])], axis=-1)
 
 
-def rot_vec_pose_to_quaternion_pose(rot_vec_pose: Array, f: Framework = None) -> Array:
+def rot_vec_pose_to_quaternion_pose(rot_vec_pose: Array, *, f: Framework = None) -> Array:
     """Quaternion pose of a rotation-vector pose.
 
     Args:
@@ -290,7 +291,7 @@ def rot_vec_pose_to_quaternion_pose(rot_vec_pose: Array, f: Framework = None) ->
 
 
 def quaternion_pose_to_euler_pose(
-    quat_pose: Array, convention: str = "zyx", f: Framework = None
+    quat_pose: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
     """Euler pose of a quaternion pose.
 
@@ -312,7 +313,7 @@ def quaternion_pose_to_euler_pose(
 
 
 def euler_pose_to_quaternion_pose(
-    euler_pose: Array, convention: str = "zyx", f: Framework = None
+    euler_pose: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
     """Quaternion pose of an Euler pose.
 
@@ -333,7 +334,7 @@ def euler_pose_to_quaternion_pose(
     return xp.concat([euler_pose[..., 0:3], quat], axis=-1)
 
 
-def quaternion_pose_to_axis_angle_pose(quat_pose: Array, f: Framework = None) -> Array:
+def quaternion_pose_to_axis_angle_pose(quat_pose: Array, *, f: Framework = None) -> Array:
     """Axis-angle pose of a quaternion pose.
 
     Args:
@@ -352,7 +353,7 @@ def quaternion_pose_to_axis_angle_pose(quat_pose: Array, f: Framework = None) ->
     return xp.concat([quat_pose[..., 0:3], axis_angle], axis=-1)
 
 
-def axis_angle_pose_to_quaternion_pose(axis_angle_pose: Array, f: Framework = None) -> Array:
+def axis_angle_pose_to_quaternion_pose(axis_angle_pose: Array, *, f: Framework = None) -> Array:
     """Quaternion pose of an axis-angle pose (unit axis).
 
     Args:
@@ -376,7 +377,7 @@ def axis_angle_pose_to_quaternion_pose(axis_angle_pose: Array, f: Framework = No
 # ----------------------------------------------------------------------------------------------
 
 
-def compose_mat_poses(mat_pose1: Array, mat_pose2: Array, f: Framework = None) -> Array:
+def compose_mat_poses(mat_pose1: Array, mat_pose2: Array, *, f: Framework = None) -> Array:
     """``P1 @ P2``: the pose ``P2`` expressed in the frame of ``P1`` (apply ``P2``, then ``P1``).
 
     Args:
@@ -395,10 +396,10 @@ def compose_mat_poses(mat_pose1: Array, mat_pose2: Array, f: Framework = None) -
     xp = ivy.get_framework(mat_pose1, mat_pose2, f=f)
     rot1, pos1 = _split_mat_pose(mat_pose1)
     rot2, pos2 = _split_mat_pose(mat_pose2)
-    return assemble_mat_pose(xp, xp.matmul(rot1, rot2), matvec(xp, rot1, pos2) + pos1)
+    return assemble_mat_pose(xp, xp.matmul(rot1, rot2), xp.matvec(rot1, pos2) + pos1)
 
 
-def invert_mat_pose(mat_pose: Array, f: Framework = None) -> Array:
+def invert_mat_pose(mat_pose: Array, *, f: Framework = None) -> Array:
     """Inverse of a rigid transformation: ``[[R^T, -R^T t], [0, 1]]``.
 
     Args:
@@ -415,10 +416,10 @@ def invert_mat_pose(mat_pose: Array, f: Framework = None) -> Array:
     xp = ivy.get_framework(mat_pose, f=f)
     rot_mat, position = _split_mat_pose(mat_pose)
     rot_t = xp.swapaxes(rot_mat, -1, -2)
-    return assemble_mat_pose(xp, rot_t, -matvec(xp, rot_t, position))
+    return assemble_mat_pose(xp, rot_t, -xp.matvec(rot_t, position))
 
 
-def transform_points(mat_pose: Array, points: Array, f: Framework = None) -> Array:
+def transform_points(mat_pose: Array, points: Array, *, f: Framework = None) -> Array:
     """``R @ p + t``: points from the body frame to the world frame. Batch dimensions
     broadcast, so a cloud ``[B, N, 3]`` is transformed by poses ``[B, 1, 4, 4]``.
 
@@ -437,10 +438,10 @@ def transform_points(mat_pose: Array, points: Array, f: Framework = None) -> Arr
     """
     xp = ivy.get_framework(mat_pose, points, f=f)
     rot_mat, position = _split_mat_pose(mat_pose)
-    return matvec(xp, rot_mat, points) + position
+    return xp.matvec(rot_mat, points) + position
 
 
-def compose_quaternion_poses(quat_pose1: Array, quat_pose2: Array, f: Framework = None) -> Array:
+def compose_quaternion_poses(quat_pose1: Array, quat_pose2: Array, *, f: Framework = None) -> Array:
     """Quaternion-pose equivalent of :func:`compose_mat_poses`: ``[t1 + R1 t2, q1 * q2]``.
 
     Args:
@@ -462,7 +463,7 @@ def compose_quaternion_poses(quat_pose1: Array, quat_pose2: Array, f: Framework 
     return xp.concat([position, K.hamilton_product(xp, q1, q2)], axis=-1)
 
 
-def invert_quaternion_pose(quat_pose: Array, f: Framework = None) -> Array:
+def invert_quaternion_pose(quat_pose: Array, *, f: Framework = None) -> Array:
     """Inverse of a quaternion pose: ``[-R^T t, conj(q)]`` (unit quaternion).
 
     Args:
@@ -483,12 +484,12 @@ def invert_quaternion_pose(quat_pose: Array, f: Framework = None) -> Array:
 
 def _quat_rotate(xp, q, p):
     v, w = q[..., :3], q[..., 3:]
-    t = 2.0 * cross(xp, v, p)
-    return p + w * t + cross(xp, v, t)
+    t = 2.0 * xp.cross(v, p)
+    return p + w * t + xp.cross(v, t)
 
 
 def increment_quaternion_pose_with_velocity(
-    quat_pose: Array, quat_vel: Array, delta_t: Array | float, f: Framework = None
+    quat_pose: Array, quat_vel: Array, delta_t: Array | float, *, f: Framework = None
 ) -> Array:
     """Step a quaternion pose forward by ``delta_t`` at a constant velocity.
 

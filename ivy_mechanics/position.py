@@ -16,8 +16,7 @@ the gradients stay finite.
 from __future__ import annotations
 
 import ivy
-from ivy_mechanics._math import safe_atan2, safe_hypot, safe_norm
-from ivy_mechanics._typing import Array, Framework
+from ivy.typing import Array, Framework
 
 __all__ = [
     "polar_to_cartesian_coords",
@@ -28,7 +27,7 @@ __all__ = [
 ]
 
 
-def polar_to_cartesian_coords(polar_coords: Array, f: Framework = None) -> Array:
+def polar_to_cartesian_coords(polar_coords: Array, *, f: Framework = None) -> Array:
     """Cartesian coordinates of spherical polar coordinates ``[phi, theta, r]``.
 
     Args:
@@ -50,7 +49,7 @@ def polar_to_cartesian_coords(polar_coords: Array, f: Framework = None) -> Array
     )
 
 
-def cartesian_to_polar_coords(cartesian_coords: Array, f: Framework = None) -> Array:
+def cartesian_to_polar_coords(cartesian_coords: Array, *, f: Framework = None) -> Array:
     """Spherical polar coordinates ``[phi, theta, r]`` of cartesian coordinates.
 
     The inclination is ``atan2(hypot(x, y), z)`` (accurate at the poles, unlike ``acos``).
@@ -68,12 +67,12 @@ def cartesian_to_polar_coords(cartesian_coords: Array, f: Framework = None) -> A
     """
     xp = ivy.get_framework(cartesian_coords, f=f)
     x, y, z = cartesian_coords[..., 0:1], cartesian_coords[..., 1:2], cartesian_coords[..., 2:3]
-    phi = safe_atan2(xp, y, x)
-    theta = safe_atan2(xp, safe_hypot(xp, x, y), z)
-    return xp.concat([phi, theta, safe_norm(xp, cartesian_coords)], axis=-1)
+    phi = xp.safe_atan2(y, x)
+    theta = xp.safe_atan2(xp.safe_hypot(x, y), z)
+    return xp.concat([phi, theta, xp.safe_norm(cartesian_coords, keepdims=True)], axis=-1)
 
 
-def cylindrical_to_cartesian_coords(cylindrical_coords: Array, f: Framework = None) -> Array:
+def cylindrical_to_cartesian_coords(cylindrical_coords: Array, *, f: Framework = None) -> Array:
     """Cartesian coordinates of cylindrical coordinates ``[rho, phi, z]``.
 
     Args:
@@ -92,7 +91,7 @@ def cylindrical_to_cartesian_coords(cylindrical_coords: Array, f: Framework = No
     return xp.concat([rho * xp.cos(phi), rho * xp.sin(phi), cylindrical_coords[..., 2:3]], axis=-1)
 
 
-def cartesian_to_cylindrical_coords(cartesian_coords: Array, f: Framework = None) -> Array:
+def cartesian_to_cylindrical_coords(cartesian_coords: Array, *, f: Framework = None) -> Array:
     """Cylindrical coordinates ``[rho, phi, z]`` of cartesian coordinates.
 
     Args:
@@ -109,11 +108,11 @@ def cartesian_to_cylindrical_coords(cartesian_coords: Array, f: Framework = None
     xp = ivy.get_framework(cartesian_coords, f=f)
     x, y = cartesian_coords[..., 0:1], cartesian_coords[..., 1:2]
     return xp.concat(
-        [safe_hypot(xp, x, y), safe_atan2(xp, y, x), cartesian_coords[..., 2:3]], axis=-1
+        [xp.safe_hypot(x, y), xp.safe_atan2(y, x), cartesian_coords[..., 2:3]], axis=-1
     )
 
 
-def make_coordinates_homogeneous(coords: Array, f: Framework = None) -> Array:
+def make_coordinates_homogeneous(coords: Array, *, f: Framework = None) -> Array:
     """Append a 1 to each coordinate vector.
 
     Args:

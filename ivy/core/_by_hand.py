@@ -6,11 +6,13 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Callable
+from types import ModuleType
 from typing import Any
 
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import DISPATCHED
 from ivy.errors import NoFrameworkError
+from ivy.typing import Framework
 
 __all__ = ["by_hand", "framework_or_none"]
 
@@ -23,7 +25,7 @@ def by_hand(fn: Callable) -> Callable:
     return fn
 
 
-def framework_or_none(*args: Any, f: Any = None):
+def framework_or_none(*args: Any, f: Framework = None) -> ModuleType | None:
     """The namespace chosen by ``f``, the global framework or the arrays and native dtypes among
     ``args`` (numpy's scalar types such as ``np.float32`` count as numpy's); None when none of
     these chooses one (dtype names and Python scalars only)."""

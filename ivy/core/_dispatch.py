@@ -15,6 +15,8 @@ every backend namespace with ``f`` bound to that backend.
 
 from __future__ import annotations
 
+import ast
+import builtins
 import functools
 import inspect
 import types
@@ -104,7 +106,31 @@ def _build(stub: Callable, arrays: list[str]) -> Callable:
     functools.update_wrapper(fn, stub, updated=())
     del fn.__wrapped__  # the dispatcher is the real function; the stub has no body
     fn.__ivy_kind__ = "dispatch"
+    _share_annotation_names(stub)
     return fn
+
+
+def _share_annotation_names(stub: Callable) -> None:
+    """Make the names used in ``stub``'s annotations (``Array``, ``Sequence``...) resolvable in
+    the dispatchers' globals, ``_fh.dispatch_globals``, so that ``typing.get_type_hints`` works on
+    the dispatcher as on the stub. Nothing at call time reads them."""
+    for annotation in stub.__annotations__.values():
+        if not isinstance(annotation, str):
+            continue
+        for node in ast.walk(ast.parse(annotation, mode="eval")):
+            if not isinstance(node, ast.Name) or node.id not in stub.__globals__:
+                continue  # builtins (int, tuple...) resolve by themselves
+            value = stub.__globals__[node.id]
+            if hasattr(builtins, node.id) or node.id.startswith("_"):
+                raise TypeError(
+                    f"stub {stub.__name__}: the annotation name {node.id!r} would shadow a builtin "
+                    f"or the dispatchers' own names; use another name"
+                )
+            if _fh.dispatch_globals.setdefault(node.id, value) is not value:
+                raise TypeError(
+                    f"stub {stub.__name__}: the annotation name {node.id!r} means another object "
+                    f"in another stub's module; import it from the same place"
+                )
 
 
 def dispatch(*arrays: str | Callable) -> Callable:
@@ -171,10 +197,14 @@ def _bind_compositions(ns: types.ModuleType) -> None:
 
 
 def _bound(comp: Callable, ns: types.ModuleType) -> Callable:
-    @functools.wraps(comp)
     def bound(*args: Any, **kwargs: Any) -> Any:
         return comp(*args, f=ns, **kwargs)
 
+    # The same code with the composition's globals, where typing.get_type_hints finds the names
+    # its annotations use.
+    bound = types.FunctionType(bound.__code__, comp.__globals__, None, None, bound.__closure__)
+    functools.update_wrapper(bound, comp)
+    bound.__annotations__ = {k: v for k, v in comp.__annotations__.items() if k != "f"}
     sig = inspect.signature(comp)
     bound.__signature__ = sig.replace(
         parameters=[p for p in sig.parameters.values() if p.name != "f"]

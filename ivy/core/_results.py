@@ -4,7 +4,9 @@ functions (numpy and jax return their own named tuples, with the same fields) an
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import NamedTuple
+
+from ivy.typing import Array
 
 __all__ = ["TopKResult", "UniqueAllResult", "UniqueCountsResult", "UniqueInverseResult"]
 
@@ -13,29 +15,29 @@ class UniqueAllResult(NamedTuple):
     """``values`` (sorted unique values), ``indices`` (of their first occurrence in the flattened
     input), ``inverse_indices`` (shaped like the input) and ``counts``."""
 
-    values: Any
-    indices: Any
-    inverse_indices: Any
-    counts: Any
+    values: Array
+    indices: Array
+    inverse_indices: Array
+    counts: Array
 
 
 class UniqueCountsResult(NamedTuple):
     """``values`` (sorted unique values) and their ``counts``."""
 
-    values: Any
-    counts: Any
+    values: Array
+    counts: Array
 
 
 class UniqueInverseResult(NamedTuple):
     """``values`` (sorted unique values) and ``inverse_indices`` (shaped like the input)."""
 
-    values: Any
-    inverse_indices: Any
+    values: Array
+    inverse_indices: Array
 
 
 class TopKResult(NamedTuple):
     """``values`` (the ``k`` largest or smallest elements along the axis) and their ``indices``
     (int64) in the input."""
 
-    values: Any
-    indices: Any
+    values: Array
+    indices: Array

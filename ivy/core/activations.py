@@ -18,6 +18,7 @@ from __future__ import annotations
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition, dispatch
 from ivy.core._floats import floating
+from ivy.typing import Array, Framework
 
 __all__ = [
     "relu",
@@ -33,7 +34,7 @@ __all__ = [
 
 
 @dispatch
-def relu(x, /, *, f=None):
+def relu(x: Array, /, *, f: Framework = None) -> Array:
     """Rectified linear unit ``max(x, 0)`` (gradient 0 at 0; NaN stays NaN).
 
     Args:
@@ -49,7 +50,7 @@ def relu(x, /, *, f=None):
 
 
 @composition
-def leaky_relu(x, /, alpha=0.2, *, f=None):
+def leaky_relu(x: Array, /, alpha: float = 0.2, *, f: Framework = None) -> Array:
     """Leaky rectified linear unit: ``x`` where ``x > 0``, else ``alpha * x``.
 
     Args:
@@ -69,7 +70,7 @@ def leaky_relu(x, /, alpha=0.2, *, f=None):
 
 
 @dispatch
-def gelu(x, /, approximate=False, *, f=None):
+def gelu(x: Array, /, approximate: bool = False, *, f: Framework = None) -> Array:
     """Gaussian error linear unit ``x * Phi(x) = x / 2 * (1 + erf(x / sqrt(2)))``.
 
     Args:
@@ -87,7 +88,7 @@ def gelu(x, /, approximate=False, *, f=None):
 
 
 @dispatch
-def sigmoid(x, /, *, f=None):
+def sigmoid(x: Array, /, *, f: Framework = None) -> Array:
     """Logistic function ``1 / (1 + exp(-x))``, finite with a finite gradient everywhere.
 
     Args:
@@ -103,7 +104,7 @@ def sigmoid(x, /, *, f=None):
 
 
 @dispatch
-def softmax(x, /, axis=-1, *, f=None):
+def softmax(x: Array, /, axis: int = -1, *, f: Framework = None) -> Array:
     """``exp(x) / sum(exp(x))`` along ``axis``, computed after subtracting the maximum.
 
     Args:
@@ -120,7 +121,7 @@ def softmax(x, /, axis=-1, *, f=None):
 
 
 @dispatch
-def log_softmax(x, /, axis=-1, *, f=None):
+def log_softmax(x: Array, /, axis: int = -1, *, f: Framework = None) -> Array:
     """``x - logsumexp(x)`` along ``axis``: the log of :func:`softmax`, without underflow.
 
     Args:
@@ -137,7 +138,7 @@ def log_softmax(x, /, axis=-1, *, f=None):
 
 
 @composition
-def softplus(x, /, *, f=None):
+def softplus(x: Array, /, *, f: Framework = None) -> Array:
     """``log(1 + exp(x))``, computed as ``max(x, 0) + log1p(exp(-|x|))``.
 
     Args:
@@ -158,7 +159,7 @@ def softplus(x, /, *, f=None):
 
 
 @composition
-def silu(x, /, *, f=None):
+def silu(x: Array, /, *, f: Framework = None) -> Array:
     """Sigmoid linear unit (swish) ``x * sigmoid(x)``.
 
     Args:
@@ -177,7 +178,7 @@ def silu(x, /, *, f=None):
 
 
 @composition
-def elu(x, /, alpha=1.0, *, f=None):
+def elu(x: Array, /, alpha: float = 1.0, *, f: Framework = None) -> Array:
     """Exponential linear unit: ``x`` where ``x > 0``, else ``alpha * (exp(x) - 1)``.
 
     Args:

@@ -15,16 +15,23 @@ from __future__ import annotations
 import functools
 import threading
 from collections.abc import Callable, Sequence
-from typing import Any
 
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition, dispatch
+from ivy.typing import Framework
 
 __all__ = ["compile_fn", "compile_native"]
 
 
 @dispatch()
-def compile_native(fn, /, *, static_argnums=None, static_argnames=None, f=None):
+def compile_native(
+    fn: Callable,
+    /,
+    *,
+    static_argnums: int | Sequence[int] | None = None,
+    static_argnames: str | Sequence[str] | None = None,
+    f: Framework = None,
+) -> Callable:
     """Compile ``fn`` now with the backend of ``f`` (or the global framework); prefer
     :func:`compile_fn`, which can also choose the framework at the first call.
 
@@ -40,7 +47,7 @@ def compile_fn(
     *,
     static_argnums: int | Sequence[int] | None = None,
     static_argnames: str | Sequence[str] | None = None,
-    f: Any = None,
+    f: Framework = None,
 ) -> Callable:
     """Compile ``fn`` with the framework's compiler (``jax.jit``, ``tf.function``,
     ``torch.compile``; numpy warns and returns ``fn``).

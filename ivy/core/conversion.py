@@ -3,14 +3,17 @@ target backend's ``from_dlpack``."""
 
 from __future__ import annotations
 
+from types import ModuleType
+
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition
+from ivy.typing import Array, ArrayLike, Framework
 
 __all__ = ["to_framework"]
 
 
 @composition
-def to_framework(x, framework, /, *, f=None):
+def to_framework(x: ArrayLike, framework: str | ModuleType, /, *, f: Framework = None) -> Array:
     """``x`` as an array of ``framework``, sharing its memory where the frameworks allow.
 
     The array goes through DLPack (the target backend's ``from_dlpack``): numpy, torch and jax

@@ -23,7 +23,10 @@ Backends: torch ``torch.nn.functional.conv*`` (permuted to channel-first and bac
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from ivy.core._dispatch import dispatch
+from ivy.typing import Array, Framework, Shape
 
 __all__ = [
     "conv1d",
@@ -37,7 +40,16 @@ __all__ = [
 
 
 @dispatch("x", "filters")
-def conv1d(x, filters, strides, padding, /, *, dilations=1, f=None):
+def conv1d(
+    x: Array,
+    filters: Array,
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    dilations: int | Sequence[int] = 1,
+    f: Framework = None,
+) -> Array:
     """1-D convolution (cross-correlation, as in every framework), channel-last.
 
     Args:
@@ -57,7 +69,16 @@ def conv1d(x, filters, strides, padding, /, *, dilations=1, f=None):
 
 
 @dispatch("x", "filters")
-def conv2d(x, filters, strides, padding, /, *, dilations=1, f=None):
+def conv2d(
+    x: Array,
+    filters: Array,
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    dilations: int | Sequence[int] = 1,
+    f: Framework = None,
+) -> Array:
     """2-D convolution (cross-correlation), channel-last.
 
     Args:
@@ -77,7 +98,16 @@ def conv2d(x, filters, strides, padding, /, *, dilations=1, f=None):
 
 
 @dispatch("x", "filters")
-def conv3d(x, filters, strides, padding, /, *, dilations=1, f=None):
+def conv3d(
+    x: Array,
+    filters: Array,
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    dilations: int | Sequence[int] = 1,
+    f: Framework = None,
+) -> Array:
     """3-D convolution (cross-correlation), channel-last.
 
     Args:
@@ -97,7 +127,17 @@ def conv3d(x, filters, strides, padding, /, *, dilations=1, f=None):
 
 
 @dispatch("x", "filters")
-def conv1d_transpose(x, filters, strides, padding, /, *, output_shape=None, dilations=1, f=None):
+def conv1d_transpose(
+    x: Array,
+    filters: Array,
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    output_shape: Shape | None = None,
+    dilations: int | Sequence[int] = 1,
+    f: Framework = None,
+) -> Array:
     """1-D transposed convolution (the gradient of :func:`conv1d` with respect to its input).
 
     Args:
@@ -122,7 +162,17 @@ def conv1d_transpose(x, filters, strides, padding, /, *, output_shape=None, dila
 
 
 @dispatch("x", "filters")
-def conv2d_transpose(x, filters, strides, padding, /, *, output_shape=None, dilations=1, f=None):
+def conv2d_transpose(
+    x: Array,
+    filters: Array,
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    output_shape: Shape | None = None,
+    dilations: int | Sequence[int] = 1,
+    f: Framework = None,
+) -> Array:
     """2-D transposed convolution (the gradient of :func:`conv2d` with respect to its input).
 
     Args:
@@ -144,7 +194,17 @@ def conv2d_transpose(x, filters, strides, padding, /, *, output_shape=None, dila
 
 
 @dispatch("x", "filters")
-def conv3d_transpose(x, filters, strides, padding, /, *, output_shape=None, dilations=1, f=None):
+def conv3d_transpose(
+    x: Array,
+    filters: Array,
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    output_shape: Shape | None = None,
+    dilations: int | Sequence[int] = 1,
+    f: Framework = None,
+) -> Array:
     """3-D transposed convolution (the gradient of :func:`conv3d` with respect to its input).
 
     Args:
@@ -167,7 +227,16 @@ def conv3d_transpose(x, filters, strides, padding, /, *, output_shape=None, dila
 
 
 @dispatch("x", "filters")
-def depthwise_conv2d(x, filters, strides, padding, /, *, dilations=1, f=None):
+def depthwise_conv2d(
+    x: Array,
+    filters: Array,
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    dilations: int | Sequence[int] = 1,
+    f: Framework = None,
+) -> Array:
     """Depthwise 2-D convolution: each channel convolved with its own 2-D filter.
 
     Args:

@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from typing import Literal
+
 from ivy import framework_handler as _fh
 from ivy.core._by_hand import by_hand
 from ivy.core._dispatch import alias, composition, dispatch
+from ivy.typing import Array, ArrayLike, Device, Dtype, Framework, Scalar, Shape
 
 __all__ = [
     "asarray",
@@ -29,7 +32,15 @@ __all__ = [
 
 
 @dispatch
-def asarray(obj, /, *, dtype=None, device=None, copy=None, f=None):
+def asarray(
+    obj: ArrayLike,
+    /,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    copy: bool | None = None,
+    f: Framework = None,
+) -> Array:
     """Convert ``obj`` (array, scalar, nested list) to an array of the chosen framework.
 
     Python floats become float32 and Python ints int64 unless ``dtype`` says otherwise; arrays
@@ -41,39 +52,94 @@ array = alias("array", asarray)
 
 
 @dispatch()
-def zeros(shape, *, dtype=None, device=None, f=None):
+def zeros(
+    shape: int | Shape,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Array of zeros of ``shape`` (int or tuple); float32 by default."""
 
 
 @dispatch()
-def ones(shape, *, dtype=None, device=None, f=None):
+def ones(
+    shape: int | Shape,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Array of ones of ``shape``; float32 by default."""
 
 
 @dispatch()
-def empty(shape, *, dtype=None, device=None, f=None):
+def empty(
+    shape: int | Shape,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Uninitialised array of ``shape``; float32 by default."""
 
 
 @dispatch()
-def full(shape, fill_value, *, dtype=None, device=None, f=None):
+def full(
+    shape: int | Shape,
+    fill_value: Scalar,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Array of ``shape`` filled with ``fill_value``; the dtype follows the value (bool, int64,
     float32, complex64) unless given."""
 
 
 @dispatch()
-def arange(start, /, stop=None, step=1, *, dtype=None, device=None, f=None):
+def arange(
+    start: int | float,
+    /,
+    stop: int | float | None = None,
+    step: int | float = 1,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Values from ``start`` (or 0) to ``stop`` (excluded) by ``step``: int64 if every bound is
     an int, else float32."""
 
 
 @dispatch()
-def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True, f=None):
+def linspace(
+    start: float,
+    stop: float,
+    /,
+    num: int,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    endpoint: bool = True,
+    f: Framework = None,
+) -> Array:
     """``num`` evenly spaced values from ``start`` to ``stop``; float32 by default."""
 
 
 @composition
-def logspace(start, stop, /, num, *, base=10.0, dtype=None, device=None, endpoint=True, f=None):
+def logspace(
+    start: float,
+    stop: float,
+    /,
+    num: int,
+    *,
+    base: float = 10.0,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    endpoint: bool = True,
+    f: Framework = None,
+) -> Array:
     """``num`` values spaced evenly on a log scale: ``base ** linspace(start, stop, num)``, as
     ``numpy.logspace``.
 
@@ -104,32 +170,57 @@ def logspace(start, stop, /, num, *, base=10.0, dtype=None, device=None, endpoin
 
 
 @dispatch()
-def eye(n_rows, n_cols=None, /, *, k=0, dtype=None, device=None, f=None):
+def eye(
+    n_rows: int,
+    n_cols: int | None = None,
+    /,
+    *,
+    k: int = 0,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Identity-like matrix with ones on diagonal ``k``; float32 by default."""
 
 
 @dispatch
-def zeros_like(x, /, *, dtype=None, device=None, f=None):
+def zeros_like(
+    x: Array, /, *, dtype: Dtype | None = None, device: Device | None = None, f: Framework = None
+) -> Array:
     """Zeros with the shape (and by default dtype and device) of ``x``."""
 
 
 @dispatch
-def ones_like(x, /, *, dtype=None, device=None, f=None):
+def ones_like(
+    x: Array, /, *, dtype: Dtype | None = None, device: Device | None = None, f: Framework = None
+) -> Array:
     """Ones with the shape (and by default dtype and device) of ``x``."""
 
 
 @dispatch
-def empty_like(x, /, *, dtype=None, device=None, f=None):
+def empty_like(
+    x: Array, /, *, dtype: Dtype | None = None, device: Device | None = None, f: Framework = None
+) -> Array:
     """Uninitialised array with the shape (and by default dtype and device) of ``x``."""
 
 
 @dispatch
-def full_like(x, /, fill_value, *, dtype=None, device=None, f=None):
+def full_like(
+    x: Array,
+    /,
+    fill_value: Scalar,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Array shaped like ``x`` filled with ``fill_value``, with the dtype of ``x`` by default."""
 
 
 @dispatch
-def from_dlpack(x, /, *, device=None, copy=None, f=None):
+def from_dlpack(
+    x: Array, /, *, device: Device | None = None, copy: bool | None = None, f: Framework = None
+) -> Array:
     """An array of the chosen framework sharing the memory of ``x``, any object with
     ``__dlpack__`` (torch, jax, numpy, tensorflow arrays...): choose the framework with ``f``.
 
@@ -139,7 +230,9 @@ def from_dlpack(x, /, *, device=None, copy=None, f=None):
 
 
 @by_hand
-def meshgrid(*arrays, indexing="xy", f=None):
+def meshgrid(
+    *arrays: Array, indexing: Literal["xy", "ij"] = "xy", f: Framework = None
+) -> list[Array]:
     """List of coordinate arrays from 1-D ``arrays``: with ``indexing='xy'`` (Cartesian) the first
     two output axes are swapped, with ``'ij'`` (matrix) output axis i follows ``arrays[i]``.
 
@@ -149,10 +242,10 @@ def meshgrid(*arrays, indexing="xy", f=None):
 
 
 @dispatch
-def tril(x, /, *, k=0, f=None):
+def tril(x: Array, /, *, k: int = 0, f: Framework = None) -> Array:
     """``x`` (a matrix or a stack of them) with the elements above diagonal ``k`` zeroed."""
 
 
 @dispatch
-def triu(x, /, *, k=0, f=None):
+def triu(x: Array, /, *, k: int = 0, f: Framework = None) -> Array:
     """``x`` (a matrix or a stack of them) with the elements below diagonal ``k`` zeroed."""

@@ -7,12 +7,22 @@ accumulate in int64 (unsigned ones in uint64), on every backend.
 from __future__ import annotations
 
 from ivy.core._dispatch import dispatch
+from ivy.typing import Array, Dtype, Framework
 
 __all__ = ["cumsum", "cumprod"]
 
 
 @dispatch
-def cumsum(x, /, axis=0, *, exclusive=False, reverse=False, dtype=None, f=None):
+def cumsum(
+    x: Array,
+    /,
+    axis: int = 0,
+    *,
+    exclusive: bool = False,
+    reverse: bool = False,
+    dtype: Dtype | None = None,
+    f: Framework = None,
+) -> Array:
     """Cumulative sum of ``x`` along ``axis``.
 
     Args:
@@ -31,7 +41,16 @@ def cumsum(x, /, axis=0, *, exclusive=False, reverse=False, dtype=None, f=None):
 
 
 @dispatch
-def cumprod(x, /, axis=0, *, exclusive=False, reverse=False, dtype=None, f=None):
+def cumprod(
+    x: Array,
+    /,
+    axis: int = 0,
+    *,
+    exclusive: bool = False,
+    reverse: bool = False,
+    dtype: Dtype | None = None,
+    f: Framework = None,
+) -> Array:
     """Cumulative product of ``x`` along ``axis`` (arguments as :func:`cumsum`; the first result
     of an exclusive product is 1).
 

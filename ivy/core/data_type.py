@@ -16,6 +16,8 @@ from __future__ import annotations
 from ivy.core import _dtype_rules as _rules
 from ivy.core._by_hand import by_hand, framework_or_none
 from ivy.core._dispatch import alias, dispatch
+from ivy.core._dtype_rules import FInfo, IInfo
+from ivy.typing import Array, Device, Dtype, Framework, Scalar
 
 __all__ = ["astype", "can_cast", "cast", "finfo", "iinfo", "isdtype", "result_type"]
 
@@ -23,7 +25,15 @@ _SCALARS = (bool, int, float, complex)
 
 
 @dispatch
-def astype(x, dtype, /, *, copy=True, device=None, f=None):
+def astype(
+    x: Array,
+    dtype: Dtype,
+    /,
+    *,
+    copy: bool = True,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """``x`` converted to ``dtype`` (and moved to ``device`` if given). Example:
     ``ivy.astype(x, 'float64')``."""
 
@@ -32,7 +42,7 @@ cast = alias("cast", astype)
 
 
 @by_hand
-def can_cast(from_, to, /, *, f=None):
+def can_cast(from_: Dtype | Array, to: Dtype, /, *, f: Framework = None) -> bool:
     """Whether ``from_`` (a dtype or an array) promotes with dtype ``to`` to ``to``, i.e. casts
     to it by the type promotion rules.
 
@@ -46,7 +56,7 @@ def can_cast(from_, to, /, *, f=None):
 
 
 @by_hand
-def finfo(type, /, *, f=None):  # noqa: A002 - the Array API name
+def finfo(type: Dtype | Array, /, *, f: Framework = None) -> FInfo:  # noqa: A002 - the Array API name
     """Machine limits of a floating dtype (or of an array's dtype; complex: of its real part).
 
     Returns:
@@ -62,7 +72,7 @@ def finfo(type, /, *, f=None):  # noqa: A002 - the Array API name
 
 
 @by_hand
-def iinfo(type, /, *, f=None):  # noqa: A002 - the Array API name
+def iinfo(type: Dtype | Array, /, *, f: Framework = None) -> IInfo:  # noqa: A002 - the Array API name
     """Machine limits of an integer dtype (or of an array's dtype).
 
     Returns:
@@ -78,7 +88,9 @@ def iinfo(type, /, *, f=None):  # noqa: A002 - the Array API name
 
 
 @by_hand
-def isdtype(dtype, kind, *, f=None):
+def isdtype(
+    dtype: Dtype, kind: Dtype | str | tuple[Dtype | str, ...], *, f: Framework = None
+) -> bool:
     """Whether ``dtype`` is of ``kind``: a dtype, one of ``'bool'``, ``'signed integer'``,
     ``'unsigned integer'``, ``'integral'``, ``'real floating'``, ``'complex floating'``,
     ``'numeric'``, or a tuple of these (any of them).
@@ -92,7 +104,7 @@ def isdtype(dtype, kind, *, f=None):
 
 
 @by_hand
-def result_type(*arrays_and_dtypes, f=None):
+def result_type(*arrays_and_dtypes: Array | Dtype | Scalar, f: Framework = None) -> Dtype:
     """The dtype that an operation on ``arrays_and_dtypes`` (arrays, dtypes and Python scalars;
     at least one array or dtype) gives by the type promotion rules.
 

@@ -13,7 +13,11 @@ integer inputs are computed in float32, on every backend.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Literal
+
 from ivy.core._dispatch import dispatch
+from ivy.typing import Array, Device, Dtype, Framework
 
 __extension__ = "fft"
 
@@ -36,7 +40,15 @@ __all__ = [
 
 
 @dispatch
-def fft(x, /, *, n=None, axis=-1, norm="backward", f=None):
+def fft(
+    x: Array,
+    /,
+    *,
+    n: int | None = None,
+    axis: int = -1,
+    norm: Literal["backward", "ortho", "forward"] = "backward",
+    f: Framework = None,
+) -> Array:
     """One-dimensional discrete Fourier transform along ``axis``.
 
     Args:
@@ -54,12 +66,28 @@ def fft(x, /, *, n=None, axis=-1, norm="backward", f=None):
 
 
 @dispatch
-def ifft(x, /, *, n=None, axis=-1, norm="backward", f=None):
+def ifft(
+    x: Array,
+    /,
+    *,
+    n: int | None = None,
+    axis: int = -1,
+    norm: Literal["backward", "ortho", "forward"] = "backward",
+    f: Framework = None,
+) -> Array:
     """Inverse of :func:`fft` (``norm='backward'`` divides by ``n``)."""
 
 
 @dispatch
-def fftn(x, /, *, s=None, axes=None, norm="backward", f=None):
+def fftn(
+    x: Array,
+    /,
+    *,
+    s: Sequence[int] | None = None,
+    axes: Sequence[int] | None = None,
+    norm: Literal["backward", "ortho", "forward"] = "backward",
+    f: Framework = None,
+) -> Array:
     """N-dimensional discrete Fourier transform.
 
     Args:
@@ -76,48 +104,112 @@ def fftn(x, /, *, s=None, axes=None, norm="backward", f=None):
 
 
 @dispatch
-def ifftn(x, /, *, s=None, axes=None, norm="backward", f=None):
+def ifftn(
+    x: Array,
+    /,
+    *,
+    s: Sequence[int] | None = None,
+    axes: Sequence[int] | None = None,
+    norm: Literal["backward", "ortho", "forward"] = "backward",
+    f: Framework = None,
+) -> Array:
     """Inverse of :func:`fftn` (arguments as there)."""
 
 
 @dispatch
-def rfft(x, /, *, n=None, axis=-1, norm="backward", f=None):
+def rfft(
+    x: Array,
+    /,
+    *,
+    n: int | None = None,
+    axis: int = -1,
+    norm: Literal["backward", "ortho", "forward"] = "backward",
+    f: Framework = None,
+) -> Array:
     """Fourier transform of a real signal: the ``n // 2 + 1`` non-negative frequency terms
     (float32 -> complex64, float64 -> complex128)."""
 
 
 @dispatch
-def irfft(x, /, *, n=None, axis=-1, norm="backward", f=None):
+def irfft(
+    x: Array,
+    /,
+    *,
+    n: int | None = None,
+    axis: int = -1,
+    norm: Literal["backward", "ortho", "forward"] = "backward",
+    f: Framework = None,
+) -> Array:
     """Inverse of :func:`rfft`: a real signal of length ``n`` (default ``2 * (m - 1)``, ``m`` the
     input's size along ``axis``) from its non-negative frequency terms."""
 
 
 @dispatch
-def rfftn(x, /, *, s=None, axes=None, norm="backward", f=None):
+def rfftn(
+    x: Array,
+    /,
+    *,
+    s: Sequence[int] | None = None,
+    axes: Sequence[int] | None = None,
+    norm: Literal["backward", "ortho", "forward"] = "backward",
+    f: Framework = None,
+) -> Array:
     """N-dimensional :func:`rfft`: the real transform over the last of ``axes``, then complex
     transforms over the others (``s`` and ``axes`` as in :func:`fftn`)."""
 
 
 @dispatch
-def irfftn(x, /, *, s=None, axes=None, norm="backward", f=None):
+def irfftn(
+    x: Array,
+    /,
+    *,
+    s: Sequence[int] | None = None,
+    axes: Sequence[int] | None = None,
+    norm: Literal["backward", "ortho", "forward"] = "backward",
+    f: Framework = None,
+) -> Array:
     """Inverse of :func:`rfftn`; the output length along the last of ``axes`` defaults to
     ``2 * (m - 1)`` (also for an entry ``-1`` of ``s`` there)."""
 
 
 @dispatch
-def hfft(x, /, *, n=None, axis=-1, norm="backward", f=None):
+def hfft(
+    x: Array,
+    /,
+    *,
+    n: int | None = None,
+    axis: int = -1,
+    norm: Literal["backward", "ortho", "forward"] = "backward",
+    f: Framework = None,
+) -> Array:
     """Fourier transform of a signal with Hermitian symmetry, given by its non-negative frequency
     half: a real result of length ``n`` (default ``2 * (m - 1)``)."""
 
 
 @dispatch
-def ihfft(x, /, *, n=None, axis=-1, norm="backward", f=None):
+def ihfft(
+    x: Array,
+    /,
+    *,
+    n: int | None = None,
+    axis: int = -1,
+    norm: Literal["backward", "ortho", "forward"] = "backward",
+    f: Framework = None,
+) -> Array:
     """Inverse of :func:`hfft`: the ``n // 2 + 1`` terms of a real signal's Hermitian
     spectrum."""
 
 
 @dispatch()
-def fftfreq(n, /, *, d=1.0, dtype=None, device=None, f=None):
+def fftfreq(
+    n: int,
+    /,
+    *,
+    d: float = 1.0,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Sample frequencies of :func:`fft` for a signal of ``n`` samples spaced by ``d``:
     ``[0, 1, ..., n//2 - 1 (or (n-1)//2), -n//2 (or -(n-1)//2), ..., -1] / (d * n)``.
 
@@ -132,17 +224,27 @@ def fftfreq(n, /, *, d=1.0, dtype=None, device=None, f=None):
 
 
 @dispatch()
-def rfftfreq(n, /, *, d=1.0, dtype=None, device=None, f=None):
+def rfftfreq(
+    n: int,
+    /,
+    *,
+    d: float = 1.0,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Sample frequencies of :func:`rfft`: ``[0, 1, ..., n // 2] / (d * n)`` (float32 by
     default)."""
 
 
 @dispatch
-def fftshift(x, /, *, axes=None, f=None):
+def fftshift(x: Array, /, *, axes: int | Sequence[int] | None = None, f: Framework = None) -> Array:
     """Move the zero-frequency term to the centre of ``axes`` (None: all), rolling each by
     ``size // 2``."""
 
 
 @dispatch
-def ifftshift(x, /, *, axes=None, f=None):
+def ifftshift(
+    x: Array, /, *, axes: int | Sequence[int] | None = None, f: Framework = None
+) -> Array:
     """Inverse of :func:`fftshift` (rolls each axis by ``-(size // 2)``)."""

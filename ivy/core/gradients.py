@@ -21,6 +21,7 @@ from typing import Any
 
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition, dispatch
+from ivy.typing import Array, Framework, Nest
 
 __all__ = [
     "execute_with_gradients",
@@ -34,7 +35,9 @@ __all__ = [
 
 
 @dispatch("xs")
-def execute_with_gradients(func, xs, *, retain_grads=False, f=None):
+def execute_with_gradients(
+    func: Callable[[Nest], Any], xs: Nest, *, retain_grads: bool = False, f: Framework = None
+) -> tuple[Any, ...]:
     """Evaluate ``func(xs)`` and differentiate its loss with respect to every leaf of ``xs``.
 
     Args:
@@ -56,7 +59,14 @@ def execute_with_gradients(func, xs, *, retain_grads=False, f=None):
 
 
 @dispatch("x")
-def execute_with_jacobian(func, x, *, batch_dims=None, retain_grads=False, f=None):
+def execute_with_jacobian(
+    func: Callable[[Array], Array],
+    x: Array,
+    *,
+    batch_dims: int | None = None,
+    retain_grads: bool = False,
+    f: Framework = None,
+) -> tuple[Array, Array]:
     """Evaluate ``y = func(x)`` and its Jacobian, per batch element.
 
     ``x`` has shape ``(*batch, *in_shape)`` and ``func(x)`` shape ``(*batch, *out_shape)``, where
@@ -82,7 +92,7 @@ def execute_with_jacobian(func, x, *, batch_dims=None, retain_grads=False, f=Non
 
 
 @dispatch
-def stop_gradient(x, /, *, f=None):
+def stop_gradient(x: Array, /, *, f: Framework = None) -> Array:
     """``x`` with no gradient flowing back through it (torch ``detach``, jax/tf
     ``stop_gradient``; numpy arrays carry no gradient and are returned as they are).
 
@@ -93,7 +103,7 @@ def stop_gradient(x, /, *, f=None):
 
 
 @dispatch
-def variable(x, /, *, f=None):
+def variable(x: Array, /, *, f: Framework = None) -> Array:
     """``x`` as a trainable variable: a torch tensor that requires grad, a ``tf.Variable``; jax
     and numpy arrays are returned as arrays (jax differentiates values, numpy does not).
 
@@ -105,8 +115,8 @@ def variable(x, /, *, f=None):
 
 @composition
 def value_and_grad(
-    func: Callable, /, *, retain_grads: bool = False, f: Any = None
-) -> Callable[[Any], tuple]:
+    func: Callable[[Nest], Any], /, *, retain_grads: bool = False, f: Framework = None
+) -> Callable[[Nest], tuple[Any, ...]]:
     """The function ``xs -> (loss, grads, *aux)`` of ``func``: :func:`execute_with_gradients`
     with ``func`` fixed.
 
@@ -131,7 +141,9 @@ def value_and_grad(
 
 
 @composition
-def grad(func: Callable, /, *, retain_grads: bool = False, f: Any = None) -> Callable[[Any], Any]:
+def grad(
+    func: Callable[[Nest], Any], /, *, retain_grads: bool = False, f: Framework = None
+) -> Callable[[Nest], Nest]:
     """The function ``xs -> grads`` of ``func`` (its aux outputs, if any, are dropped).
 
     Args:
@@ -157,8 +169,13 @@ def grad(func: Callable, /, *, retain_grads: bool = False, f: Any = None) -> Cal
 
 @composition
 def jacobian(
-    func: Callable, /, *, batch_dims: int | None = None, retain_grads: bool = False, f: Any = None
-) -> Callable[[Any], Any]:
+    func: Callable[[Array], Array],
+    /,
+    *,
+    batch_dims: int | None = None,
+    retain_grads: bool = False,
+    f: Framework = None,
+) -> Callable[[Array], Array]:
     """The function ``x -> jac`` of ``func``; see :func:`execute_with_jacobian` for the shapes.
 
     Args:

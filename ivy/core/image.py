@@ -8,9 +8,11 @@ integer coordinates, ``x`` runs along the width and ``y`` down the height.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition
+from ivy.typing import Array, Framework
 
 __all__ = ["bilinear_resample", "gradient_image", "stack_images"]
 
@@ -24,7 +26,7 @@ def _floating(xp, x, like=None):
 
 
 @composition
-def bilinear_resample(x, warp, /, *, f=None):
+def bilinear_resample(x: Array, warp: Array, /, *, f: Framework = None) -> Array:
     """Sample images at continuous pixel coordinates by bilinear interpolation.
 
     Coordinates outside the image are clamped to its border (the edge pixels extend outwards).
@@ -72,7 +74,7 @@ def bilinear_resample(x, warp, /, *, f=None):
 
 
 @composition
-def gradient_image(x, /, *, f=None):
+def gradient_image(x: Array, /, *, f: Framework = None) -> tuple[Array, Array]:
     """Forward differences of images along the height and the width.
 
     ``dy[..., i, j, :] = x[..., i + 1, j, :] - x[..., i, j, :]`` and ``dx[..., i, j, :] =
@@ -97,7 +99,9 @@ def gradient_image(x, /, *, f=None):
     return dy, dx
 
 
-def image_grid(count: int, height: int, width: int, aspect_ratio=(1, 1)) -> tuple[int, int]:
+def image_grid(
+    count: int, height: int, width: int, aspect_ratio: tuple[float, float] = (1, 1)
+) -> tuple[int, int]:
     """``(rows, columns)`` of the grid :func:`stack_images` uses for ``count`` images.
 
     The grid has no empty row, and its aspect ratio (``rows * height`` to ``columns * width``) is
@@ -118,7 +122,13 @@ def image_grid(count: int, height: int, width: int, aspect_ratio=(1, 1)) -> tupl
 
 
 @composition
-def stack_images(images, /, *, desired_aspect_ratio=(1, 1), f=None):
+def stack_images(
+    images: Sequence[Array],
+    /,
+    *,
+    desired_aspect_ratio: tuple[float, float] = (1, 1),
+    f: Framework = None,
+) -> Array:
     """Tile images of one shape into a single image, in a grid whose aspect ratio is as close as
     possible to ``desired_aspect_ratio``.
 

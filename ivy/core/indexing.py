@@ -3,7 +3,11 @@ arrays (``_flat``), and the coordinates of true elements."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Any, Literal
+
 from ivy.core._dispatch import dispatch
+from ivy.typing import Array, Dtype, Framework, Shape
 
 __all__ = [
     "take",
@@ -18,13 +22,13 @@ __all__ = [
 
 
 @dispatch
-def take(x, indices, /, *, axis=None, f=None):
+def take(x: Array, indices: Array, /, *, axis: int | None = None, f: Framework = None) -> Array:
     """Elements of ``x`` at the 1-D integer ``indices`` along ``axis`` (None: of the flattened
     array)."""
 
 
 @dispatch("x", "indices")
-def take_along_axis(x, indices, /, *, axis=-1, f=None):
+def take_along_axis(x: Array, indices: Array, /, *, axis: int = -1, f: Framework = None) -> Array:
     """Elements of ``x`` picked along ``axis`` by ``indices`` (Array API 2024.12): ``out[..., j,
     ...] = x[..., indices[..., j, ...], ...]`` with ``j`` at position ``axis``.
 
@@ -45,7 +49,7 @@ def take_along_axis(x, indices, /, *, axis=-1, f=None):
 
 
 @dispatch
-def gather_nd(params, indices, /, *, f=None):
+def gather_nd(params: Array, indices: Array | Sequence[Any], /, *, f: Framework = None) -> Array:
     """Gather slices of ``params`` by index tuples in the last axis of ``indices``.
 
     With ``indices`` of shape ``[..., K]`` the result has shape ``indices.shape[:-1] +
@@ -54,7 +58,15 @@ def gather_nd(params, indices, /, *, f=None):
 
 
 @dispatch("indices", "updates")
-def scatter_nd(indices, updates, /, shape, *, reduction="sum", f=None):
+def scatter_nd(
+    indices: Array,
+    updates: Array,
+    /,
+    shape: Shape,
+    *,
+    reduction: Literal["sum", "replace", "min", "max"] = "sum",
+    f: Framework = None,
+) -> Array:
     """Scatter ``updates`` into zeros of ``shape`` at index tuples ``indices`` (``[..., K]``).
 
     ``reduction`` combines updates that land on the same place: ``'sum'``, ``'replace'`` (one of
@@ -63,13 +75,15 @@ def scatter_nd(indices, updates, /, shape, *, reduction="sum", f=None):
 
 
 @dispatch
-def one_hot(indices, depth, /, *, dtype=None, f=None):
+def one_hot(
+    indices: Array, depth: int, /, *, dtype: Dtype | None = None, f: Framework = None
+) -> Array:
     """One-hot encoding of integer ``indices`` along a new last axis of size ``depth``;
     float32 by default."""
 
 
 @dispatch
-def gather_flat(params, indices, /, *, f=None):
+def gather_flat(params: Array, indices: Array, /, *, f: Framework = None) -> Array:
     """Elements of the flattened ``params`` at integer ``indices`` of any shape.
 
     Args:
@@ -84,7 +98,15 @@ def gather_flat(params, indices, /, *, f=None):
 
 
 @dispatch("indices", "updates")
-def scatter_flat(indices, updates, /, size, *, reduction="sum", f=None):
+def scatter_flat(
+    indices: Array,
+    updates: Array,
+    /,
+    size: int,
+    *,
+    reduction: Literal["sum", "replace", "min", "max"] = "sum",
+    f: Framework = None,
+) -> Array:
     """Scatter ``updates`` into a 1-D array of zeros of length ``size`` at flat ``indices``.
 
     Args:
@@ -104,7 +126,7 @@ def scatter_flat(indices, updates, /, size, *, reduction="sum", f=None):
 
 
 @dispatch
-def indices_where(x, /, *, f=None):
+def indices_where(x: Array, /, *, f: Framework = None) -> Array:
     """Coordinates of the true (non-zero) elements of ``x``, in row-major order.
 
     Returns:

@@ -5,6 +5,7 @@ from __future__ import annotations
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition
 from ivy.core._floats import common_floating
+from ivy.typing import Array, Framework, Scalar
 
 __all__ = ["linear_resample", "interp"]
 
@@ -16,7 +17,7 @@ def _floating(xp, x):
 
 
 @composition
-def linear_resample(x, num_samples, /, *, axis=-1, f=None):
+def linear_resample(x: Array, num_samples: int, /, *, axis: int = -1, f: Framework = None) -> Array:
     """Resample ``x`` along ``axis`` at ``num_samples`` evenly spaced points, linearly
     interpolated.
 
@@ -59,7 +60,16 @@ def linear_resample(x, num_samples, /, *, axis=-1, f=None):
 
 
 @composition
-def interp(x, xp, fp, /, *, left=None, right=None, f=None):
+def interp(
+    x: Array | Scalar,
+    xp: Array,
+    fp: Array,
+    /,
+    *,
+    left: float | None = None,
+    right: float | None = None,
+    f: Framework = None,
+) -> Array:
     """Piecewise-linear interpolation of the points ``(xp, fp)`` at ``x``, as ``numpy.interp``.
 
     Between ``xp[i] <= x < xp[i + 1]`` the value is ``fp[i] + (x - xp[i]) * slope_i``, exactly

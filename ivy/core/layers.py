@@ -9,9 +9,11 @@ features last; any number of leading batch axes is allowed. Convolutions and poo
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition
+from ivy.typing import Array, Framework
 
 __all__ = ["linear", "dropout", "layer_norm", "scaled_dot_product_attention", "lstm_update"]
 
@@ -21,7 +23,7 @@ def _shape_error(fn, message):
 
 
 @composition
-def linear(x, weight, /, bias=None, *, f=None):
+def linear(x: Array, weight: Array, /, bias: Array | None = None, *, f: Framework = None) -> Array:
     """Affine map ``x @ weight.T + bias`` (torch's ``F.linear``).
 
     Args:
@@ -49,7 +51,9 @@ def linear(x, weight, /, bias=None, *, f=None):
 
 
 @composition
-def dropout(x, prob, /, *, training=True, scale=True, f=None):
+def dropout(
+    x: Array, prob: float, /, *, training: bool = True, scale: bool = True, f: Framework = None
+) -> Array:
     """Zero each element of ``x`` with probability ``prob`` (a new draw on every call).
 
     The mask comes from the backend's ``random_uniform`` (seed it with ``ivy.seed``).
@@ -79,7 +83,16 @@ def dropout(x, prob, /, *, training=True, scale=True, f=None):
 
 
 @composition
-def layer_norm(x, normalized_axes=-1, /, *, scale=None, offset=None, eps=1e-5, f=None):
+def layer_norm(
+    x: Array,
+    normalized_axes: int | Sequence[int] = -1,
+    /,
+    *,
+    scale: Array | None = None,
+    offset: Array | None = None,
+    eps: float = 1e-5,
+    f: Framework = None,
+) -> Array:
     """Normalise ``x`` to zero mean and unit variance over ``normalized_axes``, then scale and
     offset: ``(x - mean) / sqrt(var + eps) * scale + offset`` (biased variance, as torch and tf).
 
@@ -110,7 +123,16 @@ def layer_norm(x, normalized_axes=-1, /, *, scale=None, offset=None, eps=1e-5, f
 
 
 @composition
-def scaled_dot_product_attention(q, k, v, /, *, mask=None, scale=None, f=None):
+def scaled_dot_product_attention(
+    q: Array,
+    k: Array,
+    v: Array,
+    /,
+    *,
+    mask: Array | None = None,
+    scale: float | None = None,
+    f: Framework = None,
+) -> Array:
     """Attention ``softmax(q @ k^T * scale + mask) @ v``.
 
     Args:
@@ -152,17 +174,17 @@ def scaled_dot_product_attention(q, k, v, /, *, mask=None, scale=None, f=None):
 
 @composition
 def lstm_update(
-    x,
-    init_h,
-    init_c,
-    kernel,
-    recurrent_kernel,
+    x: Array,
+    init_h: Array,
+    init_c: Array,
+    kernel: Array,
+    recurrent_kernel: Array,
     /,
-    bias=None,
-    recurrent_bias=None,
+    bias: Array | None = None,
+    recurrent_bias: Array | None = None,
     *,
-    f=None,
-):
+    f: Framework = None,
+) -> tuple[Array, tuple[Array, Array]]:
     """Run an LSTM over the time axis of ``x`` (gates ordered i, f, g, o as in torch and keras).
 
     Per step: ``z = x_t @ kernel + bias + h @ recurrent_kernel + recurrent_bias``, split into

@@ -13,9 +13,11 @@ integer inputs in float32, the default float dtype, on every backend.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from collections.abc import Sequence
+from typing import Literal, NamedTuple
 
 from ivy.core._dispatch import alias, dispatch
+from ivy.typing import Array, Dtype, Framework
 
 __extension__ = "linalg"
 
@@ -50,28 +52,28 @@ __all__ = [
 # Results with named fields (the backends whose framework returns plain tuples use these; numpy,
 # torch and jax return their own named results, with the same field names).
 class EighResult(NamedTuple):
-    eigenvalues: Any
-    eigenvectors: Any
+    eigenvalues: Array
+    eigenvectors: Array
 
 
 class QRResult(NamedTuple):
-    Q: Any
-    R: Any
+    Q: Array
+    R: Array
 
 
 class SlogdetResult(NamedTuple):
-    sign: Any
-    logabsdet: Any
+    sign: Array
+    logabsdet: Array
 
 
 class SVDResult(NamedTuple):
-    U: Any
-    S: Any
-    Vh: Any
+    U: Array
+    S: Array
+    Vh: Array
 
 
 @dispatch
-def cholesky(x, /, *, upper=False, f=None):
+def cholesky(x: Array, /, *, upper: bool = False, f: Framework = None) -> Array:
     """Cholesky factor of symmetric (Hermitian) positive-definite matrices.
 
     Args:
@@ -87,17 +89,17 @@ def cholesky(x, /, *, upper=False, f=None):
 
 
 @dispatch("x1", "x2")
-def cross(x1, x2, /, *, axis=-1, f=None):
+def cross(x1: Array, x2: Array, /, *, axis: int = -1, f: Framework = None) -> Array:
     """Cross product of 3-vectors along ``axis`` (the other axes broadcast)."""
 
 
 @dispatch
-def det(x, /, *, f=None):
+def det(x: Array, /, *, f: Framework = None) -> Array:
     """Determinants of the matrices ``x`` (``[..., M, M]`` -> ``[...]``)."""
 
 
 @dispatch
-def diagonal(x, /, *, offset=0, f=None):
+def diagonal(x: Array, /, *, offset: int = 0, f: Framework = None) -> Array:
     """Diagonal of the last two axes: ``offset > 0`` above the main diagonal, ``< 0`` below.
 
     Args:
@@ -112,7 +114,7 @@ def diagonal(x, /, *, offset=0, f=None):
 
 
 @dispatch
-def eigh(x, /, *, f=None):
+def eigh(x: Array, /, *, f: Framework = None) -> EighResult:
     """Eigen-decomposition of symmetric (Hermitian) matrices.
 
     Returns:
@@ -122,22 +124,29 @@ def eigh(x, /, *, f=None):
 
 
 @dispatch
-def eigvalsh(x, /, *, f=None):
+def eigvalsh(x: Array, /, *, f: Framework = None) -> Array:
     """Eigenvalues of symmetric (Hermitian) matrices, ascending (``[..., M]``)."""
 
 
 @dispatch
-def inv(x, /, *, f=None):
+def inv(x: Array, /, *, f: Framework = None) -> Array:
     """Inverse of square matrices (batched)."""
 
 
 @dispatch("x1", "x2")
-def matmul(x1, x2, /, *, f=None):
+def matmul(x1: Array, x2: Array, /, *, f: Framework = None) -> Array:
     """Matrix product with batch broadcasting (1-D operands as in numpy)."""
 
 
 @dispatch
-def matrix_norm(x, /, *, keepdims=False, ord="fro", f=None):
+def matrix_norm(
+    x: Array,
+    /,
+    *,
+    keepdims: bool = False,
+    ord: int | float | Literal["fro", "nuc"] = "fro",
+    f: Framework = None,
+) -> Array:
     """Matrix norm over the last two axes.
 
     Args:
@@ -153,13 +162,13 @@ def matrix_norm(x, /, *, keepdims=False, ord="fro", f=None):
 
 
 @dispatch
-def matrix_power(x, n, /, *, f=None):
+def matrix_power(x: Array, n: int, /, *, f: Framework = None) -> Array:
     """``x`` raised to the integer power ``n`` (``n = 0``: identity; ``n < 0``: powers of the
     inverse). Integer matrices stay integer for ``n >= 0``."""
 
 
 @dispatch
-def matrix_rank(x, /, *, rtol=None, f=None):
+def matrix_rank(x: Array, /, *, rtol: float | Array | None = None, f: Framework = None) -> Array:
     """Rank: the number of singular values above ``rtol`` times the largest one.
 
     Args:
@@ -172,22 +181,24 @@ def matrix_rank(x, /, *, rtol=None, f=None):
 
 
 @dispatch
-def matrix_transpose(x, /, *, f=None):
+def matrix_transpose(x: Array, /, *, f: Framework = None) -> Array:
     """Swap the last two axes (``[..., M, N]`` -> ``[..., N, M]``), not conjugating."""
 
 
 @dispatch("x1", "x2")
-def outer(x1, x2, /, *, f=None):
+def outer(x1: Array, x2: Array, /, *, f: Framework = None) -> Array:
     """Outer product of two 1-D arrays: ``out[i, j] = x1[i] * x2[j]``."""
 
 
 @dispatch
-def pinv(x, /, *, rtol=None, f=None):
+def pinv(x: Array, /, *, rtol: float | Array | None = None, f: Framework = None) -> Array:
     """Moore-Penrose pseudo-inverse; singular values below ``rtol * max(S)`` are dropped."""
 
 
 @dispatch
-def qr(x, /, *, mode="reduced", f=None):
+def qr(
+    x: Array, /, *, mode: Literal["reduced", "complete"] = "reduced", f: Framework = None
+) -> QRResult:
     """QR decomposition ``x = Q @ R``.
 
     Args:
@@ -201,7 +212,7 @@ def qr(x, /, *, mode="reduced", f=None):
 
 
 @dispatch
-def slogdet(x, /, *, f=None):
+def slogdet(x: Array, /, *, f: Framework = None) -> SlogdetResult:
     """Sign and log of the absolute value of determinants, a namedtuple ``(sign, logabsdet)``.
 
     A singular matrix gives ``sign = 0`` and ``logabsdet = -inf``.
@@ -209,7 +220,7 @@ def slogdet(x, /, *, f=None):
 
 
 @dispatch("x1", "x2")
-def solve(x1, x2, /, *, f=None):
+def solve(x1: Array, x2: Array, /, *, f: Framework = None) -> Array:
     """Solution ``X`` of ``x1 @ X = x2`` for square, non-singular ``x1``.
 
     Args:
@@ -223,18 +234,25 @@ def solve(x1, x2, /, *, f=None):
 
 
 @dispatch
-def svd(x, /, *, full_matrices=True, f=None):
+def svd(x: Array, /, *, full_matrices: bool = True, f: Framework = None) -> SVDResult:
     """Singular value decomposition, a namedtuple ``(U, S, Vh)`` with
     ``x = U @ diag(S) @ Vh``; S descending."""
 
 
 @dispatch
-def svdvals(x, /, *, f=None):
+def svdvals(x: Array, /, *, f: Framework = None) -> Array:
     """Singular values, descending (``[..., M, N]`` -> ``[..., min(M, N)]``)."""
 
 
 @dispatch("x1", "x2")
-def tensordot(x1, x2, /, *, axes=2, f=None):
+def tensordot(
+    x1: Array,
+    x2: Array,
+    /,
+    *,
+    axes: int | tuple[Sequence[int], Sequence[int]] = 2,
+    f: Framework = None,
+) -> Array:
     """Tensor contraction.
 
     Args:
@@ -250,7 +268,9 @@ def tensordot(x1, x2, /, *, axes=2, f=None):
 
 
 @dispatch
-def trace(x, /, *, offset=0, dtype=None, f=None):
+def trace(
+    x: Array, /, *, offset: int = 0, dtype: Dtype | None = None, f: Framework = None
+) -> Array:
     """Sum along a diagonal of the last two axes (``offset`` as in :func:`diagonal`).
 
     With ``dtype=None``, floating inputs keep their dtype, bool and integers narrower than 64
@@ -259,13 +279,21 @@ def trace(x, /, *, offset=0, dtype=None, f=None):
 
 
 @dispatch("x1", "x2")
-def vecdot(x1, x2, /, *, axis=-1, f=None):
+def vecdot(x1: Array, x2: Array, /, *, axis: int = -1, f: Framework = None) -> Array:
     """Dot product of vectors along ``axis``, ``sum(conj(x1) * x2, axis)``; other axes
     broadcast."""
 
 
 @dispatch
-def vector_norm(x, /, *, axis=None, keepdims=False, ord=2, f=None):
+def vector_norm(
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    keepdims: bool = False,
+    ord: int | float = 2,
+    f: Framework = None,
+) -> Array:
     """Vector p-norm over ``axis`` (None: all elements; a tuple: those axes together).
 
     ``ord`` is any real p, ``inf`` or ``-inf``.

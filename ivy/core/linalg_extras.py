@@ -11,6 +11,7 @@ from ivy import nest as _nest
 from ivy.core._by_hand import by_hand
 from ivy.core._dispatch import composition
 from ivy.core._floats import common_floating, floating
+from ivy.typing import Array, Framework, Nest
 
 __all__ = [
     "einsum",
@@ -22,7 +23,7 @@ __all__ = [
 
 
 @by_hand  # ``@dispatch`` stubs take no ``*operands``; every backend implements einsum
-def einsum(equation: str, *operands, f=None):
+def einsum(equation: str, *operands: Array, f: Framework = None) -> Array:
     """Einstein summation over ``operands`` as described by ``equation`` (numpy's notation,
     ``'...'`` for broadcast axes); mixed dtypes promote.
 
@@ -40,7 +41,7 @@ def einsum(equation: str, *operands, f=None):
 
 
 @composition
-def vector_to_skew_symmetric_matrix(vector, /, *, f=None):
+def vector_to_skew_symmetric_matrix(vector: Array, /, *, f: Framework = None) -> Array:
     """The skew-symmetric matrix ``[v]x`` of 3-vectors, with ``[v]x @ u == cross(v, u)``.
 
     Args:
@@ -65,7 +66,9 @@ def vector_to_skew_symmetric_matrix(vector, /, *, f=None):
 
 
 @composition
-def cosine_similarity(x1, x2, /, *, axis=-1, eps=1e-8, f=None):
+def cosine_similarity(
+    x1: Array, x2: Array, /, *, axis: int = -1, eps: float = 1e-8, f: Framework = None
+) -> Array:
     """Cosine of the angle between the vectors of ``x1`` and ``x2`` along ``axis``.
 
     Computed as torch (2.x) defines it, each norm clamped separately:
@@ -99,7 +102,15 @@ def _check_max_norm(max_norm, name):
 
 
 @composition
-def clip_vector_norm(x, max_norm, /, *, axis=None, p=2.0, f=None):
+def clip_vector_norm(
+    x: Array,
+    max_norm: float | Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    p: float = 2.0,
+    f: Framework = None,
+) -> Array:
     """``x`` scaled down so that its ``p``-norm over ``axis`` is at most ``max_norm``.
 
     Where the norm is already within ``max_norm``, ``x`` is unchanged; elsewhere it is multiplied
@@ -126,7 +137,9 @@ def clip_vector_norm(x, max_norm, /, *, axis=None, p=2.0, f=None):
 
 
 @composition
-def clip_by_global_norm(xs, max_norm, /, *, f=None):
+def clip_by_global_norm(
+    xs: Nest, max_norm: float | Array, /, *, f: Framework = None
+) -> tuple[Nest, Array]:
     """Scale every array of the nest ``xs`` by one factor so that their global norm (the
     Euclidean norm of all their elements together) is at most ``max_norm``.
 

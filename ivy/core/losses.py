@@ -11,8 +11,11 @@ stable forms (``softplus``/``log_softmax``); from probabilities, the predictions
 
 from __future__ import annotations
 
+from typing import Literal
+
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition
+from ivy.typing import Array, Framework
 
 __all__ = ["mse", "huber", "binary_cross_entropy", "categorical_cross_entropy"]
 
@@ -33,7 +36,14 @@ def _reduce(xp, loss, reduction):
 
 
 @composition
-def mse(pred, target, /, *, reduction="mean", f=None):
+def mse(
+    pred: Array,
+    target: Array,
+    /,
+    *,
+    reduction: Literal["mean", "sum", "none"] = "mean",
+    f: Framework = None,
+) -> Array:
     """Mean squared error ``(pred - target) ** 2``, reduced.
 
     Args:
@@ -54,7 +64,15 @@ def mse(pred, target, /, *, reduction="mean", f=None):
 
 
 @composition
-def huber(pred, target, /, *, delta=1.0, reduction="mean", f=None):
+def huber(
+    pred: Array,
+    target: Array,
+    /,
+    *,
+    delta: float = 1.0,
+    reduction: Literal["mean", "sum", "none"] = "mean",
+    f: Framework = None,
+) -> Array:
     """Huber loss: ``d**2 / 2`` where ``|d| <= delta``, else ``delta * (|d| - delta / 2)``, with
     ``d = pred - target`` (torch's ``HuberLoss``, tf's ``Huber``).
 
@@ -83,7 +101,16 @@ def huber(pred, target, /, *, delta=1.0, reduction="mean", f=None):
 
 
 @composition
-def binary_cross_entropy(pred, target, /, *, from_logits=False, reduction="mean", eps=1e-7, f=None):
+def binary_cross_entropy(
+    pred: Array,
+    target: Array,
+    /,
+    *,
+    from_logits: bool = False,
+    reduction: Literal["mean", "sum", "none"] = "mean",
+    eps: float = 1e-7,
+    f: Framework = None,
+) -> Array:
     """Binary cross-entropy ``-(t log p + (1 - t) log(1 - p))``, elementwise, reduced.
 
     Args:
@@ -122,8 +149,16 @@ def binary_cross_entropy(pred, target, /, *, from_logits=False, reduction="mean"
 
 @composition
 def categorical_cross_entropy(
-    pred, target, /, *, axis=-1, from_logits=False, reduction="mean", eps=1e-7, f=None
-):
+    pred: Array,
+    target: Array,
+    /,
+    *,
+    axis: int = -1,
+    from_logits: bool = False,
+    reduction: Literal["mean", "sum", "none"] = "mean",
+    eps: float = 1e-7,
+    f: Framework = None,
+) -> Array:
     """Categorical cross-entropy ``-sum(t * log p, axis)`` with one-hot or probability targets.
 
     Args:

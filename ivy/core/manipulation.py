@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from ivy import framework_handler as _fh
 from ivy.core._by_hand import by_hand
 from ivy.core._dispatch import alias, dispatch
+from ivy.typing import Array, Framework, Shape
 
 __all__ = [
     "reshape",
@@ -29,22 +32,22 @@ __all__ = [
 
 
 @dispatch
-def reshape(x, /, shape, *, copy=None, f=None):
+def reshape(x: Array, /, shape: Shape, *, copy: bool | None = None, f: Framework = None) -> Array:
     """``x`` with a new ``shape`` (one entry may be -1)."""
 
 
 @dispatch
-def permute_dims(x, /, axes, *, f=None):
+def permute_dims(x: Array, /, axes: tuple[int, ...], *, f: Framework = None) -> Array:
     """``x`` with its axes reordered: output axis i is input axis ``axes[i]``."""
 
 
 @dispatch
-def transpose(x, /, axes=None, *, f=None):
+def transpose(x: Array, /, axes: tuple[int, ...] | None = None, *, f: Framework = None) -> Array:
     """Paper spelling of :func:`permute_dims`; ``axes=None`` reverses the axes."""
 
 
 @dispatch
-def concat(arrays, /, *, axis=0, f=None):
+def concat(arrays: Sequence[Array], /, *, axis: int | None = 0, f: Framework = None) -> Array:
     """Join a sequence of arrays along an existing ``axis`` (None: flatten first)."""
 
 
@@ -52,17 +55,24 @@ concatenate = alias("concatenate", concat)
 
 
 @dispatch
-def stack(arrays, /, *, axis=0, f=None):
+def stack(arrays: Sequence[Array], /, *, axis: int = 0, f: Framework = None) -> Array:
     """Join a sequence of same-shaped arrays along a new ``axis``."""
 
 
 @dispatch
-def unstack(x, /, *, axis=0, f=None):
+def unstack(x: Array, /, *, axis: int = 0, f: Framework = None) -> tuple[Array, ...]:
     """Tuple of the slices of ``x`` along ``axis`` (the inverse of :func:`stack`)."""
 
 
 @dispatch
-def split(x, /, num_or_size_splits=None, *, axis=0, f=None):
+def split(
+    x: Array,
+    /,
+    num_or_size_splits: int | Sequence[int] | None = None,
+    *,
+    axis: int = 0,
+    f: Framework = None,
+) -> list[Array]:
     """List of pieces of ``x`` along ``axis``.
 
     ``num_or_size_splits`` is a number of equal pieces (must divide the axis), a sequence of piece
@@ -71,47 +81,58 @@ def split(x, /, num_or_size_splits=None, *, axis=0, f=None):
 
 
 @dispatch
-def squeeze(x, /, axis=None, *, f=None):
+def squeeze(
+    x: Array, /, axis: int | tuple[int, ...] | None = None, *, f: Framework = None
+) -> Array:
     """Remove size-1 ``axis`` (an int or tuple; None removes every size-1 axis)."""
 
 
 @dispatch
-def expand_dims(x, /, *, axis=0, f=None):
+def expand_dims(x: Array, /, *, axis: int = 0, f: Framework = None) -> Array:
     """Insert a size-1 axis at position ``axis``."""
 
 
 @dispatch
-def flip(x, /, *, axis=None, f=None):
+def flip(x: Array, /, *, axis: int | tuple[int, ...] | None = None, f: Framework = None) -> Array:
     """Reverse the order of elements along ``axis`` (None: every axis)."""
 
 
 @dispatch
-def tile(x, repetitions, /, *, f=None):
+def tile(x: Array, repetitions: tuple[int, ...], /, *, f: Framework = None) -> Array:
     """Repeat the whole of ``x`` ``repetitions[i]`` times along axis i."""
 
 
 @dispatch
-def repeat(x, repeats, /, *, axis=None, f=None):
+def repeat(
+    x: Array, repeats: int | Array, /, *, axis: int | None = None, f: Framework = None
+) -> Array:
     """Repeat each element ``repeats`` times along ``axis`` (None: flatten first)."""
 
 
 @dispatch
-def roll(x, /, shift, *, axis=None, f=None):
+def roll(
+    x: Array,
+    /,
+    shift: int | tuple[int, ...],
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    f: Framework = None,
+) -> Array:
     """Shift elements cyclically by ``shift`` along ``axis`` (None: flattened)."""
 
 
 @dispatch
-def swapaxes(x, axis0, axis1, /, *, f=None):
+def swapaxes(x: Array, axis0: int, axis1: int, /, *, f: Framework = None) -> Array:
     """Exchange two axes of ``x``."""
 
 
 @dispatch
-def broadcast_to(x, /, shape, *, f=None):
+def broadcast_to(x: Array, /, shape: Shape, *, f: Framework = None) -> Array:
     """Broadcast ``x`` to ``shape``."""
 
 
 @by_hand
-def broadcast_arrays(*arrays, f=None):
+def broadcast_arrays(*arrays: Array, f: Framework = None) -> list[Array]:
     """List of ``arrays`` broadcast against each other to one shape.
 
     Example: ``[a.shape for a in ivy.broadcast_arrays(np.ones((2, 1)), np.ones(3))]`` ->
@@ -121,6 +142,13 @@ def broadcast_arrays(*arrays, f=None):
 
 
 @dispatch
-def moveaxis(x, source, destination, /, *, f=None):
+def moveaxis(
+    x: Array,
+    source: int | tuple[int, ...],
+    destination: int | tuple[int, ...],
+    /,
+    *,
+    f: Framework = None,
+) -> Array:
     """``x`` with axes ``source`` (an int or tuple) moved to positions ``destination``, the other
     axes keeping their order."""

@@ -178,8 +178,10 @@ def horner(x: Array, coeffs: Sequence[float], /, *, f: Framework = None) -> Arra
     """
     if len(coeffs) == 0:
         raise ValueError("horner: coeffs is empty; give at least one coefficient.")
-    acc = x * 0 + coeffs[-1]
-    for c in reversed(coeffs[:-1]):
+    if len(coeffs) == 1:
+        return x * 0 + coeffs[0]
+    acc = x * coeffs[-1] + coeffs[-2]
+    for c in reversed(coeffs[:-2]):
         acc = acc * x + c
     return acc
 
@@ -188,12 +190,12 @@ def horner(x: Array, coeffs: Sequence[float], /, *, f: Framework = None) -> Arra
 def taylor_switch(
     x_sq: Array,
     series: Sequence[float] | Sequence[Sequence[float]],
-    exact: Callable,
+    exact: Callable[[Array], Array | tuple[Array, ...]],
     /,
     *,
     threshold: float = SMALL_SQ,
     f: Framework = None,
-):
+) -> Array | tuple[Array, ...]:
     """A function of ``x`` that is singular-looking at 0 (``sin(x) / x``, ``(1 - cos x) / x**2``),
     computed from ``x_sq = x**2`` exactly everywhere, with exact gradients at 0.
 

@@ -2,14 +2,19 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition, dispatch
+from ivy.typing import Array, Framework, Scalar
 
 __all__ = ["constant_pad", "zero_pad"]
 
 
 @dispatch
-def constant_pad(x, /, pad_width, *, value=0, f=None):
+def constant_pad(
+    x: Array, /, pad_width: Sequence[tuple[int, int]], *, value: Scalar = 0, f: Framework = None
+) -> Array:
     """Pad ``x`` with ``value`` at both ends of each axis.
 
     Args:
@@ -25,7 +30,7 @@ def constant_pad(x, /, pad_width, *, value=0, f=None):
 
 
 @composition
-def zero_pad(x, /, pad_width, *, f=None):
+def zero_pad(x: Array, /, pad_width: Sequence[tuple[int, int]], *, f: Framework = None) -> Array:
     """Pad ``x`` with zeros: :func:`constant_pad` with ``value=0``.
 
     Example: ``ivy.zero_pad(np.ones((1, 1)), [(0, 1), (1, 0)])`` -> ``[[0., 1.], [0., 0.]]``.

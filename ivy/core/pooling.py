@@ -16,13 +16,24 @@ CPU lacks, run as a 2-D then a 1-D pool), numpy explicit sliding windows.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from ivy.core._dispatch import dispatch
+from ivy.typing import Array, Framework
 
 __all__ = ["max_pool1d", "max_pool2d", "max_pool3d", "avg_pool1d", "avg_pool2d", "avg_pool3d"]
 
 
 @dispatch
-def max_pool1d(x, kernel, strides, padding, /, *, f=None):
+def max_pool1d(
+    x: Array,
+    kernel: int | Sequence[int],
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    f: Framework = None,
+) -> Array:
     """Maximum over sliding windows of ``x`` ``[N, W, C]``.
 
     Args:
@@ -41,7 +52,15 @@ def max_pool1d(x, kernel, strides, padding, /, *, f=None):
 
 
 @dispatch
-def max_pool2d(x, kernel, strides, padding, /, *, f=None):
+def max_pool2d(
+    x: Array,
+    kernel: int | Sequence[int],
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    f: Framework = None,
+) -> Array:
     """Maximum over sliding windows of ``x`` ``[N, H, W, C]``.
 
     Args:
@@ -60,7 +79,15 @@ def max_pool2d(x, kernel, strides, padding, /, *, f=None):
 
 
 @dispatch
-def max_pool3d(x, kernel, strides, padding, /, *, f=None):
+def max_pool3d(
+    x: Array,
+    kernel: int | Sequence[int],
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    f: Framework = None,
+) -> Array:
     """Maximum over sliding windows of ``x`` ``[N, D, H, W, C]``.
 
     Args:
@@ -79,7 +106,15 @@ def max_pool3d(x, kernel, strides, padding, /, *, f=None):
 
 
 @dispatch
-def avg_pool1d(x, kernel, strides, padding, /, *, f=None):
+def avg_pool1d(
+    x: Array,
+    kernel: int | Sequence[int],
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    f: Framework = None,
+) -> Array:
     """Mean over sliding windows of ``x`` ``[N, W, C]``; padding is not counted.
 
     Args:
@@ -98,7 +133,15 @@ def avg_pool1d(x, kernel, strides, padding, /, *, f=None):
 
 
 @dispatch
-def avg_pool2d(x, kernel, strides, padding, /, *, f=None):
+def avg_pool2d(
+    x: Array,
+    kernel: int | Sequence[int],
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    f: Framework = None,
+) -> Array:
     """Mean over sliding windows of ``x`` ``[N, H, W, C]``; padding is not counted.
 
     Args:
@@ -117,7 +160,15 @@ def avg_pool2d(x, kernel, strides, padding, /, *, f=None):
 
 
 @dispatch
-def avg_pool3d(x, kernel, strides, padding, /, *, f=None):
+def avg_pool3d(
+    x: Array,
+    kernel: int | Sequence[int],
+    strides: int | Sequence[int],
+    padding: str | int | Sequence[int | tuple[int, int]],
+    /,
+    *,
+    f: Framework = None,
+) -> Array:
     """Mean over sliding windows of ``x`` ``[N, D, H, W, C]``; padding is not counted.
 
     Args:

@@ -31,13 +31,14 @@ from __future__ import annotations
 
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import dispatch
+from ivy.typing import Array, Device, Dtype, Framework, Shape
 
 __all__ = ["seed", "random_uniform", "random_normal", "randint", "shuffle", "random_categorical"]
 
 _seed_value: list[int | None] = [None]
 
 
-def seed(seed_value: int = 0, *, f=None) -> None:
+def seed(seed_value: int = 0, *, f: Framework = None) -> None:
     """Seed the random generators so that re-runs draw the same numbers, eager and compiled.
 
     With ``f`` only that backend is seeded; otherwise every loaded backend, and backends loaded
@@ -69,27 +70,53 @@ _fh.on_backend_load(_seed_on_load)
 
 
 @dispatch("low", "high")
-def random_uniform(low=0.0, high=1.0, shape=None, *, dtype=None, device=None, f=None):
+def random_uniform(
+    low: float | Array = 0.0,
+    high: float | Array = 1.0,
+    shape: int | Shape | None = None,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Samples from U[low, high) of ``shape`` (default: the broadcast shape of the bounds)."""
 
 
 @dispatch("mean", "std")
-def random_normal(mean=0.0, std=1.0, shape=None, *, dtype=None, device=None, f=None):
+def random_normal(
+    mean: float | Array = 0.0,
+    std: float | Array = 1.0,
+    shape: int | Shape | None = None,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Samples from N(mean, std**2) of ``shape`` (default: the broadcast shape of the bounds)."""
 
 
 @dispatch("low", "high")
-def randint(low, high, shape=None, *, dtype=None, device=None, f=None):
+def randint(
+    low: int | Array,
+    high: int | Array,
+    shape: int | Shape | None = None,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Integers from [low, high) of ``shape``; int64 by default."""
 
 
 @dispatch
-def shuffle(x, /, *, f=None):
+def shuffle(x: Array, /, *, f: Framework = None) -> Array:
     """``x`` with its first axis randomly permuted."""
 
 
 @dispatch
-def random_categorical(logits, /, *, num_samples=1, dtype=None, f=None):
+def random_categorical(
+    logits: Array, /, *, num_samples: int = 1, dtype: Dtype | None = None, f: Framework = None
+) -> Array:
     """Class indices drawn from the categorical distributions ``softmax(logits)`` along the last
     axis, with replacement; batched over the leading axes.
 

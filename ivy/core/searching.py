@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+from typing import Literal
+
 from ivy.core._dispatch import dispatch
+from ivy.typing import Array, Framework, Scalar
 
 __all__ = [
     "argmax",
@@ -15,35 +18,56 @@ __all__ = [
 
 
 @dispatch
-def argmax(x, /, *, axis=None, keepdims=False, f=None):
+def argmax(
+    x: Array, /, *, axis: int | None = None, keepdims: bool = False, f: Framework = None
+) -> Array:
     """Index (int64) of the first maximum over ``axis``, or of the flattened array if None."""
 
 
 @dispatch
-def argmin(x, /, *, axis=None, keepdims=False, f=None):
+def argmin(
+    x: Array, /, *, axis: int | None = None, keepdims: bool = False, f: Framework = None
+) -> Array:
     """Index (int64) of the first minimum over ``axis``, or of the flattened array if None."""
 
 
 @dispatch("condition", "x1", "x2")
-def where(condition, x1, x2, /, *, f=None):
+def where(
+    condition: Array, x1: Array | Scalar, x2: Array | Scalar, /, *, f: Framework = None
+) -> Array:
     """Elements of ``x1`` where ``condition`` is true, else of ``x2`` (all broadcast)."""
 
 
 @dispatch
-def count_nonzero(x, /, *, axis=None, keepdims=False, f=None):
+def count_nonzero(
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """Number (int64) of nonzero elements over ``axis`` (NaN counts as nonzero; Array API
     2024.12)."""
 
 
 @dispatch
-def nonzero(x, /, *, f=None):
+def nonzero(x: Array, /, *, f: Framework = None) -> tuple[Array, ...]:
     """Tuple of int64 index arrays, one per axis, of the nonzero elements of ``x`` in row-major
     order. ``x`` must have at least one axis. Inside ``jax.jit`` it raises
     :class:`ivy.errors.UnsupportedError` (the result's size depends on the values)."""
 
 
 @dispatch("x1", "x2")
-def searchsorted(x1, x2, /, *, side="left", sorter=None, f=None):
+def searchsorted(
+    x1: Array,
+    x2: Array,
+    /,
+    *,
+    side: Literal["left", "right"] = "left",
+    sorter: Array | None = None,
+    f: Framework = None,
+) -> Array:
     """Indices (int64) where the values ``x2`` would be inserted into the sorted 1-D ``x1``
     (sorted by the indices ``sorter`` when given) to keep it sorted: before equal values with
     ``side='left'``, after them with ``'right'``."""

@@ -9,12 +9,14 @@ are int64 (jax without x64: int32). The size of the results depends on the value
 from __future__ import annotations
 
 from ivy.core._dispatch import dispatch
+from ivy.core._results import UniqueAllResult, UniqueCountsResult, UniqueInverseResult
+from ivy.typing import Array, Framework
 
 __all__ = ["unique_all", "unique_counts", "unique_inverse", "unique_values"]
 
 
 @dispatch
-def unique_all(x, /, *, f=None):
+def unique_all(x: Array, /, *, f: Framework = None) -> UniqueAllResult:
     """Named tuple ``(values, indices, inverse_indices, counts)``: the sorted unique values, the
     index of the first occurrence of each in the flattened ``x``, the index into ``values`` of
     each element of ``x`` (shaped like ``x``), and how often each occurs.
@@ -24,16 +26,16 @@ def unique_all(x, /, *, f=None):
 
 
 @dispatch
-def unique_counts(x, /, *, f=None):
+def unique_counts(x: Array, /, *, f: Framework = None) -> UniqueCountsResult:
     """Named tuple ``(values, counts)``: the sorted unique values and how often each occurs."""
 
 
 @dispatch
-def unique_inverse(x, /, *, f=None):
+def unique_inverse(x: Array, /, *, f: Framework = None) -> UniqueInverseResult:
     """Named tuple ``(values, inverse_indices)``: the sorted unique values, and the index into
     ``values`` of each element of ``x`` (shaped like ``x``)."""
 
 
 @dispatch
-def unique_values(x, /, *, f=None):
+def unique_values(x: Array, /, *, f: Framework = None) -> Array:
     """The sorted unique values of ``x`` (flattened)."""

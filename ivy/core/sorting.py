@@ -8,12 +8,22 @@ too.
 from __future__ import annotations
 
 from ivy.core._dispatch import dispatch
+from ivy.core._results import TopKResult
+from ivy.typing import Array, Framework
 
 __all__ = ["argsort", "sort", "top_k"]
 
 
 @dispatch
-def argsort(x, /, *, axis=-1, descending=False, stable=True, f=None):
+def argsort(
+    x: Array,
+    /,
+    *,
+    axis: int = -1,
+    descending: bool = False,
+    stable: bool = True,
+    f: Framework = None,
+) -> Array:
     """Indices (int64) that sort ``x`` along ``axis``.
 
     Example: ``ivy.argsort(np.array([3., 1., 2.]))`` -> ``[1, 2, 0]``.
@@ -21,7 +31,15 @@ def argsort(x, /, *, axis=-1, descending=False, stable=True, f=None):
 
 
 @dispatch
-def sort(x, /, *, axis=-1, descending=False, stable=True, f=None):
+def sort(
+    x: Array,
+    /,
+    *,
+    axis: int = -1,
+    descending: bool = False,
+    stable: bool = True,
+    f: Framework = None,
+) -> Array:
     """A sorted copy of ``x`` along ``axis``.
 
     Example: ``ivy.sort(np.array([3., 1., 2.]), descending=True)`` -> ``[3., 2., 1.]``.
@@ -29,7 +47,16 @@ def sort(x, /, *, axis=-1, descending=False, stable=True, f=None):
 
 
 @dispatch
-def top_k(x, k, /, *, axis=-1, largest=True, sorted=True, f=None):
+def top_k(
+    x: Array,
+    k: int,
+    /,
+    *,
+    axis: int = -1,
+    largest: bool = True,
+    sorted: bool = True,
+    f: Framework = None,
+) -> TopKResult:
     """The ``k`` largest (or smallest) elements of ``x`` along ``axis`` and their indices.
 
     Elements are ordered as :func:`sort` orders them: NaN is the largest value and -0.0 equals

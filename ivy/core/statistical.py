@@ -10,10 +10,13 @@ import builtins
 import math
 import numbers
 import operator
+from collections.abc import Sequence
+from typing import Literal
 
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition, dispatch
 from ivy.core._floats import floating
+from ivy.typing import Array, Dtype, Framework
 
 __all__ = [
     "sum",
@@ -32,42 +35,103 @@ __all__ = [
 
 
 @dispatch
-def sum(x, /, *, axis=None, dtype=None, keepdims=False, f=None):
+def sum(
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    dtype: Dtype | None = None,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """Sum of ``x`` over ``axis``. Example: ``ivy.sum(np.ones((2, 3)), axis=1)`` -> [3., 3.]."""
 
 
 @dispatch
-def prod(x, /, *, axis=None, dtype=None, keepdims=False, f=None):
+def prod(
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    dtype: Dtype | None = None,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """Product of ``x`` over ``axis``."""
 
 
 @dispatch
-def mean(x, /, *, axis=None, keepdims=False, f=None):
+def mean(
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """Arithmetic mean of a floating ``x`` over ``axis``."""
 
 
 @dispatch
-def min(x, /, *, axis=None, keepdims=False, f=None):
+def min(
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """Minimum of ``x`` over ``axis`` (nan propagates)."""
 
 
 @dispatch
-def max(x, /, *, axis=None, keepdims=False, f=None):
+def max(
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """Maximum of ``x`` over ``axis`` (nan propagates)."""
 
 
 @dispatch
-def var(x, /, *, axis=None, correction=0.0, keepdims=False, f=None):
+def var(
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    correction: float = 0.0,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """Variance over ``axis``, dividing by ``N - correction`` (1 gives the sample variance)."""
 
 
 @dispatch
-def std(x, /, *, axis=None, correction=0.0, keepdims=False, f=None):
+def std(
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    correction: float = 0.0,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """Standard deviation over ``axis``, dividing by ``N - correction``."""
 
 
 @dispatch
-def cumulative_sum(x, /, *, axis=None, dtype=None, include_initial=False, f=None):
+def cumulative_sum(
+    x: Array,
+    /,
+    *,
+    axis: int | None = None,
+    dtype: Dtype | None = None,
+    include_initial: bool = False,
+    f: Framework = None,
+) -> Array:
     """Running sums along ``axis`` (None only for 1-D ``x``), starting with 0 when
     ``include_initial``. Bools and signed integers accumulate in int64, unsigned ones in uint64.
 
@@ -76,13 +140,28 @@ def cumulative_sum(x, /, *, axis=None, dtype=None, include_initial=False, f=None
 
 
 @dispatch
-def cumulative_prod(x, /, *, axis=None, dtype=None, include_initial=False, f=None):
+def cumulative_prod(
+    x: Array,
+    /,
+    *,
+    axis: int | None = None,
+    dtype: Dtype | None = None,
+    include_initial: bool = False,
+    f: Framework = None,
+) -> Array:
     """Running products along ``axis`` (None only for 1-D ``x``), starting with 1 when
     ``include_initial``; dtypes as :func:`cumulative_sum` (Array API 2024.12)."""
 
 
 @dispatch
-def logsumexp(x, /, *, axis=None, keepdims=False, f=None):
+def logsumexp(
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """``log(sum(exp(x)))`` over ``axis``, computed stably (shifted by the maximum).
 
     Infinities give the limits: all ``-inf`` (or no element) gives ``-inf``, any ``+inf`` gives
@@ -147,7 +226,14 @@ def _keep_dims(xp, out, axes, lead):
 
 
 @composition
-def median(x, /, *, axis=None, keepdims=False, f=None):
+def median(
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """Median of ``x`` over ``axis``: the middle element, or the mean of the two middle ones, as
     ``numpy.median`` computes it.
 
@@ -212,7 +298,16 @@ def _positions_from_array(xp, q, n, method):
 
 
 @composition
-def quantile(x, q, /, *, axis=None, keepdims=False, method="linear", f=None):
+def quantile(
+    x: Array,
+    q: float | Sequence[float] | Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    keepdims: bool = False,
+    method: Literal["linear", "lower", "higher", "nearest", "midpoint"] = "linear",
+    f: Framework = None,
+) -> Array:
     """The ``q``-th quantiles of ``x`` over ``axis``, as ``numpy.quantile`` computes them.
 
     With the ``n`` values sorted, quantile ``q`` lies at position ``p = q * (n - 1)``:

@@ -5,24 +5,48 @@ from __future__ import annotations
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition, dispatch
 from ivy.core._floats import common_floating
+from ivy.typing import Array, Framework, Scalar
 
 __all__ = ["all", "any", "diff", "isclose", "allclose"]
 
 
 @dispatch
-def all(x, /, *, axis=None, keepdims=False, f=None):  # noqa: A001 - the Array API name
+def all(  # noqa: A001 - the Array API name
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """True where every element over ``axis`` is nonzero (NaN counts as nonzero); True for an
     empty reduction."""
 
 
 @dispatch
-def any(x, /, *, axis=None, keepdims=False, f=None):  # noqa: A001 - the Array API name
+def any(  # noqa: A001 - the Array API name
+    x: Array,
+    /,
+    *,
+    axis: int | tuple[int, ...] | None = None,
+    keepdims: bool = False,
+    f: Framework = None,
+) -> Array:
     """True where some element over ``axis`` is nonzero (NaN counts as nonzero); False for an
     empty reduction."""
 
 
 @dispatch
-def diff(x, /, *, axis=-1, n=1, prepend=None, append=None, f=None):
+def diff(
+    x: Array,
+    /,
+    *,
+    axis: int = -1,
+    n: int = 1,
+    prepend: Array | None = None,
+    append: Array | None = None,
+    f: Framework = None,
+) -> Array:
     """The ``n``-th forward difference along ``axis`` (``x[i+1] - x[i]``; for bools, ``!=``),
     after joining ``prepend`` before and ``append`` after ``x`` along that axis.
 
@@ -31,7 +55,16 @@ def diff(x, /, *, axis=-1, n=1, prepend=None, append=None, f=None):
 
 
 @composition
-def isclose(x1, x2, /, *, rtol=1e-05, atol=1e-08, equal_nan=False, f=None):
+def isclose(
+    x1: Array | Scalar,
+    x2: Array | Scalar,
+    /,
+    *,
+    rtol: float = 1e-05,
+    atol: float = 1e-08,
+    equal_nan: bool = False,
+    f: Framework = None,
+) -> Array:
     """Where ``x1`` and ``x2`` are equal within a tolerance, as ``numpy.isclose``:
     ``|x1 - x2| <= atol + rtol * |x2|`` for finite ``x2``, or ``x1 == x2`` (so infinities of the
     same sign are close), or both NaN with ``equal_nan``.
@@ -67,7 +100,16 @@ def isclose(x1, x2, /, *, rtol=1e-05, atol=1e-08, equal_nan=False, f=None):
 
 
 @composition
-def allclose(x1, x2, /, *, rtol=1e-05, atol=1e-08, equal_nan=False, f=None):
+def allclose(
+    x1: Array | Scalar,
+    x2: Array | Scalar,
+    /,
+    *,
+    rtol: float = 1e-05,
+    atol: float = 1e-08,
+    equal_nan: bool = False,
+    f: Framework = None,
+) -> Array:
     """Whether every element of ``x1`` is close to the corresponding element of ``x2``, as
     :func:`isclose` decides (``numpy.allclose``).
 

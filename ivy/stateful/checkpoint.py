@@ -15,13 +15,14 @@ from typing import Any
 
 from ivy import framework_handler as _fh
 from ivy.errors import NoFrameworkError
+from ivy.typing import Device, Framework, Nest
 
 __all__ = ["save_weights", "load_weights", "nest_to_flat_dict", "flat_dict_to_nest"]
 
 SEPARATOR = "/"
 
 
-def nest_to_flat_dict(nest: Any) -> dict[str, Any]:
+def nest_to_flat_dict(nest: Nest) -> dict[str, Any]:
     """``{'a/b': leaf}`` for every leaf of a nest of dicts (and lists or tuples, by index).
 
     Example:
@@ -67,7 +68,7 @@ def flat_dict_to_nest(flat: dict[str, Any]) -> dict[str, Any]:
     return nest
 
 
-def save_weights(path: str | os.PathLike, v: Any) -> None:
+def save_weights(path: str | os.PathLike, v: Nest) -> None:
     """Save a nest of arrays of any backend to the ``.npz`` file ``path`` (exactly that name).
 
     Args:
@@ -89,7 +90,11 @@ def save_weights(path: str | os.PathLike, v: Any) -> None:
 
 
 def load_weights(
-    path: str | os.PathLike, *, like: Any = None, device: Any = None, f: Any = None
+    path: str | os.PathLike,
+    *,
+    like: Nest | None = None,
+    device: Device | None = None,
+    f: Framework = None,
 ) -> dict[str, Any]:
     """Load a checkpoint written by :func:`save_weights` on any backend.
 

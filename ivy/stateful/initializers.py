@@ -13,10 +13,11 @@ Example:
 from __future__ import annotations
 
 import math
-from typing import Any
+from collections.abc import Callable
 
 from ivy import framework_handler as _fh
 from ivy.stateful.module import default_fans
+from ivy.typing import Array, Device, Dtype, Framework, Shape
 
 __all__ = [
     "zeros",
@@ -39,7 +40,15 @@ def _dtype(dtype):
     return "float32" if dtype is None else dtype
 
 
-def zeros(shape, *, fan_in=None, fan_out=None, dtype=None, device=None, f=None):
+def zeros(
+    shape: Shape,
+    *,
+    fan_in: int | None = None,
+    fan_out: int | None = None,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Zeros of ``shape`` (the usual bias initializer).
 
     Returns:
@@ -48,12 +57,20 @@ def zeros(shape, *, fan_in=None, fan_out=None, dtype=None, device=None, f=None):
     return _fh.get_framework(f=f).zeros(tuple(shape), dtype=_dtype(dtype), device=device)
 
 
-def ones(shape, *, fan_in=None, fan_out=None, dtype=None, device=None, f=None):
+def ones(
+    shape: Shape,
+    *,
+    fan_in: int | None = None,
+    fan_out: int | None = None,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Ones of ``shape``. Example: ``ones((4,), f='jax')``."""
     return _fh.get_framework(f=f).ones(tuple(shape), dtype=_dtype(dtype), device=device)
 
 
-def constant(value: float):
+def constant(value: float) -> Callable[..., Array]:
     """An initializer that fills with ``value``.
 
     Example:
@@ -78,7 +95,15 @@ def _normal(std, shape, dtype, device, f):
     return xp.random_normal(0.0, std, tuple(shape), dtype=_dtype(dtype), device=device)
 
 
-def glorot_uniform(shape, *, fan_in=None, fan_out=None, dtype=None, device=None, f=None):
+def glorot_uniform(
+    shape: Shape,
+    *,
+    fan_in: int | None = None,
+    fan_out: int | None = None,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Glorot (Xavier) uniform: U(-a, a) with ``a = sqrt(6 / (fan_in + fan_out))``.
 
     Args:
@@ -93,13 +118,29 @@ def glorot_uniform(shape, *, fan_in=None, fan_out=None, dtype=None, device=None,
     return _uniform(math.sqrt(6.0 / (fan_in + fan_out)), shape, dtype, device, f)
 
 
-def glorot_normal(shape, *, fan_in=None, fan_out=None, dtype=None, device=None, f=None):
+def glorot_normal(
+    shape: Shape,
+    *,
+    fan_in: int | None = None,
+    fan_out: int | None = None,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """Glorot (Xavier) normal: N(0, 2 / (fan_in + fan_out)). Arguments as :func:`glorot_uniform`."""
     fan_in, fan_out = _fans(shape, fan_in, fan_out)
     return _normal(math.sqrt(2.0 / (fan_in + fan_out)), shape, dtype, device, f)
 
 
-def he_uniform(shape, *, fan_in=None, fan_out=None, dtype=None, device=None, f=None):
+def he_uniform(
+    shape: Shape,
+    *,
+    fan_in: int | None = None,
+    fan_out: int | None = None,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """He (Kaiming) uniform for ReLU layers: U(-a, a) with ``a = sqrt(6 / fan_in)``.
 
     Arguments as :func:`glorot_uniform`. Example: ``he_uniform((256, 128), f='jax')``.
@@ -108,15 +149,30 @@ def he_uniform(shape, *, fan_in=None, fan_out=None, dtype=None, device=None, f=N
     return _uniform(math.sqrt(6.0 / fan_in), shape, dtype, device, f)
 
 
-def he_normal(shape, *, fan_in=None, fan_out=None, dtype=None, device=None, f=None):
+def he_normal(
+    shape: Shape,
+    *,
+    fan_in: int | None = None,
+    fan_out: int | None = None,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """He (Kaiming) normal for ReLU layers: N(0, 2 / fan_in). Arguments as :func:`glorot_uniform`."""
     fan_in, _ = _fans(shape, fan_in, fan_out)
     return _normal(math.sqrt(2.0 / fan_in), shape, dtype, device, f)
 
 
 def orthogonal(
-    shape, *, gain: float = 1.0, fan_in=None, fan_out=None, dtype=None, device=None, f=None
-) -> Any:
+    shape: Shape,
+    *,
+    gain: float = 1.0,
+    fan_in: int | None = None,
+    fan_out: int | None = None,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
     """A random orthogonal matrix (Haar distributed), times ``gain``.
 
     The shape is read as a matrix ``[prod(shape[:-1]), shape[-1]]``; its rows (if fewer) or its

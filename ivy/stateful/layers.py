@@ -15,6 +15,7 @@ from typing import Any
 from ivy import framework_handler as _fh
 from ivy.stateful.initializers import glorot_uniform, orthogonal, zeros
 from ivy.stateful.module import Module
+from ivy.typing import Device, Dtype, Framework
 
 __all__ = ["Linear", "MLP", "Conv", "Conv1D", "Conv2D", "Conv3D", "LSTM", "Sequential"]
 
@@ -59,9 +60,9 @@ class Linear(Module):
         bias: bool = True,
         weight_init: Callable = glorot_uniform,
         bias_init: Callable = zeros,
-        dtype: Any = None,
-        device: Any = None,
-        f: Any = None,
+        dtype: Dtype | None = None,
+        device: Device | None = None,
+        f: Framework = None,
     ) -> None:
         super().__init__(dtype=dtype, device=device, f=f)
         self.in_features = in_features
@@ -107,9 +108,9 @@ class MLP(Module):
         bias: bool = True,
         weight_init: Callable = glorot_uniform,
         bias_init: Callable = zeros,
-        dtype: Any = None,
-        device: Any = None,
-        f: Any = None,
+        dtype: Dtype | None = None,
+        device: Device | None = None,
+        f: Framework = None,
     ) -> None:
         super().__init__(dtype=dtype, device=device, f=f)
         sizes = [in_features, *hidden_features, out_features]
@@ -168,9 +169,9 @@ class Conv(Module):
         bias: bool = True,
         weight_init: Callable = glorot_uniform,
         bias_init: Callable = zeros,
-        dtype: Any = None,
-        device: Any = None,
-        f: Any = None,
+        dtype: Dtype | None = None,
+        device: Device | None = None,
+        f: Framework = None,
     ) -> None:
         if dims not in (1, 2, 3):
             raise ValueError(f"Conv supports 1, 2 or 3 spatial dimensions, got dims={dims}")
@@ -204,7 +205,9 @@ class Conv1D(Conv):
     Example: ``ivy.Conv1D(4, 8, 5, f='jax')(jnp.ones((2, 32, 4))).shape == (2, 32, 8)``.
     """
 
-    def __init__(self, in_channels, out_channels, kernel_size, **kwargs) -> None:
+    def __init__(
+        self, in_channels: int, out_channels: int, kernel_size: int | Sequence[int], **kwargs: Any
+    ) -> None:
         super().__init__(1, in_channels, out_channels, kernel_size, **kwargs)
 
 
@@ -214,7 +217,9 @@ class Conv2D(Conv):
     Example: ``ivy.Conv2D(3, 8, 3, f='torch')(torch.ones(2, 16, 16, 3)).shape == (2, 16, 16, 8)``.
     """
 
-    def __init__(self, in_channels, out_channels, kernel_size, **kwargs) -> None:
+    def __init__(
+        self, in_channels: int, out_channels: int, kernel_size: int | Sequence[int], **kwargs: Any
+    ) -> None:
         super().__init__(2, in_channels, out_channels, kernel_size, **kwargs)
 
 
@@ -224,7 +229,9 @@ class Conv3D(Conv):
     Example: ``ivy.Conv3D(1, 4, 3, f='numpy')(np.ones((1, 8, 8, 8, 1), 'float32'))``.
     """
 
-    def __init__(self, in_channels, out_channels, kernel_size, **kwargs) -> None:
+    def __init__(
+        self, in_channels: int, out_channels: int, kernel_size: int | Sequence[int], **kwargs: Any
+    ) -> None:
         super().__init__(3, in_channels, out_channels, kernel_size, **kwargs)
 
 
@@ -294,9 +301,9 @@ class LSTM(Module):
         kernel_init: Callable = glorot_uniform,
         recurrent_init: Callable = orthogonal,
         bias_init: Callable = zeros,
-        dtype: Any = None,
-        device: Any = None,
-        f: Any = None,
+        dtype: Dtype | None = None,
+        device: Device | None = None,
+        f: Framework = None,
     ) -> None:
         super().__init__(dtype=dtype, device=device, f=f)
         self.in_features = in_features
@@ -345,7 +352,13 @@ class Sequential(Module):
         ['0', '2']
     """
 
-    def __init__(self, *layers: Module | Callable | str, dtype=None, device=None, f=None) -> None:
+    def __init__(
+        self,
+        *layers: Module | Callable | str,
+        dtype: Dtype | None = None,
+        device: Device | None = None,
+        f: Framework = None,
+    ) -> None:
         modules = [m for m in layers if isinstance(m, Module)]
         if f is None and _fh.current_framework() is None and modules:
             f = modules[0].f

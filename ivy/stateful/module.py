@@ -9,17 +9,19 @@ state, so it can run inside ``ivy.execute_with_gradients``, ``ivy.compile_fn`` o
 from __future__ import annotations
 
 import math
+import os
 import types
 from collections.abc import Callable
 from typing import Any
 
 from ivy import framework_handler as _fh
 from ivy.errors import MixedFrameworksError, NoFrameworkError
+from ivy.typing import Array, Device, Dtype, Framework, Shape
 
 __all__ = ["Module", "resolve_framework", "default_fans"]
 
 
-def resolve_framework(f: Any = None, dtype: Any = None) -> types.ModuleType:
+def resolve_framework(f: Framework = None, dtype: Dtype | None = None) -> types.ModuleType:
     """The backend namespace a module is built for.
 
     Priority: an explicit ``f`` > the globally set framework > the framework that owns ``dtype``
@@ -54,7 +56,7 @@ def resolve_framework(f: Any = None, dtype: Any = None) -> types.ModuleType:
     )
 
 
-def default_fans(shape: tuple[int, ...]) -> tuple[int, int]:
+def default_fans(shape: Shape) -> tuple[int, int]:
     """``(fan_in, fan_out)`` of a weight of ``shape`` in ivy's layouts.
 
     2-D weights are ``[out, in]`` (as for ``ivy.linear``); weights of 3 or more dimensions are
@@ -108,7 +110,9 @@ class Module:
         array([1., 1., 1.], dtype=float32)
     """
 
-    def __init__(self, *, dtype: Any = None, device: Any = None, f: Any = None) -> None:
+    def __init__(
+        self, *, dtype: Dtype | None = None, device: Device | None = None, f: Framework = None
+    ) -> None:
         d = self.__dict__
         d["_f"] = resolve_framework(f, dtype)
         d["_dtype"] = "float32" if dtype is None else dtype
@@ -126,12 +130,12 @@ class Module:
         return self._f
 
     @property
-    def dtype(self) -> Any:
+    def dtype(self) -> Dtype:
         """The dtype its variables were created with."""
         return self._dtype
 
     @property
-    def device(self) -> Any:
+    def device(self) -> Device | None:
         """The device its variables were created on (None: the backend's default)."""
         return self._device
 
@@ -143,12 +147,12 @@ class Module:
     def add_variable(
         self,
         name: str,
-        initializer: Callable,
-        shape: tuple[int, ...],
+        initializer: Callable[..., Array],
+        shape: Shape,
         *,
         fan_in: int | None = None,
         fan_out: int | None = None,
-    ) -> Any:
+    ) -> Array:
         """Create a variable with ``initializer`` and store it in ``v`` under ``name``.
 
         The initializer is called as ``initializer(shape, fan_in=, fan_out=, dtype=, device=,
@@ -272,7 +276,7 @@ class Module:
     # Saving and loading
     # ------------------------------------------------------------------------------------------
 
-    def save(self, path: Any) -> None:
+    def save(self, path: str | os.PathLike) -> None:
         """Write the variables to a portable ``.npz`` checkpoint that any backend can load.
 
         Example:
@@ -282,7 +286,7 @@ class Module:
 
         save_weights(path, self.v)
 
-    def load(self, path: Any) -> Module:
+    def load(self, path: str | os.PathLike) -> Module:
         """Replace the variables by those of a checkpoint written on any backend.
 
         Keys and shapes must match; values are converted to this module's framework and to the

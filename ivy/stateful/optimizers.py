@@ -19,6 +19,8 @@ from typing import Any
 import ivy
 from ivy import framework_handler as _fh
 from ivy.nest import flatten_nest, map_nest, multi_map_nest, unflatten_nest
+from ivy.stateful.module import Module
+from ivy.typing import Framework, Nest
 
 __all__ = ["Optimizer", "SGD", "Adam", "AdamW"]
 
@@ -37,7 +39,7 @@ class Optimizer:
 
     slots: tuple[str, ...] = ()
 
-    def __init__(self, lr: float | Callable = 1e-3, *, f: Any = None) -> None:
+    def __init__(self, lr: float | Callable = 1e-3, *, f: Framework = None) -> None:
         self.lr = lr
         self._f = f
         self.state: dict[str, Any] | None = None
@@ -52,7 +54,7 @@ class Optimizer:
     # Functional form
     # ------------------------------------------------------------------------------------------
 
-    def init(self, v: Any) -> dict[str, Any]:
+    def init(self, v: Nest) -> dict[str, Any]:
         """The initial state for the variables ``v``: a step count of 0 and zeroed slots.
 
         Args:
@@ -75,7 +77,7 @@ class Optimizer:
             state[name] = unflatten_nest(spec, [xp.zeros_like(p) for p in leaves])
         return state
 
-    def step(self, v: Any, grads: Any, state: dict[str, Any]) -> tuple[Any, dict[str, Any]]:
+    def step(self, v: Nest, grads: Nest, state: dict[str, Any]) -> tuple[Nest, dict[str, Any]]:
         """One update: a pure function of arrays (it compiles with ``ivy.compile_fn``).
 
         Args:
@@ -140,7 +142,7 @@ class Optimizer:
     # Stateful form
     # ------------------------------------------------------------------------------------------
 
-    def update(self, module: Any, grads: Any) -> None:
+    def update(self, module: Module, grads: Nest) -> None:
         """Apply ``grads`` to ``module.v`` in place, keeping the state in ``self.state``.
 
         The state is created on the first call, and again whenever another module is passed.
@@ -155,7 +157,7 @@ class Optimizer:
             self._owner = module
         module.v, self.state = self.step(v, grads, self.state)
 
-    def minimize(self, module: Any, loss_fn: Callable) -> Any:
+    def minimize(self, module: Module, loss_fn: Callable) -> Any:
         """Compute ``loss_fn(module.v)`` and its gradients, and update ``module.v`` in place.
 
         Args:
@@ -172,7 +174,7 @@ class Optimizer:
         self.update(module, grads)
         return (loss, *aux) if aux else loss
 
-    def module_step(self, module: Any, loss_fn: Callable, *, compile: bool = False) -> Callable:
+    def module_step(self, module: Module, loss_fn: Callable, *, compile: bool = False) -> Callable:
         """A training step bound to ``module``: ``train(*args, **kwargs) -> loss``.
 
         Each call computes ``loss_fn(module.v, *args, **kwargs)`` and its gradients, and updates
@@ -310,7 +312,7 @@ class SGD(Optimizer):
         momentum: float = 0.0,
         nesterov: bool = False,
         weight_decay: float = 0.0,
-        f: Any = None,
+        f: Framework = None,
     ) -> None:
         super().__init__(lr, f=f)
         if nesterov and momentum <= 0:
@@ -374,7 +376,7 @@ class Adam(Optimizer):
         beta2: float = 0.999,
         eps: float = 1e-8,
         weight_decay: float = 0.0,
-        f: Any = None,
+        f: Framework = None,
     ) -> None:
         super().__init__(lr, f=f)
         if not (0.0 <= beta1 < 1.0 and 0.0 <= beta2 < 1.0):
@@ -448,6 +450,6 @@ class AdamW(Adam):
         beta2: float = 0.999,
         eps: float = 1e-8,
         weight_decay: float = 1e-2,
-        f: Any = None,
+        f: Framework = None,
     ) -> None:
         super().__init__(lr, beta1=beta1, beta2=beta2, eps=eps, weight_decay=weight_decay, f=f)

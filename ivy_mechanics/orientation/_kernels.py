@@ -9,20 +9,7 @@ from __future__ import annotations
 
 import functools
 
-from ivy_mechanics._math import (
-    ATAN_OVER_X,
-    COS_HALF,
-    HALF_PI,
-    HALF_SIN_OVER_X,
-    horner,
-    safe_atan2,
-    safe_hypot,
-    split_small,
-    stack_matrix,
-    stack_vector,
-    sum_sq,
-    wrap_angle,
-)
+from ivy_mechanics._series import ATAN_OVER_X, COS_HALF, HALF_PI, HALF_SIN_OVER_X, wrap_angle
 
 # ----------------------------------------------------------------------------------------------
 # Quaternions
@@ -48,7 +35,7 @@ def hamilton_product(xp, p, q):
             term = pc[i] * qc[j]
             acc = term if acc is None else (acc + term if sign > 0 else acc - term)
         out.append(acc)
-    return stack_vector(xp, out)
+    return xp.stack_vector(out)
 
 
 def canonical_quat(xp, q):
@@ -71,7 +58,7 @@ def _quat_components_to_mat(xp, x, y, z, w, normalize=True):
         [s * (xy + wz), 1.0 - s * (xx + zz), s * (yz - wx)],
         [s * (xz - wy), s * (yz + wx), 1.0 - s * (xx + yy)],
     ]
-    return stack_matrix(xp, rows)
+    return xp.stack_matrix(rows)
 
 
 def mat_to_quat(xp, m):
@@ -84,10 +71,10 @@ def mat_to_quat(xp, m):
     s01, s02, s12 = r10 + r01, r20 + r02, r21 + r12
     d01, d02, d12 = r10 - r01, r02 - r20, r21 - r12
     one_minus_trace = 1.0 - trace
-    c0 = stack_vector(xp, [one_minus_trace + 2.0 * r00, s01, s02, d12])
-    c1 = stack_vector(xp, [s01, one_minus_trace + 2.0 * r11, s12, d02])
-    c2 = stack_vector(xp, [s02, s12, one_minus_trace + 2.0 * r22, d01])
-    c3 = stack_vector(xp, [d12, d02, d01, 1.0 + trace])
+    c0 = xp.stack_vector([one_minus_trace + 2.0 * r00, s01, s02, d12])
+    c1 = xp.stack_vector([s01, one_minus_trace + 2.0 * r11, s12, d02])
+    c2 = xp.stack_vector([s02, s12, one_minus_trace + 2.0 * r22, d01])
+    c3 = xp.stack_vector([d12, d02, d01, 1.0 + trace])
     # First maximum of [r00, r11, r22, trace], as numpy's argmax (scipy's choice).
     sel0 = xp.logical_and(xp.logical_and(r00 >= r11, r00 >= r22), r00 >= trace)
     sel1 = xp.logical_and(r11 >= r22, r11 >= trace)
@@ -98,7 +85,7 @@ def mat_to_quat(xp, m):
         xp.where(sel1[..., None], c1, xp.where(sel2[..., None], c2, c3)),
     )
     # The chosen candidate is 4 |q_k| q with |q_k| >= 1/2: its norm is >= 2, never 0.
-    q = q / xp.sqrt(sum_sq(xp, q))
+    q = q / xp.sqrt(xp.sum(q * q, axis=-1, keepdims=True))
     return canonical_quat(xp, q)
 
 
@@ -109,12 +96,16 @@ def mat_to_quat(xp, m):
 
 def rotvec_to_quat(xp, v):
     """Unit quaternion ``[sin(t/2) v/t, cos(t/2)]`` with ``t = |v|`` (series below t = 1e-2)."""
-    t2 = sum_sq(xp, v)
-    small, t = split_small(xp, t2)
-    half = 0.5 * t
-    ratio = xp.where(small, horner(t2, HALF_SIN_OVER_X), xp.sin(half) / t)
-    w = xp.where(small, horner(t2, COS_HALF), xp.cos(half))
+    t2 = xp.sum(v * v, axis=-1, keepdims=True)
+    ratio, w = _half_angle_terms(xp, t2)
     return xp.concat([v * ratio, w], axis=-1)
+
+
+def _half_angle_terms(xp, t2):
+    """``(sin(t/2) / t, cos(t/2))`` from ``t2 = t**2``, by their series below ``t = 1e-2``."""
+    return xp.taylor_switch(
+        t2, (HALF_SIN_OVER_X, COS_HALF), lambda t: (xp.sin(0.5 * t) / t, xp.cos(0.5 * t))
+    )
 
 
 def quat_to_rotvec(xp, q, canonical=False):
@@ -125,14 +116,14 @@ def quat_to_rotvec(xp, q, canonical=False):
     if not canonical:
         q = canonical_quat(xp, q)
     v, w = q[..., :3], q[..., 3:]
-    n2 = sum_sq(xp, v)
+    n2 = xp.sum(v * v, axis=-1, keepdims=True)
     w2 = w * w
     small = n2 < 1e-4 * w2
     one = xp.ones_like(w)
     n = xp.sqrt(xp.where(small, one, n2))
     large_ratio = 2.0 * xp.atan2(n, w) / n
     w_safe = xp.where(small, w, one)
-    small_ratio = (2.0 / w_safe) * horner(n2 / (w_safe * w_safe), ATAN_OVER_X)
+    small_ratio = (2.0 / w_safe) * xp.horner(n2 / (w_safe * w_safe), ATAN_OVER_X)
     return v * xp.where(small, small_ratio, large_ratio)
 
 
@@ -147,7 +138,7 @@ def quat_to_axis_angle(xp, q, canonical=False):
     if not canonical:
         q = canonical_quat(xp, q)
     v, w = q[..., :3], q[..., 3:]
-    n2 = sum_sq(xp, v)
+    n2 = xp.sum(v * v, axis=-1, keepdims=True)
     positive = n2 > 0
     n = xp.sqrt(xp.where(positive, n2, xp.ones_like(n2)))
     axis = xp.where(positive, v / n, _unit_z_like(xp, w))
@@ -163,7 +154,7 @@ def axis_angle_to_quat(xp, aa):
 
 def rotvec_to_axis_angle(xp, v):
     """``[v / |v|, |v|]``; the axis is ``[0, 0, 1]`` for the zero vector."""
-    n2 = sum_sq(xp, v)
+    n2 = xp.sum(v * v, axis=-1, keepdims=True)
     positive = n2 > 0
     n = xp.sqrt(xp.where(positive, n2, xp.ones_like(n2)))
     axis = xp.where(positive, v / n, _unit_z_like(xp, n))
@@ -178,8 +169,8 @@ def axis_angle_to_rotvec(xp, aa):
 def axis_angle_to_polar(xp, aa):
     """``[inclination, azimuth, angle]`` of the axis: inclination from +z, azimuth from +x."""
     ax, ay, az = aa[..., 0:1], aa[..., 1:2], aa[..., 2:3]
-    inclination = xp.atan2(safe_hypot(xp, ax, ay), az)
-    azimuth = safe_atan2(xp, ay, ax)
+    inclination = xp.atan2(xp.safe_hypot(ax, ay), az)
+    azimuth = xp.safe_atan2(ay, ax)
     return xp.concat([inclination, azimuth, aa[..., 3:]], axis=-1)
 
 
@@ -297,7 +288,7 @@ def euler_to_mat(xp, euler, convention):
     first, second, third = _ordered(factors, extrinsic)
     like = angles[0]
     product = _sparse_matmul(xp, _sparse_matmul(xp, first, second, like), third, like)
-    return stack_matrix(xp, [[_dense(xp, e, like) for e in row] for row in product])
+    return xp.stack_matrix([[_dense(xp, e, like) for e in row] for row in product])
 
 
 def euler_to_quat(xp, euler, convention):
@@ -308,7 +299,7 @@ def euler_to_quat(xp, euler, convention):
     first, second, third = _ordered(factors, extrinsic)
     like = halves[0]
     product = _sparse_hamilton(xp, _sparse_hamilton(xp, first, second, like), third, like)
-    return stack_vector(xp, [_dense(xp, e, like) for e in product])
+    return xp.stack_vector([_dense(xp, e, like) for e in product])
 
 
 def quat_to_euler(xp, q, convention):
@@ -331,9 +322,9 @@ def quat_to_euler(xp, q, convention):
         a, b, c, d = w, qi, qj, qk
     else:
         a, b, c, d = w - qj, qi + qk, qj + w, qk - qi
-    half_sum = safe_atan2(xp, b, a)
-    half_diff = safe_atan2(xp, d, c)
-    middle = 2.0 * xp.atan2(safe_hypot(xp, c, d), safe_hypot(xp, a, b))
+    half_sum = xp.safe_atan2(b, a)
+    half_diff = xp.safe_atan2(d, c)
+    middle = 2.0 * xp.atan2(xp.safe_hypot(c, d), xp.safe_hypot(a, b))
     first = wrap_angle(xp, half_sum - half_diff)
     third = half_sum + half_diff
     if not symmetric:
@@ -342,7 +333,7 @@ def quat_to_euler(xp, q, convention):
             third = -third
     third = wrap_angle(xp, third)
     ordered = [first, middle, third] if extrinsic else [third, middle, first]
-    return stack_vector(xp, ordered)
+    return xp.stack_vector(ordered)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -354,13 +345,13 @@ def rot6d_to_mat(xp, d6):
     """Gram-Schmidt on the two columns ``d6[..., :3]`` and ``d6[..., 3:]``; the third column is
     their cross product."""
     a1, a2 = d6[..., 0:3], d6[..., 3:6]
-    b1 = a1 / xp.sqrt(sum_sq(xp, a1))
+    b1 = a1 / xp.sqrt(xp.sum(a1 * a1, axis=-1, keepdims=True))
     b2 = a2 - xp.sum(b1 * a2, axis=-1, keepdims=True) * b1
-    b2 = b2 / xp.sqrt(sum_sq(xp, b2))
+    b2 = b2 / xp.sqrt(xp.sum(b2 * b2, axis=-1, keepdims=True))
     x1, y1, z1 = b1[..., 0], b1[..., 1], b1[..., 2]
     x2, y2, z2 = b2[..., 0], b2[..., 1], b2[..., 2]
     b3 = [y1 * z2 - z1 * y2, z1 * x2 - x1 * z2, x1 * y2 - y1 * x2]
-    return stack_matrix(xp, [[x1, x2, b3[0]], [y1, y2, b3[1]], [z1, z2, b3[2]]])
+    return xp.stack_matrix([[x1, x2, b3[0]], [y1, y2, b3[1]], [z1, z2, b3[2]]])
 
 
 def mat_to_rot6d(xp, m):
@@ -377,10 +368,7 @@ def rotvec_to_mat(xp, v):
     """Rodrigues' formula via the unit quaternion (robust at 0 and at pi), on components."""
     vx, vy, vz = v[..., 0], v[..., 1], v[..., 2]
     t2 = vx * vx + vy * vy + vz * vz
-    small, t = split_small(xp, t2)
-    half = 0.5 * t
-    ratio = xp.where(small, horner(t2, HALF_SIN_OVER_X), xp.sin(half) / t)
-    w = xp.where(small, horner(t2, COS_HALF), xp.cos(half))
+    ratio, w = _half_angle_terms(xp, t2)
     return _quat_components_to_mat(xp, vx * ratio, vy * ratio, vz * ratio, w, normalize=False)
 
 
@@ -392,7 +380,7 @@ def hat(xp, v):
     """Skew-symmetric matrix ``[v]x`` of ``v`` ``[..., 3]``."""
     x, y, z = v[..., 0], v[..., 1], v[..., 2]
     zero = xp.zeros_like(x)
-    return stack_matrix(xp, [[zero, -z, y], [z, zero, -x], [-y, x, zero]])
+    return xp.stack_matrix([[zero, -z, y], [z, zero, -x], [-y, x, zero]])
 
 
 __all__ = [

@@ -7,7 +7,7 @@ returned.
 from __future__ import annotations
 
 import ivy
-from ivy_mechanics._typing import Array, Framework
+from ivy.typing import Array, Framework
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -21,7 +21,7 @@ __all__ = [
 ]
 
 
-def rot_mat_to_axis_angle(rot_mat: Array, f: Framework = None) -> Array:
+def rot_mat_to_axis_angle(rot_mat: Array, *, f: Framework = None) -> Array:
     """Unit axis and angle of a rotation matrix.
 
     Args:
@@ -39,7 +39,7 @@ def rot_mat_to_axis_angle(rot_mat: Array, f: Framework = None) -> Array:
     return K.quat_to_axis_angle(xp, K.mat_to_quat(xp, rot_mat), canonical=True)
 
 
-def quaternion_to_axis_angle(quaternion: Array, f: Framework = None) -> Array:
+def quaternion_to_axis_angle(quaternion: Array, *, f: Framework = None) -> Array:
     """Unit axis and angle ``2 atan2(|v|, |w|)`` of a quaternion ``[v, w]`` (any non-zero norm).
 
     Args:
@@ -57,7 +57,7 @@ def quaternion_to_axis_angle(quaternion: Array, f: Framework = None) -> Array:
     return K.quat_to_axis_angle(xp, quaternion)
 
 
-def rot_vec_to_axis_angle(rot_vec: Array, f: Framework = None) -> Array:
+def rot_vec_to_axis_angle(rot_vec: Array, *, f: Framework = None) -> Array:
     """Unit axis ``v / |v|`` and angle ``|v|`` of a rotation vector.
 
     Args:
@@ -75,7 +75,7 @@ def rot_vec_to_axis_angle(rot_vec: Array, f: Framework = None) -> Array:
     return K.rotvec_to_axis_angle(xp, rot_vec)
 
 
-def polar_axis_angle_to_axis_angle(polar_axis_angle: Array, f: Framework = None) -> Array:
+def polar_axis_angle_to_axis_angle(polar_axis_angle: Array, *, f: Framework = None) -> Array:
     """Axis-angle of ``[inclination, azimuth, angle]``: the axis is
     ``[sin(i) cos(a), sin(i) sin(a), cos(i)]``.
 
@@ -94,7 +94,9 @@ def polar_axis_angle_to_axis_angle(polar_axis_angle: Array, f: Framework = None)
     return K.polar_to_axis_angle(xp, polar_axis_angle)
 
 
-def euler_to_axis_angle(euler_angles: Array, convention: str = "zyx", f: Framework = None) -> Array:
+def euler_to_axis_angle(
+    euler_angles: Array, convention: str = "zyx", *, f: Framework = None
+) -> Array:
     """Axis-angle of Euler angles (scipy's spelling; see :func:`euler_to_rot_mat`).
 
     Args:
@@ -113,7 +115,7 @@ def euler_to_axis_angle(euler_angles: Array, convention: str = "zyx", f: Framewo
     return K.quat_to_axis_angle(xp, K.euler_to_quat(xp, euler_angles, convention))
 
 
-def rot_6d_to_axis_angle(rot_6d: Array, f: Framework = None) -> Array:
+def rot_6d_to_axis_angle(rot_6d: Array, *, f: Framework = None) -> Array:
     """Axis-angle of the 6D representation (see :func:`rot_6d_to_rot_mat`).
 
     Args:
@@ -132,7 +134,7 @@ def rot_6d_to_axis_angle(rot_6d: Array, f: Framework = None) -> Array:
     return K.quat_to_axis_angle(xp, quat, canonical=True)
 
 
-def get_random_axis_angle(batch_shape=(), dtype=None, f: Framework = None) -> Array:
+def get_random_axis_angle(batch_shape=(), dtype=None, *, f: Framework = None) -> Array:
     """Axis-angles of rotations drawn uniformly (Haar measure) from SO(3).
 
     Args:

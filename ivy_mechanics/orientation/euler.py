@@ -15,7 +15,7 @@ compare results by the rotation they produce.
 from __future__ import annotations
 
 import ivy
-from ivy_mechanics._typing import Array, Framework
+from ivy.typing import Array, Framework
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -34,7 +34,7 @@ _SEQUENCES = tuple(a + b + c for a in "xyz" for b in "xyz" for c in "xyz" if a !
 EULER_CONVENTIONS: tuple[str, ...] = _SEQUENCES + tuple(s.upper() for s in _SEQUENCES)
 
 
-def rot_mat_to_euler(rot_mat: Array, convention: str = "zyx", f: Framework = None) -> Array:
+def rot_mat_to_euler(rot_mat: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """Euler angles of a rotation matrix.
 
     Args:
@@ -54,7 +54,9 @@ def rot_mat_to_euler(rot_mat: Array, convention: str = "zyx", f: Framework = Non
     return K.quat_to_euler(xp, K.mat_to_quat(xp, rot_mat), convention)
 
 
-def quaternion_to_euler(quaternion: Array, convention: str = "zyx", f: Framework = None) -> Array:
+def quaternion_to_euler(
+    quaternion: Array, convention: str = "zyx", *, f: Framework = None
+) -> Array:
     """Euler angles of a quaternion (any non-zero norm).
 
     Args:
@@ -73,7 +75,7 @@ def quaternion_to_euler(quaternion: Array, convention: str = "zyx", f: Framework
     return K.quat_to_euler(xp, quaternion, convention)
 
 
-def rot_vec_to_euler(rot_vec: Array, convention: str = "zyx", f: Framework = None) -> Array:
+def rot_vec_to_euler(rot_vec: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """Euler angles of a rotation vector.
 
     Args:
@@ -92,7 +94,9 @@ def rot_vec_to_euler(rot_vec: Array, convention: str = "zyx", f: Framework = Non
     return K.quat_to_euler(xp, K.rotvec_to_quat(xp, rot_vec), convention)
 
 
-def axis_angle_to_euler(axis_angle: Array, convention: str = "zyx", f: Framework = None) -> Array:
+def axis_angle_to_euler(
+    axis_angle: Array, convention: str = "zyx", *, f: Framework = None
+) -> Array:
     """Euler angles of ``[ax, ay, az, angle]`` (unit axis).
 
     Args:
@@ -112,7 +116,7 @@ def axis_angle_to_euler(axis_angle: Array, convention: str = "zyx", f: Framework
 
 
 def polar_axis_angle_to_euler(
-    polar_axis_angle: Array, convention: str = "zyx", f: Framework = None
+    polar_axis_angle: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
     """Euler angles of ``[inclination, azimuth, angle]``.
 
@@ -133,7 +137,7 @@ def polar_axis_angle_to_euler(
     return K.quat_to_euler(xp, quat, convention)
 
 
-def rot_6d_to_euler(rot_6d: Array, convention: str = "zyx", f: Framework = None) -> Array:
+def rot_6d_to_euler(rot_6d: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """Euler angles of the 6D representation (see :func:`rot_6d_to_rot_mat`).
 
     Args:
@@ -153,7 +157,7 @@ def rot_6d_to_euler(rot_6d: Array, convention: str = "zyx", f: Framework = None)
 
 
 def get_random_euler(
-    batch_shape=(), convention: str = "zyx", dtype=None, f: Framework = None
+    batch_shape=(), convention: str = "zyx", dtype=None, *, f: Framework = None
 ) -> Array:
     """Euler angles of rotations drawn uniformly (Haar measure) from SO(3).
 

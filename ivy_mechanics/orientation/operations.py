@@ -3,8 +3,7 @@
 from __future__ import annotations
 
 import ivy
-from ivy_mechanics._math import cross, matvec, safe_norm
-from ivy_mechanics._typing import Array, Framework
+from ivy.typing import Array, Framework
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -16,7 +15,7 @@ __all__ = [
 ]
 
 
-def rotate_points(rot_mat: Array, points: Array, f: Framework = None) -> Array:
+def rotate_points(rot_mat: Array, points: Array, *, f: Framework = None) -> Array:
     """Rotate points: ``R @ p``. Batch dimensions broadcast, so a cloud ``[B, N, 3]`` is rotated
     by ``[B, 1, 3, 3]`` matrices.
 
@@ -34,10 +33,10 @@ def rotate_points(rot_mat: Array, points: Array, f: Framework = None) -> Array:
         array([-2.,  1.,  3.])
     """
     xp = ivy.get_framework(rot_mat, points, f=f)
-    return matvec(xp, rot_mat, points)
+    return xp.matvec(rot_mat, points)
 
 
-def quaternion_rotate_points(quaternion: Array, points: Array, f: Framework = None) -> Array:
+def quaternion_rotate_points(quaternion: Array, points: Array, *, f: Framework = None) -> Array:
     """Rotate points by unit quaternions without forming the matrix:
     ``p + w t + v x t`` with ``t = 2 v x p``. Batch dimensions broadcast.
 
@@ -56,11 +55,13 @@ def quaternion_rotate_points(quaternion: Array, points: Array, f: Framework = No
     """
     xp = ivy.get_framework(quaternion, points, f=f)
     v, w = quaternion[..., :3], quaternion[..., 3:]
-    t = 2.0 * cross(xp, v, points)
-    return points + w * t + cross(xp, v, t)
+    t = 2.0 * xp.cross(v, points)
+    return points + w * t + xp.cross(v, t)
 
 
-def slerp(quaternion0: Array, quaternion1: Array, t: Array | float, f: Framework = None) -> Array:
+def slerp(
+    quaternion0: Array, quaternion1: Array, t: Array | float, *, f: Framework = None
+) -> Array:
     """Spherical linear interpolation on the shortest arc: ``q0 * (q0^-1 * q1) ** t``.
 
     Exact (series) when the two rotations are close, finite gradients when they are equal.
@@ -85,7 +86,7 @@ def slerp(quaternion0: Array, quaternion1: Array, t: Array | float, f: Framework
     return K.hamilton_product(xp, quaternion0, K.rotvec_to_quat(xp, relative * t))
 
 
-def geodesic_distance(rot_mat1: Array, rot_mat2: Array, f: Framework = None) -> Array:
+def geodesic_distance(rot_mat1: Array, rot_mat2: Array, *, f: Framework = None) -> Array:
     """Angle in [0, pi] of the rotation between two orientations, ``|log(R1^T R2)|``.
 
     Computed as ``atan2(sin, cos)`` of the relative rotation (not ``acos``), so it is accurate
@@ -114,13 +115,13 @@ def geodesic_distance(rot_mat1: Array, rot_mat2: Array, f: Framework = None) -> 
         ],
         axis=-1,
     )
-    sin = 0.5 * safe_norm(xp, skew, keepdims=False)
+    sin = 0.5 * xp.safe_norm(skew)
     cos = 0.5 * (rel[..., 0, 0] + rel[..., 1, 1] + rel[..., 2, 2] - 1.0)
     return xp.atan2(sin, cos)
 
 
 def quaternion_geodesic_distance(
-    quaternion1: Array, quaternion2: Array, f: Framework = None
+    quaternion1: Array, quaternion2: Array, *, f: Framework = None
 ) -> Array:
     """Angle in [0, pi] of the rotation between two orientations given as quaternions
     (``q`` and ``-q`` are the same orientation): ``2 atan2(|v|, |w|)`` of ``conj(q1) * q2``.
@@ -141,4 +142,4 @@ def quaternion_geodesic_distance(
     xp = ivy.get_framework(quaternion1, quaternion2, f=f)
     conj1 = xp.concat([-quaternion1[..., :3], quaternion1[..., 3:]], axis=-1)
     rel = K.hamilton_product(xp, conj1, quaternion2)
-    return 2.0 * xp.atan2(safe_norm(xp, rel[..., :3], keepdims=False), xp.abs(rel[..., 3]))
+    return 2.0 * xp.atan2(xp.safe_norm(rel[..., :3]), xp.abs(rel[..., 3]))

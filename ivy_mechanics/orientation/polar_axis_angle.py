@@ -8,7 +8,7 @@ is +z, i.e. ``[0, 0, 0]``.
 from __future__ import annotations
 
 import ivy
-from ivy_mechanics._typing import Array, Framework
+from ivy.typing import Array, Framework
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -21,7 +21,7 @@ __all__ = [
 ]
 
 
-def rot_mat_to_polar_axis_angle(rot_mat: Array, f: Framework = None) -> Array:
+def rot_mat_to_polar_axis_angle(rot_mat: Array, *, f: Framework = None) -> Array:
     """Polar axis-angle of a rotation matrix.
 
     Args:
@@ -40,7 +40,7 @@ def rot_mat_to_polar_axis_angle(rot_mat: Array, f: Framework = None) -> Array:
     return K.axis_angle_to_polar(xp, axis_angle)
 
 
-def quaternion_to_polar_axis_angle(quaternion: Array, f: Framework = None) -> Array:
+def quaternion_to_polar_axis_angle(quaternion: Array, *, f: Framework = None) -> Array:
     """Polar axis-angle of a quaternion (any non-zero norm).
 
     Args:
@@ -58,7 +58,7 @@ def quaternion_to_polar_axis_angle(quaternion: Array, f: Framework = None) -> Ar
     return K.axis_angle_to_polar(xp, K.quat_to_axis_angle(xp, quaternion))
 
 
-def rot_vec_to_polar_axis_angle(rot_vec: Array, f: Framework = None) -> Array:
+def rot_vec_to_polar_axis_angle(rot_vec: Array, *, f: Framework = None) -> Array:
     """Polar axis-angle of a rotation vector (the angle is ``|v|``, not wrapped).
 
     Args:
@@ -76,7 +76,7 @@ def rot_vec_to_polar_axis_angle(rot_vec: Array, f: Framework = None) -> Array:
     return K.axis_angle_to_polar(xp, K.rotvec_to_axis_angle(xp, rot_vec))
 
 
-def axis_angle_to_polar_axis_angle(axis_angle: Array, f: Framework = None) -> Array:
+def axis_angle_to_polar_axis_angle(axis_angle: Array, *, f: Framework = None) -> Array:
     """Polar axis-angle of ``[ax, ay, az, angle]``.
 
     Args:
@@ -95,7 +95,7 @@ def axis_angle_to_polar_axis_angle(axis_angle: Array, f: Framework = None) -> Ar
 
 
 def euler_to_polar_axis_angle(
-    euler_angles: Array, convention: str = "zyx", f: Framework = None
+    euler_angles: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
     """Polar axis-angle of Euler angles (scipy's spelling; see :func:`euler_to_rot_mat`).
 
@@ -116,7 +116,7 @@ def euler_to_polar_axis_angle(
     return K.axis_angle_to_polar(xp, K.quat_to_axis_angle(xp, quat))
 
 
-def rot_6d_to_polar_axis_angle(rot_6d: Array, f: Framework = None) -> Array:
+def rot_6d_to_polar_axis_angle(rot_6d: Array, *, f: Framework = None) -> Array:
     """Polar axis-angle of the 6D representation (see :func:`rot_6d_to_rot_mat`).
 
     Args:

@@ -6,8 +6,7 @@
 from __future__ import annotations
 
 import ivy
-from ivy_mechanics._math import sum_sq
-from ivy_mechanics._typing import Array, Framework
+from ivy.typing import Array, Framework
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -26,7 +25,7 @@ __all__ = [
 ]
 
 
-def rot_mat_to_quaternion(rot_mat: Array, f: Framework = None) -> Array:
+def rot_mat_to_quaternion(rot_mat: Array, *, f: Framework = None) -> Array:
     """Unit quaternion of a rotation matrix, with ``w >= 0``.
 
     Uses the best conditioned of four formulas (Shepperd's method), so it is exact near the
@@ -48,7 +47,7 @@ def rot_mat_to_quaternion(rot_mat: Array, f: Framework = None) -> Array:
     return K.mat_to_quat(xp, rot_mat)
 
 
-def rot_vec_to_quaternion(rot_vec: Array, f: Framework = None) -> Array:
+def rot_vec_to_quaternion(rot_vec: Array, *, f: Framework = None) -> Array:
     """Unit quaternion ``[sin(t/2) u, cos(t/2)]`` of a rotation vector ``t u``.
 
     Args:
@@ -66,7 +65,7 @@ def rot_vec_to_quaternion(rot_vec: Array, f: Framework = None) -> Array:
     return K.rotvec_to_quat(xp, rot_vec)
 
 
-def axis_angle_to_quaternion(axis_angle: Array, f: Framework = None) -> Array:
+def axis_angle_to_quaternion(axis_angle: Array, *, f: Framework = None) -> Array:
     """Unit quaternion of ``[ax, ay, az, angle]`` (the axis must be a unit vector).
 
     Args:
@@ -84,7 +83,7 @@ def axis_angle_to_quaternion(axis_angle: Array, f: Framework = None) -> Array:
     return K.axis_angle_to_quat(xp, axis_angle)
 
 
-def polar_axis_angle_to_quaternion(polar_axis_angle: Array, f: Framework = None) -> Array:
+def polar_axis_angle_to_quaternion(polar_axis_angle: Array, *, f: Framework = None) -> Array:
     """Unit quaternion of ``[inclination, azimuth, angle]`` (axis inclination from +z, azimuth
     from +x).
 
@@ -103,7 +102,9 @@ def polar_axis_angle_to_quaternion(polar_axis_angle: Array, f: Framework = None)
     return K.axis_angle_to_quat(xp, K.polar_to_axis_angle(xp, polar_axis_angle))
 
 
-def euler_to_quaternion(euler_angles: Array, convention: str = "zyx", f: Framework = None) -> Array:
+def euler_to_quaternion(
+    euler_angles: Array, convention: str = "zyx", *, f: Framework = None
+) -> Array:
     """Unit quaternion of Euler angles (scipy's spelling: ``'xyz'`` extrinsic, ``'XYZ'``
     intrinsic; see :func:`euler_to_rot_mat`).
 
@@ -123,7 +124,7 @@ def euler_to_quaternion(euler_angles: Array, convention: str = "zyx", f: Framewo
     return K.euler_to_quat(xp, euler_angles, convention)
 
 
-def rot_6d_to_quaternion(rot_6d: Array, f: Framework = None) -> Array:
+def rot_6d_to_quaternion(rot_6d: Array, *, f: Framework = None) -> Array:
     """Unit quaternion (``w >= 0``) of the 6D representation (see :func:`rot_6d_to_rot_mat`).
 
     Args:
@@ -141,7 +142,7 @@ def rot_6d_to_quaternion(rot_6d: Array, f: Framework = None) -> Array:
     return K.mat_to_quat(xp, K.rot6d_to_mat(xp, rot_6d))
 
 
-def hamilton_product(quaternion1: Array, quaternion2: Array, f: Framework = None) -> Array:
+def hamilton_product(quaternion1: Array, quaternion2: Array, *, f: Framework = None) -> Array:
     """Hamilton product ``q1 * q2``: the rotation ``q2`` followed by ``q1``, i.e.
     ``R(q1 * q2) = R(q1) @ R(q2)``. Batch dimensions broadcast.
 
@@ -162,7 +163,7 @@ def hamilton_product(quaternion1: Array, quaternion2: Array, f: Framework = None
     return K.hamilton_product(xp, quaternion1, quaternion2)
 
 
-def quaternion_conjugate(quaternion: Array, f: Framework = None) -> Array:
+def quaternion_conjugate(quaternion: Array, *, f: Framework = None) -> Array:
     """Conjugate ``[-x, -y, -z, w]`` (the inverse rotation for a unit quaternion).
 
     Args:
@@ -180,7 +181,7 @@ def quaternion_conjugate(quaternion: Array, f: Framework = None) -> Array:
     return xp.concat([-quaternion[..., :3], quaternion[..., 3:]], axis=-1)
 
 
-def inverse_quaternion(quaternion: Array, f: Framework = None) -> Array:
+def inverse_quaternion(quaternion: Array, *, f: Framework = None) -> Array:
     """Multiplicative inverse ``conj(q) / |q|**2``.
 
     Args:
@@ -196,10 +197,10 @@ def inverse_quaternion(quaternion: Array, f: Framework = None) -> Array:
     """
     xp = ivy.get_framework(quaternion, f=f)
     conj = xp.concat([-quaternion[..., :3], quaternion[..., 3:]], axis=-1)
-    return conj / sum_sq(xp, quaternion)
+    return conj / xp.sum(quaternion * quaternion, axis=-1, keepdims=True)
 
 
-def normalize_quaternion(quaternion: Array, f: Framework = None) -> Array:
+def normalize_quaternion(quaternion: Array, *, f: Framework = None) -> Array:
     """``q / |q|``, the unit quaternion of the same rotation.
 
     Args:
@@ -214,11 +215,11 @@ def normalize_quaternion(quaternion: Array, f: Framework = None) -> Array:
         array([0. , 0. , 0.6, 0.8])
     """
     xp = ivy.get_framework(quaternion, f=f)
-    return quaternion / xp.sqrt(sum_sq(xp, quaternion))
+    return quaternion / xp.sqrt(xp.sum(quaternion * quaternion, axis=-1, keepdims=True))
 
 
 def scale_quaternion_rotation_angle(
-    quaternion: Array, scale: Array | float, f: Framework = None
+    quaternion: Array, scale: Array | float, *, f: Framework = None
 ) -> Array:
     """The rotation about the same axis by ``scale`` times the angle (``q ** scale`` on the
     shortest arc), e.g. to integrate an angular velocity over a time step.
@@ -241,7 +242,7 @@ def scale_quaternion_rotation_angle(
     return K.rotvec_to_quat(xp, K.quat_to_rotvec(xp, quaternion) * scale)
 
 
-def get_random_quaternion(batch_shape=(), dtype=None, f: Framework = None) -> Array:
+def get_random_quaternion(batch_shape=(), dtype=None, *, f: Framework = None) -> Array:
     """Unit quaternions of rotations drawn uniformly (Haar measure) from SO(3): normalised
     4D standard normal samples.
 
@@ -259,4 +260,4 @@ def get_random_quaternion(batch_shape=(), dtype=None, f: Framework = None) -> Ar
     """
     xp = ivy.get_framework(f=f)
     quat = xp.random_normal(0.0, 1.0, (*tuple(batch_shape), 4), dtype=dtype)
-    return quat / xp.sqrt(sum_sq(xp, quat))
+    return quat / xp.sqrt(xp.sum(quat * quat, axis=-1, keepdims=True))

@@ -4,7 +4,7 @@ columns of the rotation matrix, ``[R[:, 0], R[:, 1]]``. Continuous, hence suited
 from __future__ import annotations
 
 import ivy
-from ivy_mechanics._typing import Array, Framework
+from ivy.typing import Array, Framework
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -17,7 +17,7 @@ __all__ = [
 ]
 
 
-def rot_mat_to_rot_6d(rot_mat: Array, f: Framework = None) -> Array:
+def rot_mat_to_rot_6d(rot_mat: Array, *, f: Framework = None) -> Array:
     """The first two columns of a rotation matrix.
 
     Args:
@@ -35,7 +35,7 @@ def rot_mat_to_rot_6d(rot_mat: Array, f: Framework = None) -> Array:
     return K.mat_to_rot6d(xp, rot_mat)
 
 
-def quaternion_to_rot_6d(quaternion: Array, f: Framework = None) -> Array:
+def quaternion_to_rot_6d(quaternion: Array, *, f: Framework = None) -> Array:
     """6D representation of a quaternion (any non-zero norm).
 
     Args:
@@ -53,7 +53,7 @@ def quaternion_to_rot_6d(quaternion: Array, f: Framework = None) -> Array:
     return K.mat_to_rot6d(xp, K.quat_to_mat(xp, quaternion))
 
 
-def rot_vec_to_rot_6d(rot_vec: Array, f: Framework = None) -> Array:
+def rot_vec_to_rot_6d(rot_vec: Array, *, f: Framework = None) -> Array:
     """6D representation of a rotation vector.
 
     Args:
@@ -71,7 +71,7 @@ def rot_vec_to_rot_6d(rot_vec: Array, f: Framework = None) -> Array:
     return K.mat_to_rot6d(xp, K.rotvec_to_mat(xp, rot_vec))
 
 
-def axis_angle_to_rot_6d(axis_angle: Array, f: Framework = None) -> Array:
+def axis_angle_to_rot_6d(axis_angle: Array, *, f: Framework = None) -> Array:
     """6D representation of ``[ax, ay, az, angle]`` (unit axis).
 
     Args:
@@ -90,7 +90,7 @@ def axis_angle_to_rot_6d(axis_angle: Array, f: Framework = None) -> Array:
     return K.mat_to_rot6d(xp, K.quat_to_mat(xp, quat, normalize=False))
 
 
-def polar_axis_angle_to_rot_6d(polar_axis_angle: Array, f: Framework = None) -> Array:
+def polar_axis_angle_to_rot_6d(polar_axis_angle: Array, *, f: Framework = None) -> Array:
     """6D representation of ``[inclination, azimuth, angle]``.
 
     Args:
@@ -109,7 +109,7 @@ def polar_axis_angle_to_rot_6d(polar_axis_angle: Array, f: Framework = None) -> 
     return K.mat_to_rot6d(xp, K.quat_to_mat(xp, quat, normalize=False))
 
 
-def euler_to_rot_6d(euler_angles: Array, convention: str = "zyx", f: Framework = None) -> Array:
+def euler_to_rot_6d(euler_angles: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """6D representation of Euler angles (scipy's spelling; see :func:`euler_to_rot_mat`).
 
     Args:

@@ -3,8 +3,7 @@
 from __future__ import annotations
 
 import ivy
-from ivy_mechanics._math import cross, sum_sq
-from ivy_mechanics._typing import Array, Framework
+from ivy.typing import Array, Framework
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -19,7 +18,7 @@ __all__ = [
 ]
 
 
-def quaternion_to_rot_mat(quaternion: Array, f: Framework = None) -> Array:
+def quaternion_to_rot_mat(quaternion: Array, *, f: Framework = None) -> Array:
     """Rotation matrix of a quaternion ``[x, y, z, w]`` (normalised first, as scipy does).
 
     Args:
@@ -39,7 +38,7 @@ def quaternion_to_rot_mat(quaternion: Array, f: Framework = None) -> Array:
     return K.quat_to_mat(xp, quaternion)
 
 
-def rot_vec_to_rot_mat(rot_vec: Array, f: Framework = None) -> Array:
+def rot_vec_to_rot_mat(rot_vec: Array, *, f: Framework = None) -> Array:
     """Rotation matrix of a rotation vector ``angle * axis`` (Rodrigues' formula, the SO(3)
     exponential map), exact at zero and at pi.
 
@@ -60,7 +59,7 @@ def rot_vec_to_rot_mat(rot_vec: Array, f: Framework = None) -> Array:
     return K.rotvec_to_mat(xp, rot_vec)
 
 
-def axis_angle_to_rot_mat(axis_angle: Array, f: Framework = None) -> Array:
+def axis_angle_to_rot_mat(axis_angle: Array, *, f: Framework = None) -> Array:
     """Rotation matrix of ``[ax, ay, az, angle]`` (the axis must be a unit vector).
 
     Args:
@@ -80,7 +79,7 @@ def axis_angle_to_rot_mat(axis_angle: Array, f: Framework = None) -> Array:
     return K.quat_to_mat(xp, K.axis_angle_to_quat(xp, axis_angle), normalize=False)
 
 
-def polar_axis_angle_to_rot_mat(polar_axis_angle: Array, f: Framework = None) -> Array:
+def polar_axis_angle_to_rot_mat(polar_axis_angle: Array, *, f: Framework = None) -> Array:
     """Rotation matrix of ``[inclination, azimuth, angle]``: the axis has inclination from +z and
     azimuth from +x in the xy-plane.
 
@@ -102,7 +101,7 @@ def polar_axis_angle_to_rot_mat(polar_axis_angle: Array, f: Framework = None) ->
     return K.quat_to_mat(xp, quat, normalize=False)
 
 
-def euler_to_rot_mat(euler_angles: Array, convention: str = "zyx", f: Framework = None) -> Array:
+def euler_to_rot_mat(euler_angles: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """Rotation matrix of Euler angles, in scipy's spelling of the sequence.
 
     Lower case is extrinsic (about the fixed axes): ``'xyz'`` gives ``Rz(c) @ Ry(b) @ Rx(a)``.
@@ -127,7 +126,7 @@ def euler_to_rot_mat(euler_angles: Array, convention: str = "zyx", f: Framework 
     return K.euler_to_mat(xp, euler_angles, convention)
 
 
-def rot_6d_to_rot_mat(rot_6d: Array, f: Framework = None) -> Array:
+def rot_6d_to_rot_mat(rot_6d: Array, *, f: Framework = None) -> Array:
     """Rotation matrix of the 6D representation (Zhou et al., 2019): the two vectors
     ``rot_6d[..., :3]`` and ``rot_6d[..., 3:]`` are orthonormalised (Gram-Schmidt) into the first
     two columns; the third column is their cross product.
@@ -149,7 +148,7 @@ def rot_6d_to_rot_mat(rot_6d: Array, f: Framework = None) -> Array:
     return K.rot6d_to_mat(xp, rot_6d)
 
 
-def get_random_rot_mat(batch_shape=(), dtype=None, f: Framework = None) -> Array:
+def get_random_rot_mat(batch_shape=(), dtype=None, *, f: Framework = None) -> Array:
     """Rotation matrices drawn uniformly (Haar measure) from SO(3).
 
     Args:
@@ -170,7 +169,7 @@ def get_random_rot_mat(batch_shape=(), dtype=None, f: Framework = None) -> Array
 
 
 def target_facing_rotation_matrix(
-    body_pos: Array, target_pos: Array, up: Array | None = None, f: Framework = None
+    body_pos: Array, target_pos: Array, up: Array | None = None, *, f: Framework = None
 ) -> Array:
     """Orientation of a body at ``body_pos`` whose +z axis faces ``target_pos`` and whose +x axis
     is horizontal (perpendicular to ``up``), as used to aim cameras ("look-at").
@@ -195,11 +194,11 @@ def target_facing_rotation_matrix(
     """
     xp = ivy.get_framework(body_pos, target_pos, up, f=f)
     z = target_pos - body_pos
-    z = z / xp.sqrt(sum_sq(xp, z))
+    z = z / xp.sqrt(xp.sum(z * z, axis=-1, keepdims=True))
     if up is None:
         zero = xp.zeros_like(z[..., 0:1])
         up = xp.concat([zero, zero, xp.ones_like(zero)], axis=-1)
-    x = cross(xp, up, z)
-    x = x / xp.sqrt(sum_sq(xp, x))
-    y = cross(xp, z, x)
+    x = xp.cross(up, z)
+    x = x / xp.sqrt(xp.sum(x * x, axis=-1, keepdims=True))
+    y = xp.cross(z, x)
     return xp.stack([x, y, z], axis=-1)

@@ -7,7 +7,7 @@ Rotation vectors returned by these functions have angles in [0, pi]; at exactly 
 from __future__ import annotations
 
 import ivy
-from ivy_mechanics._typing import Array, Framework
+from ivy.typing import Array, Framework
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -21,7 +21,7 @@ __all__ = [
 ]
 
 
-def rot_mat_to_rot_vec(rot_mat: Array, f: Framework = None) -> Array:
+def rot_mat_to_rot_vec(rot_mat: Array, *, f: Framework = None) -> Array:
     """Rotation vector of a rotation matrix (via the quaternion: exact near 0 and near pi).
 
     Args:
@@ -39,7 +39,7 @@ def rot_mat_to_rot_vec(rot_mat: Array, f: Framework = None) -> Array:
     return K.mat_to_rotvec(xp, rot_mat)
 
 
-def quaternion_to_rot_vec(quaternion: Array, f: Framework = None) -> Array:
+def quaternion_to_rot_vec(quaternion: Array, *, f: Framework = None) -> Array:
     """Rotation vector ``2 atan2(|v|, w) v / |v|`` of a quaternion ``[v, w]`` (any non-zero norm;
     a series of atan near the identity).
 
@@ -58,7 +58,7 @@ def quaternion_to_rot_vec(quaternion: Array, f: Framework = None) -> Array:
     return K.quat_to_rotvec(xp, quaternion)
 
 
-def axis_angle_to_rot_vec(axis_angle: Array, f: Framework = None) -> Array:
+def axis_angle_to_rot_vec(axis_angle: Array, *, f: Framework = None) -> Array:
     """Rotation vector ``angle * axis`` of ``[ax, ay, az, angle]``.
 
     Args:
@@ -76,7 +76,7 @@ def axis_angle_to_rot_vec(axis_angle: Array, f: Framework = None) -> Array:
     return K.axis_angle_to_rotvec(xp, axis_angle)
 
 
-def polar_axis_angle_to_rot_vec(polar_axis_angle: Array, f: Framework = None) -> Array:
+def polar_axis_angle_to_rot_vec(polar_axis_angle: Array, *, f: Framework = None) -> Array:
     """Rotation vector of ``[inclination, azimuth, angle]``.
 
     Args:
@@ -94,7 +94,7 @@ def polar_axis_angle_to_rot_vec(polar_axis_angle: Array, f: Framework = None) ->
     return K.axis_angle_to_rotvec(xp, K.polar_to_axis_angle(xp, polar_axis_angle))
 
 
-def euler_to_rot_vec(euler_angles: Array, convention: str = "zyx", f: Framework = None) -> Array:
+def euler_to_rot_vec(euler_angles: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """Rotation vector of Euler angles (scipy's spelling; see :func:`euler_to_rot_mat`).
 
     Args:
@@ -113,7 +113,7 @@ def euler_to_rot_vec(euler_angles: Array, convention: str = "zyx", f: Framework 
     return K.quat_to_rotvec(xp, K.euler_to_quat(xp, euler_angles, convention))
 
 
-def rot_6d_to_rot_vec(rot_6d: Array, f: Framework = None) -> Array:
+def rot_6d_to_rot_vec(rot_6d: Array, *, f: Framework = None) -> Array:
     """Rotation vector of the 6D representation (see :func:`rot_6d_to_rot_mat`).
 
     Args:
@@ -131,7 +131,7 @@ def rot_6d_to_rot_vec(rot_6d: Array, f: Framework = None) -> Array:
     return K.mat_to_rotvec(xp, K.rot6d_to_mat(xp, rot_6d))
 
 
-def get_random_rot_vec(batch_shape=(), dtype=None, f: Framework = None) -> Array:
+def get_random_rot_vec(batch_shape=(), dtype=None, *, f: Framework = None) -> Array:
     """Rotation vectors of rotations drawn uniformly (Haar measure) from SO(3).
 
     Args:

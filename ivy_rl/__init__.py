@@ -1,0 +1,56 @@
+"""ivy_rl: reinforcement-learning agents written once with ivy, trained with the same numbers
+on torch, jax and tensorflow.
+
+The design follows Tonic's modular agents (models built from an encoder, a torso and a head;
+replays; normalisers; updaters) and the time-limit handling of Pardo et al. (2018): an episode
+cut by a time limit is a reset, not a termination, and the value of its last state is
+bootstrapped (partial-episode bootstrapping); optionally the remaining time is an input
+(:class:`~ivy_rl.environments.TimeFeature`).
+
+Modules: :mod:`ivy_rl.returns` (λ-returns, GAE, n-step returns), :mod:`ivy_rl.distributions`,
+:mod:`ivy_rl.models`, :mod:`ivy_rl.normalizers`, :mod:`ivy_rl.replays`, :mod:`ivy_rl.updaters`,
+:mod:`ivy_rl.agents`, :mod:`ivy_rl.environments`, :mod:`ivy_rl.trainer`, :mod:`ivy_rl.logger`;
+commands ``python -m ivy_rl.train``, ``python -m ivy_rl.plot`` and ``python -m ivy_rl.play``.
+
+``import ivy_rl`` imports no deep-learning framework.
+
+Example:
+    >>> import ivy_rl
+    >>> agent = ivy_rl.agents.PPO(segment_size=32, batch_size=256, epochs=20)
+    >>> trainer = ivy_rl.Trainer(steps=100_000)
+    >>> trainer.run(agent, "CartPole-v1", workers=8, seed=0, f="torch", out="runs/ppo")
+"""
+
+from ivy_rl import (
+    agents,
+    distributions,
+    environments,
+    models,
+    normalizers,
+    replays,
+    returns,
+    updaters,
+)
+from ivy_rl.agents import A2C, AGENTS, PPO, TRPO, Agent, Constant, Uniform
+from ivy_rl.returns import generalized_advantages, lambda_returns, n_step_returns
+
+__all__ = [
+    "agents",
+    "distributions",
+    "environments",
+    "models",
+    "normalizers",
+    "replays",
+    "returns",
+    "updaters",
+    "Agent",
+    "A2C",
+    "PPO",
+    "TRPO",
+    "Uniform",
+    "Constant",
+    "AGENTS",
+    "lambda_returns",
+    "generalized_advantages",
+    "n_step_returns",
+]

@@ -1,0 +1,267 @@
+"""``Agent``: the interface between agents and the trainer, and what every agent shares.
+
+The trainer calls ``actions = agent.step(observations)`` during training,
+``agent.update(observations, rewards, resets, terminations)`` after each step of the
+environments (``observations`` are the true next observations, before any reset; ``resets``
+mark the end of an episode for any reason, ``terminations`` the end in a terminal state, so a
+time limit is a reset and not a termination), and ``agent.test_step(observations)`` in test
+episodes. Actions are valid actions of the environment's action space.
+
+Randomness comes from one numpy generator per agent (initial weights, exploration noise,
+mini-batches), so a seed gives the same numbers on every backend, compiled functions draw
+nothing, and a checkpoint restores the random state exactly.
+
+Example:
+    >>> agent = ivy_rl.agents.PPO().initialize(env.observation_space, env.action_space,
+    ...                                         seed=0, f="jax")
+    >>> actions = agent.step(observations)
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Any
+
+import numpy as np
+
+import ivy
+from ivy.stateful.checkpoint import flat_dict_to_nest, nest_to_flat_dict
+from ivy.typing import Framework, Nest
+from ivy_rl.models import space_kind
+
+__all__ = ["Agent"]
+
+
+class Agent:
+    """Base class of agents.
+
+    Subclasses set ``supported_action_spaces`` and implement :meth:`_build`, :meth:`step`,
+    :meth:`test_step` and, if they learn, :meth:`update`, :meth:`_arrays` and
+    :meth:`_load_arrays`.
+
+    Constructor keyword arguments are the agent's settings (JSON values, so that the command
+    line's ``--agent-kwargs`` can give them); they are kept in ``self.config``.
+    """
+
+    supported_action_spaces: tuple[str, ...] = ("Box", "Discrete")
+    learns = False
+
+    def __init__(self, **config: Any) -> None:
+        self.config = dict(config)
+        self.xp = None
+        self.initialized = False
+
+    # ------------------------------------------------------------------------------------------
+    # Set-up
+    # ------------------------------------------------------------------------------------------
+
+    def initialize(
+        self,
+        observation_space: Any,
+        action_space: Any,
+        *,
+        seed: int = 0,
+        f: Framework = None,
+        dtype: str = "float32",
+        compile: bool = True,
+    ) -> Agent:
+        """Build the agent's models, optimisers and replay for the spaces, on a framework.
+
+        Args:
+            observation_space: the environment's (single) observation space, a Box.
+            action_space: the environment's (single) action space.
+            seed: seed of the agent's numpy generator (initial weights, noise, mini-batches).
+            f: framework name or namespace (``'torch'``, ``ivy.jax`` ...); default: the global
+                framework, else numpy.
+            dtype: float dtype of the models (``'float32'`` or ``'float64'``).
+            compile: compile the agent's functions with ``ivy.compile_fn`` (False: eager, for
+                debugging).
+
+        Returns:
+            The agent itself.
+
+        Example:
+            >>> agent = A2C().initialize(env.observation_space, env.action_space, f="torch")
+        """
+        name = type(self).__name__
+        self.action_kind = space_kind(action_space, self.supported_action_spaces, who=name)
+        if f is None:
+            f = ivy.current_framework() or "numpy"
+        self.xp = ivy.get_framework(f=f)
+        if dtype not in ("float32", "float64"):
+            raise ValueError(f"{name}: dtype must be 'float32' or 'float64', got {dtype!r}")
+        if self.learns and self.xp.backend == "numpy":
+            raise ivy.errors.UnsupportedError(
+                f"{name} learns with gradients, which numpy cannot compute; choose one of "
+                "f='torch', 'jax' or 'tensorflow'"
+            )
+        self.observation_space, self.action_space = observation_space, action_space
+        self.dtype, self.np_dtype = dtype, np.dtype(dtype)
+        self.seed = int(seed)
+        self.compiled = bool(compile)
+        self.rng = np.random.default_rng(self.seed)
+        if self.action_kind == "Box":
+            low, high = action_space.low.astype(np.float64), action_space.high.astype(np.float64)
+            bounded = bool(np.all(np.isfinite(low)) and np.all(np.isfinite(high)))
+            self._action_bounds = (low, high) if bounded else None
+        self._build()
+        self.initialized = True
+        return self
+
+    def _build(self) -> None:
+        """Create models, optimisers, replays (after :meth:`initialize` set the spaces)."""
+
+    def _compile(self, fn: Any) -> Any:
+        """``fn`` compiled with ``ivy.compile_fn`` for the agent's framework, or as it is."""
+        if not self.compiled or self.xp.backend == "numpy":
+            return fn
+        return ivy.compile_fn(fn, f=self.xp)
+
+    def _check_initialized(self) -> None:
+        if not self.initialized:
+            raise RuntimeError(
+                f"{type(self).__name__} is not initialized: call "
+                "agent.initialize(observation_space, action_space, seed=..., f=...) first"
+            )
+
+    def _observations(self, observations: Any) -> np.ndarray:
+        obs = np.asarray(observations, dtype=self.np_dtype)
+        return obs.reshape(obs.shape[0], -1)
+
+    def _env_actions(self, unit_actions: np.ndarray) -> np.ndarray:
+        """Actions of the environment's space from actions in ``[-1, 1]`` (Box) or indices."""
+        if self.action_kind == "Discrete":
+            return np.asarray(unit_actions, dtype=np.int64) + int(self.action_space.start)
+        actions = np.asarray(unit_actions, np.float64)
+        if self._action_bounds is not None:
+            low, high = self._action_bounds
+            actions = low + (np.clip(actions, -1.0, 1.0) + 1.0) * 0.5 * (high - low)
+        return actions.astype(self.action_space.dtype)
+
+    # ------------------------------------------------------------------------------------------
+    # The trainer's interface
+    # ------------------------------------------------------------------------------------------
+
+    def step(self, observations: Any) -> np.ndarray:
+        """Actions for a batch of observations ``[workers, ...]`` during training."""
+        raise NotImplementedError
+
+    def test_step(self, observations: Any) -> np.ndarray:
+        """Actions for a batch of observations during tests (no exploration)."""
+        raise NotImplementedError
+
+    def update(
+        self, observations: Any, rewards: Any, resets: Any, terminations: Any
+    ) -> dict[str, float]:
+        """Record the transitions of the last :meth:`step` and learn when it is time.
+
+        Args:
+            observations: ``[workers, ...]`` true next observations (before resets).
+            rewards: ``[workers]`` rewards.
+            resets: ``[workers]`` the episode ended (termination or time limit).
+            terminations: ``[workers]`` the episode ended in a terminal state.
+
+        Returns:
+            Scalars to log (losses...) when the agent learned, else an empty dict.
+        """
+        return {}
+
+    # ------------------------------------------------------------------------------------------
+    # Checkpoints
+    # ------------------------------------------------------------------------------------------
+
+    def _arrays(self) -> dict[str, Any]:
+        """Everything to save as a nest of arrays (any backend) and numpy arrays."""
+        return {}
+
+    def _load_arrays(self, arrays: dict[str, Any]) -> None:
+        """Restore :meth:`_arrays` from a nest of numpy arrays."""
+
+    def _meta(self) -> dict[str, Any]:
+        return {}
+
+    def _load_meta(self, meta: dict[str, Any]) -> None:
+        pass
+
+    def save(self, path: str | os.PathLike) -> None:
+        """Write the agent's whole state to the folder ``path``: ``arrays.npz`` (weights,
+        optimiser states, normalisers, replay, pending transitions) and ``agent.json`` (its
+        class, settings, random generator state and counters). Any backend loads it.
+
+        Example:
+            >>> agent.save("runs/ppo/checkpoints/step_100000")
+        """
+        self._check_initialized()
+        os.makedirs(path, exist_ok=True)
+        flat = {}
+        for key, leaf in nest_to_flat_dict(self._arrays()).items():
+            flat[key] = leaf if isinstance(leaf, np.ndarray) else np.asarray(ivy.to_numpy(leaf))
+        with open(os.path.join(path, "arrays.npz"), "wb") as fh:
+            np.savez(fh, **flat)
+        meta = {
+            "agent": type(self).__name__,
+            "config": self.config,
+            "seed": self.seed,
+            "dtype": self.dtype,
+            "rng": self.rng.bit_generator.state,
+            **self._meta(),
+        }
+        with open(os.path.join(path, "agent.json"), "w") as fh:
+            json.dump(meta, fh, indent=1, default=_json_default)
+
+    def load(self, path: str | os.PathLike) -> Agent:
+        """Restore a state written by :meth:`save` on any backend into this initialized agent
+        (same class and spaces; its framework and dtype are kept).
+
+        Returns:
+            The agent itself.
+
+        Example:
+            >>> agent = PPO().initialize(obs_space, act_space, f="jax").load(checkpoint)
+        """
+        self._check_initialized()
+        with open(os.path.join(path, "agent.json")) as fh:
+            meta = json.load(fh)
+        if meta["agent"] != type(self).__name__:
+            raise ValueError(
+                f"checkpoint {os.fspath(path)!r} holds a {meta['agent']}, not a "
+                f"{type(self).__name__}"
+            )
+        with np.load(os.path.join(path, "arrays.npz"), allow_pickle=False) as data:
+            flat = {key: data[key] for key in data.files}
+        self._load_arrays(flat_dict_to_nest(flat) if flat else {})
+        self.rng.bit_generator.state = meta["rng"]
+        self._load_meta(meta)
+        return self
+
+    def _to_backend(self, stored: Nest, like: Nest) -> Nest:
+        """Numpy arrays ``stored`` as arrays of the framework, dtype of the nest ``like``."""
+        xp = self.xp
+
+        def rebuild(old, new, path):
+            if isinstance(old, dict):
+                new = new if isinstance(new, dict) else {}
+                return {k: rebuild(o, new.get(k), f"{path}/{k}") for k, o in old.items()}
+            if new is None:
+                raise KeyError(f"the checkpoint has no array {path}")
+            if tuple(np.shape(new)) != tuple(xp.shape(old)):
+                raise ValueError(
+                    f"checkpoint array {path} of shape {np.shape(new)} does not fit "
+                    f"{tuple(xp.shape(old))}"
+                )
+            return xp.asarray(new, dtype=xp.dtype(old))
+
+        return rebuild(like, stored, "")
+
+    def __repr__(self) -> str:
+        where = f", f={self.xp.backend}" if self.xp is not None else ""
+        return f"{type(self).__name__}({self.config}{where})"
+
+
+def _json_default(value: Any) -> Any:
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    raise TypeError(f"cannot write {type(value).__name__} to JSON")

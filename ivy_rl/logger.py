@@ -1,0 +1,208 @@
+"""The trainer's logger: one row per epoch in ``log.csv``, a table on the console, a progress
+bar, and the same scalars in TensorBoard when asked.
+
+Values stored during an epoch are averaged when the epoch ends; values stored with
+``stats=True`` (episode scores...) are summarised as ``key/mean``, ``key/std``, ``key/min`` and
+``key/max``. When a new column appears (an agent's first losses), ``log.csv`` is rewritten with
+the new header.
+
+Example:
+    >>> log = Logger("runs/ppo")
+    >>> log.store("train/episode_score", 21.0, stats=True)
+    >>> log.dump({"train/steps": 1000})
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import os
+import sys
+import time
+from typing import Any
+
+import numpy as np
+
+__all__ = ["Logger", "read_log"]
+
+
+class Logger:
+    """Writes ``<out>/log.csv``, a console table and optionally TensorBoard events.
+
+    Args:
+        out: the run's folder (None: nothing is written to disk).
+        tensorboard: also write TensorBoard events to ``<out>/tensorboard``.
+        quiet: print neither the table nor the progress bar.
+
+    Example:
+        >>> log = Logger("runs/a2c", tensorboard=True)
+    """
+
+    def __init__(self, out: str | None = None, *, tensorboard: bool = False, quiet: bool = False):
+        self.out = out
+        self.quiet = quiet
+        self.columns: list[str] = []
+        self.rows: list[dict[str, Any]] = []
+        self._values: dict[str, list[float]] = {}
+        self._stats: set[str] = set()
+        self._last_bar = 0.0
+        self._writer = None
+        if out is not None:
+            os.makedirs(out, exist_ok=True)
+            if tensorboard:
+                self._writer = _TensorBoard(os.path.join(out, "tensorboard"))
+
+    @property
+    def path(self) -> str | None:
+        return None if self.out is None else os.path.join(self.out, "log.csv")
+
+    def store(self, key: str, value: Any, *, stats: bool = False) -> None:
+        """Add a value (a number or an array, flattened) to the epoch's values of ``key``."""
+        values = np.asarray(value, dtype=np.float64).ravel()
+        self._values.setdefault(key, []).extend(values.tolist())
+        if stats:
+            self._stats.add(key)
+
+    def dump(self, fixed: dict[str, Any]) -> dict[str, Any]:
+        """End the epoch: summarise the stored values with ``fixed`` scalars into one row,
+        write it, and start a new epoch.
+
+        Returns:
+            The row.
+        """
+        row: dict[str, Any] = dict(fixed)
+        for key, values in sorted(self._values.items()):
+            if not values:
+                continue
+            if key in self._stats:
+                array = np.asarray(values)
+                row[f"{key}/mean"] = float(array.mean())
+                row[f"{key}/std"] = float(array.std())
+                row[f"{key}/min"] = float(array.min())
+                row[f"{key}/max"] = float(array.max())
+            else:
+                row[key] = float(np.mean(values))
+        self._values, self._stats = {}, set()
+        self.rows.append(row)
+        new_columns = [k for k in row if k not in self.columns]
+        self.columns.extend(new_columns)
+        if self.path is not None:
+            if new_columns or len(self.rows) == 1:
+                self._rewrite()
+            else:
+                with open(self.path, "a", newline="") as fh:
+                    csv.DictWriter(fh, self.columns).writerow(row)
+        if self._writer is not None:
+            step = int(row.get("train/steps", len(self.rows)))
+            self._writer.scalars(step, {k: v for k, v in row.items() if _is_number(v)})
+        if not self.quiet:
+            self._print_table(row)
+        return row
+
+    def _rewrite(self) -> None:
+        with open(self.path, "w", newline="") as fh:
+            writer = csv.DictWriter(fh, self.columns)
+            writer.writeheader()
+            writer.writerows(self.rows)
+
+    def restore(self, epochs: int) -> None:
+        """Keep the first ``epochs`` rows of an existing ``log.csv`` (resuming a run)."""
+        if self.path is None or not os.path.exists(self.path):
+            if epochs:
+                raise FileNotFoundError(f"cannot resume: {self.path} is missing")
+            return
+        self.rows = read_log(self.path)[:epochs]
+        self.columns = []
+        for row in self.rows:
+            self.columns.extend(k for k in row if k not in self.columns)
+        self._rewrite()
+
+    def progress(self, steps: int, epoch_steps: int, epoch_length: int, max_steps: int) -> None:
+        """Draw the progress bar of the epoch on stderr (at most ten times a second)."""
+        if self.quiet:
+            return
+        now = time.monotonic()
+        if now - self._last_bar < 0.1 and epoch_steps < epoch_length:
+            return
+        self._last_bar = now
+        width = 40
+        done = min(epoch_steps / max(epoch_length, 1), 1.0)
+        bar = "#" * int(width * done) + "-" * (width - int(width * done))
+        sys.stderr.write(f"\r[{bar}] {steps:,}/{max_steps:,} steps")
+        sys.stderr.flush()
+
+    def _print_table(self, row: dict[str, Any]) -> None:
+        sys.stderr.write("\r" + " " * 70 + "\r")
+        keys = [k for k in row if not k.endswith(("/std", "/min", "/max"))]
+        width = max(len(k) for k in keys)
+        line = "-" * (width + 16)
+        lines = [line]
+        for key in keys:
+            lines.append(f"| {key:<{width}} | {_format(row[key]):>10} |")
+        lines.append(line)
+        print("\n".join(lines), flush=True)
+
+    def close(self) -> None:
+        if self._writer is not None:
+            self._writer.close()
+
+
+def _is_number(value: Any) -> bool:
+    return isinstance(value, (int, float)) and math.isfinite(value)
+
+
+def _format(value: Any) -> str:
+    if isinstance(value, float):
+        if value != 0 and (abs(value) >= 1e6 or abs(value) < 1e-3):
+            return f"{value:.3e}"
+        return f"{value:.4g}"
+    return str(value)
+
+
+def read_log(path: str) -> list[dict[str, Any]]:
+    """The rows of a ``log.csv`` as dicts of floats (empty cells are left out).
+
+    Example:
+        >>> rows = read_log("runs/ppo/log.csv"); rows[-1]["test/episode_score/mean"]
+    """
+    with open(path, newline="") as fh:
+        rows = []
+        for raw in csv.DictReader(fh):
+            rows.append({k: float(v) for k, v in raw.items() if v not in ("", None)})
+    return rows
+
+
+class _TensorBoard:
+    """Scalars as TensorBoard event files, written with the ``tensorboard`` package's record
+    writer and protocol buffers (neither tensorflow nor torch is imported)."""
+
+    def __init__(self, folder: str) -> None:
+        try:
+            from tensorboard.compat.proto.event_pb2 import Event
+            from tensorboard.compat.proto.summary_pb2 import Summary
+            from tensorboard.summary.writer.record_writer import RecordWriter
+        except ImportError as error:
+            raise ImportError(
+                "--tensorboard needs the 'tensorboard' package: pip install 'ivy[rl]'"
+            ) from error
+        import socket
+
+        os.makedirs(folder, exist_ok=True)
+        name = f"events.out.tfevents.{int(time.time())}.{socket.gethostname()}.{os.getpid()}"
+        self._file = open(os.path.join(folder, name), "wb")  # noqa: SIM115 - closed in close()
+        self._records = RecordWriter(self._file)
+        self._event, self._summary = Event, Summary
+        self._write(Event(wall_time=time.time(), file_version="brain.Event:2"))
+
+    def _write(self, event) -> None:
+        self._records.write(event.SerializeToString())
+        self._file.flush()
+
+    def scalars(self, step: int, values: dict[str, float]) -> None:
+        summary = self._summary(
+            value=[self._summary.Value(tag=k, simple_value=float(v)) for k, v in values.items()]
+        )
+        self._write(self._event(wall_time=time.time(), step=step, summary=summary))
+
+    def close(self) -> None:
+        self._file.close()

@@ -1,0 +1,197 @@
+"""Returns of segments of experience: λ-returns, generalised advantage estimates (GAE) and
+n-step returns, with partial-episode bootstrapping (PEB).
+
+Every function takes time-major arrays ``[time, *batch]`` of one segment collected by parallel
+workers: ``rewards[t]`` of the transition from ``s_t`` to ``s'_t``, ``next_values[t] = V(s'_t)``
+(``s'_t`` is the true next observation, before any reset), ``resets[t]`` true when the episode
+ended after transition ``t`` for any reason (termination or time limit) and ``terminations[t]``
+true when it ended in a terminal state. After a termination nothing is bootstrapped; after a
+reset that is not a termination (a time limit, or the end of the segment) the value of the last
+state ``next_values[t]`` is bootstrapped: partial-episode bootstrapping (Pardo et al., 2018).
+
+The recursions run backwards in time, one array operation per step, on any backend.
+
+Example:
+    >>> import numpy as np, ivy_rl
+    >>> r = np.ones((3, 1)); nv = np.zeros((3, 1)); no = np.zeros((3, 1))
+    >>> ivy_rl.lambda_returns(r, nv, no, no, discount=0.5, trace_decay=1.0)[:, 0]
+    array([1.75, 1.5 , 1.  ])
+"""
+
+from __future__ import annotations
+
+import ivy
+from ivy.typing import Array, Framework
+
+__all__ = ["lambda_returns", "generalized_advantages", "n_step_returns"]
+
+
+def _flags(xp, flags, like):
+    """Boolean or 0/1 flags as floats of the dtype of ``like``."""
+    return xp.astype(flags, like.dtype)
+
+
+def _check(rewards, *others):
+    shape = tuple(rewards.shape)
+    if len(shape) < 1 or shape[0] < 1:
+        raise ValueError(f"expected time-major arrays [time, *batch] with time >= 1, got {shape}")
+    for name, other in others:
+        if tuple(other.shape) != shape:
+            raise ValueError(
+                f"{name} has shape {tuple(other.shape)} but rewards has {shape}; every input "
+                "must be a time-major array [time, *batch] of the same shape"
+            )
+
+
+def _lambda_returns(xp, rewards, next_values, resets, terminations, discount, trace_decay):
+    resets = _flags(xp, resets, rewards)
+    continues = 1.0 - _flags(xp, terminations, rewards)
+    steps = rewards.shape[0]
+    following = next_values[steps - 1]
+    out = [None] * steps
+    for t in range(steps - 1, -1, -1):
+        mixed = (1.0 - trace_decay) * next_values[t] + trace_decay * following
+        bootstrap = resets[t] * next_values[t] + (1.0 - resets[t]) * mixed
+        following = rewards[t] + discount * continues[t] * bootstrap
+        out[t] = following
+    return xp.stack(out, axis=0)
+
+
+def lambda_returns(
+    rewards: Array,
+    next_values: Array,
+    resets: Array,
+    terminations: Array,
+    *,
+    discount: float = 0.99,
+    trace_decay: float = 0.95,
+    f: Framework = None,
+) -> Array:
+    """λ-returns ``G_t = r_t + γ (1 - term_t) [(1 - reset_t)((1 - λ) V'_t + λ G_{t+1})
+    + reset_t V'_t]``, with ``G_T = V'_{T-1}`` at the end of the segment.
+
+    Args:
+        rewards: ``[time, *batch]`` rewards.
+        next_values: ``[time, *batch]`` values of the true next states.
+        resets: ``[time, *batch]`` episode ended after this transition (bool or 0/1).
+        terminations: ``[time, *batch]`` the episode ended in a terminal state.
+        discount: the discount factor γ.
+        trace_decay: λ (0: one-step TD targets, 1: Monte-Carlo returns bootstrapped at
+            time limits and at the end of the segment).
+        f: framework (default: inferred from ``rewards``).
+
+    Returns:
+        ``[time, *batch]`` λ-returns, in the dtype of ``rewards``.
+
+    Example:
+        >>> ivy_rl.lambda_returns(r, nv, resets, terms, discount=0.99, trace_decay=0.95)
+    """
+    xp = ivy.get_framework(rewards, f=f)
+    _check(
+        rewards, ("next_values", next_values), ("resets", resets), ("terminations", terminations)
+    )
+    return _lambda_returns(xp, rewards, next_values, resets, terminations, discount, trace_decay)
+
+
+def _advantages(xp, rewards, values, next_values, resets, terminations, discount, trace_decay):
+    cont = 1.0 - _flags(xp, resets, rewards)
+    alive = 1.0 - _flags(xp, terminations, rewards)
+    steps = rewards.shape[0]
+    following = xp.zeros_like(rewards[0])
+    out = [None] * steps
+    for t in range(steps - 1, -1, -1):
+        delta = rewards[t] + discount * alive[t] * next_values[t] - values[t]
+        following = delta + discount * trace_decay * cont[t] * following
+        out[t] = following
+    return xp.stack(out, axis=0)
+
+
+def generalized_advantages(
+    rewards: Array,
+    values: Array,
+    next_values: Array,
+    resets: Array,
+    terminations: Array,
+    *,
+    discount: float = 0.99,
+    trace_decay: float = 0.95,
+    f: Framework = None,
+) -> Array:
+    """Generalised advantage estimates (Schulman et al., 2016):
+    ``δ_t = r_t + γ (1 - term_t) V'_t - V_t`` and ``A_t = δ_t + γ λ (1 - reset_t) A_{t+1}``.
+
+    Where ``next_values[t] == values[t + 1]`` within episodes, ``A = lambda_returns - values``.
+
+    Args:
+        rewards: ``[time, *batch]`` rewards.
+        values: ``[time, *batch]`` values of the states the actions were taken in.
+        next_values: ``[time, *batch]`` values of the true next states.
+        resets, terminations: as for :func:`lambda_returns`.
+        discount: γ.
+        trace_decay: λ.
+        f: framework (default: inferred from ``rewards``).
+
+    Returns:
+        ``[time, *batch]`` advantages.
+
+    Example:
+        >>> adv = ivy_rl.generalized_advantages(r, v, nv, resets, terms, discount=0.99)
+    """
+    xp = ivy.get_framework(rewards, f=f)
+    _check(
+        rewards,
+        ("values", values),
+        ("next_values", next_values),
+        ("resets", resets),
+        ("terminations", terminations),
+    )
+    return _advantages(
+        xp, rewards, values, next_values, resets, terminations, discount, trace_decay
+    )
+
+
+def _n_step(xp, rewards, next_values, resets, terminations, discount, steps):
+    cut = _flags(xp, resets, rewards)
+    alive = 1.0 - _flags(xp, terminations, rewards)
+    # G^(0) shifted by one step gives V'_t: the one-step target's bootstrap.
+    returns = xp.concat([next_values[:1], next_values[:-1]], axis=0)
+    for _ in range(steps):
+        following = xp.concat([returns[1:], next_values[-1:]], axis=0)
+        bootstrap = cut * next_values + (1.0 - cut) * following
+        returns = rewards + discount * alive * bootstrap
+    return returns
+
+
+def n_step_returns(
+    rewards: Array,
+    next_values: Array,
+    resets: Array,
+    terminations: Array,
+    *,
+    discount: float = 0.99,
+    steps: int = 1,
+    f: Framework = None,
+) -> Array:
+    """n-step returns ``G_t = Σ_{k<n} γ^k r_{t+k} + γ^n V(s_{t+n})``, cut short at the end of
+    an episode (bootstrapped from ``next_values`` at a time limit, not at a termination) and at
+    the end of the segment (bootstrapped from the last ``next_values``).
+
+    Args:
+        rewards, next_values, resets, terminations: as for :func:`lambda_returns`.
+        discount: γ.
+        steps: n >= 1.
+        f: framework (default: inferred from ``rewards``).
+
+    Returns:
+        ``[time, *batch]`` n-step returns.
+
+    Example:
+        >>> g = ivy_rl.n_step_returns(r, nv, resets, terms, discount=0.99, steps=5)
+    """
+    if int(steps) != steps or steps < 1:
+        raise ValueError(f"n_step_returns: steps must be an integer >= 1, got {steps!r}")
+    xp = ivy.get_framework(rewards, f=f)
+    _check(
+        rewards, ("next_values", next_values), ("resets", resets), ("terminations", terminations)
+    )
+    return _n_step(xp, rewards, next_values, resets, terminations, discount, int(steps))

@@ -1,0 +1,238 @@
+"""The trainer, its environments and checkpoints, the commands, and Ray workers."""
+
+from __future__ import annotations
+
+import json
+import os
+import struct
+import subprocess
+import sys
+
+import gymnasium as gym
+import numpy as np
+import pytest
+
+import ivy
+import ivy_rl
+from ivy_rl import environments
+from ivy_rl.trainer import Trainer, latest_checkpoint
+
+TIME_COLUMNS = ("train/seconds", "train/epoch_seconds", "train/steps_per_second")
+PPO_TINY = dict(hidden_sizes=(16,), segment_size=24, batch_size=16, epochs=2)
+
+
+def _rows(rows):
+    return [{k: v for k, v in r.items() if k not in TIME_COLUMNS} for r in rows]
+
+
+def _run(out, steps, *, resume=False, f="torch", keep=False):
+    trainer = Trainer(
+        steps, epoch_steps=32, test_episodes=1, show_progress=False, keep_checkpoints=keep
+    )
+    return trainer.run(
+        ivy_rl.PPO(**PPO_TINY),
+        "CartPole-v1",
+        workers=2,
+        seed=5,
+        f=f,
+        compile=False,
+        out=str(out),
+        resume=resume,
+    )
+
+
+def test_resuming_gives_the_log_of_an_uninterrupted_run(tmp_path):
+    full = _run(tmp_path / "full", 128)
+    _run(tmp_path / "cut", 64)  # ends mid-episode and mid-segment (24 steps per worker)
+    cut = tmp_path / "cut"
+    assert latest_checkpoint(str(cut)).endswith("step_64")
+    resumed = _run(cut, 128, resume=True)
+    assert _rows(resumed) == _rows(full)
+    on_disk = ivy_rl.logger.read_log(str(cut / "log.csv"))
+    assert _rows(on_disk) == _rows(full)
+
+
+def test_a_torch_checkpoint_loads_and_continues_on_jax_and_tensorflow(tmp_path):
+    _run(tmp_path / "run", 64)
+    checkpoint = os.path.join(latest_checkpoint(str(tmp_path / "run")), "agent")
+    obs_space, act_space = gym.spaces.Box(-np.inf, np.inf, (4,)), gym.spaces.Discrete(2)
+    reference = ivy_rl.PPO(**PPO_TINY).initialize(obs_space, act_space, f="torch").load(checkpoint)
+    for framework in ("jax", "tensorflow"):
+        agent = ivy_rl.PPO(**PPO_TINY).initialize(obs_space, act_space, f=framework)
+        agent.load(checkpoint)
+        for a, b in zip(ivy.nest.flatten_nest(agent.v)[0], ivy.nest.flatten_nest(reference.v)[0]):
+            np.testing.assert_array_equal(ivy.to_numpy(a), ivy.to_numpy(b))
+        obs = np.random.default_rng(0).normal(size=(3, 4))
+        np.testing.assert_array_equal(agent.test_step(obs), reference.test_step(obs))
+    rows = _run(tmp_path / "run", 96, resume=True, f="jax")
+    assert rows[-1]["train/steps"] == 96 and len(rows) == 3
+
+
+def test_workers_keep_time_limits_apart_from_terminations():
+    workers = environments.Workers("Pendulum-v1", 2, seed=0)
+    workers.start()
+    for t in range(200):
+        next_obs, infos = workers.step(np.zeros((2, 1), np.float32))
+        if t < 199:
+            assert not infos["resets"].any()
+            np.testing.assert_array_equal(next_obs, infos["observations"])
+    # Pendulum's time limit: a reset that is not a termination; the true last observation is
+    # given apart from the first observation of the next episode
+    assert infos["resets"].all() and not infos["terminations"].any()
+    assert not np.allclose(next_obs, infos["observations"])
+    cart = environments.Workers("CartPole-v1", 1, seed=0)
+    cart.start()
+    for _ in range(500):
+        _, infos = cart.step(np.ones(1, np.int64))
+        if infos["resets"][0]:
+            break
+    assert infos["terminations"][0]
+    workers.close()
+    cart.close()
+
+
+def _observed(mode, count, seed, actions, **kwargs):
+    """Everything a run of Workers returns for fixed actions."""
+    workers = environments.Workers("CartPole-v1", count, seed=seed, vectorization=mode, **kwargs)
+    seen = [workers.start()]
+    for a in actions:
+        obs, infos = workers.step(a)
+        seen += [obs, infos["observations"], infos["rewards"], infos["resets"]]
+    workers.close()
+    return seen
+
+
+def _assert_same_runs(first, second):
+    for a, b in zip(first, second):
+        np.testing.assert_array_equal(a, b)
+
+
+def test_async_workers_match_sync_workers():
+    actions = np.random.default_rng(0).integers(0, 2, size=(60, 3))
+    _assert_same_runs(_observed("sync", 3, 2, actions), _observed("async", 3, 2, actions))
+
+
+def test_time_feature_counts_down_to_the_time_limit():
+    env = environments.TimeFeature(gym.make("Pendulum-v1"))
+    obs, _ = env.reset(seed=0)
+    assert obs.shape == (4,) and obs[-1] == 1.0
+    for _t in range(200):
+        obs, _, _, truncated, _ = env.step(np.zeros(1, np.float32))
+    np.testing.assert_allclose(obs[-1], 0.0)
+    assert truncated
+    short = environments.TimeFeature(gym.make("Pendulum-v1"), max_steps=4)
+    short.reset(seed=0)
+    np.testing.assert_allclose(short.step(np.zeros(1, np.float32))[0][-1], 0.75)
+    with pytest.raises(TypeError, match="Box observation space"):
+        environments.TimeFeature(gym.make("FrozenLake-v1"))
+
+
+def _scalars(folder):
+    """Scalars of TensorBoard event files, read from the records without tensorflow."""
+    from tensorboard.compat.proto.event_pb2 import Event
+
+    values = {}
+    for name in os.listdir(folder):
+        with open(os.path.join(folder, name), "rb") as fh:
+            data = fh.read()
+        i = 0
+        while i < len(data):
+            (length,) = struct.unpack("<Q", data[i : i + 8])
+            event = Event.FromString(data[i + 12 : i + 12 + length])
+            i += 12 + length + 4
+            for v in event.summary.value:
+                values.setdefault(v.tag, []).append(v.simple_value)
+    return values
+
+
+def test_train_plot_and_play_commands(tmp_path, capsys):
+    from ivy_rl import play, plot, train
+
+    out = str(tmp_path / "ppo-cartpole-0")
+    rows = train.main(
+        [
+            "--agent",
+            "PPO",
+            "--environment",
+            "CartPole-v1",
+            "--framework",
+            "jax",
+            "--steps",
+            "64",
+            "--epoch-steps",
+            "32",
+            "--workers",
+            "2",
+            "--seed",
+            "0",
+            "--out",
+            out,
+            "--agent-kwargs",
+            json.dumps(PPO_TINY),
+            "--env-kwargs",
+            '{"sutton_barto_reward": false}',
+            "--tensorboard",
+            "--test-episodes",
+            "1",
+        ]
+    )
+    assert len(rows) == 2
+    header = open(os.path.join(out, "log.csv")).readline().strip().split(",")
+    for column in (
+        "train/steps",
+        "train/seconds",
+        "train/episode_score/mean",
+        "test/episode_score/mean",
+        "test/episode_length/mean",
+        "actor/loss",
+        "critic/loss",
+    ):
+        assert column in header, column
+    assert "test/episode_score/mean" in capsys.readouterr().out  # the console table
+    scalars = _scalars(os.path.join(out, "tensorboard"))
+    np.testing.assert_allclose(scalars["train/steps"], [32, 64])
+    assert len(scalars["actor/loss"]) == 1  # the first epoch had no update yet
+    curves = plot.main([out, out, "--out", str(tmp_path / "curves.png"), "--labels", "a", "b"])
+    assert set(curves) == {"a", "b"} and os.path.getsize(tmp_path / "curves.png") > 1000
+    results = play.main(
+        [out, "--episodes", "1", "--video", str(tmp_path / "play.gif"), "-f", "torch"]
+    )
+    assert results[0]["length"] >= 1 and os.path.getsize(tmp_path / "play.gif") > 1000
+
+
+def test_command_line_errors_list_what_is_available():
+    from ivy_rl import train
+
+    with pytest.raises(ValueError, match="available agents"):
+        train.main(["--agent", "DQN"])
+    with pytest.raises(ValueError, match="registered environments"):
+        train.main(["--environment", "NoSuchEnv-v0"])
+    done = subprocess.run(
+        [sys.executable, "-m", "ivy_rl.train", "--agent", "SAC"],
+        capture_output=True,
+        text=True,
+        env={**os.environ, "PYTHONPATH": os.getcwd()},
+    )
+    assert done.returncode == 2 and "available agents: A2C, PPO" in done.stderr
+
+
+def test_ray_workers_match_sync_workers():
+    ray = pytest.importorskip("ray", reason="Ray workers need the [distributed] extra")
+    ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
+    try:
+        actions = np.random.default_rng(1).integers(0, 2, size=(40, 4))
+        _assert_same_runs(
+            _observed("sync", 4, 3, actions), _observed("ray", 4, 3, actions, ray_groups=2)
+        )
+        rows = Trainer(32, epoch_steps=32, test_episodes=1, show_progress=False).run(
+            ivy_rl.PPO(**PPO_TINY),
+            "CartPole-v1",
+            workers=4,
+            vectorization="ray",
+            ray_groups=2,
+            f="torch",
+            compile=False,
+        )
+        assert rows[-1]["train/steps"] == 32
+    finally:
+        ray.shutdown()

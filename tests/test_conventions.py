@@ -1,0 +1,172 @@
+"""Conventions that hold across the repository: the core and every applied library.
+
+- ``f`` (the framework choice) is keyword-only with default None on every public function and
+  method of ``ivy`` and of every applied package (``ivy_mechanics``, ``ivy_gym``, ...): positional
+  ``f`` would make ``fn(x, 'zyx')`` and ``fn(x, 'torch')`` ambiguous.
+- Applied packages import nothing private from another package (``ivy.core._dispatch``,
+  ``ivy_mechanics._kernels``, ...): shared numerics live in the core's public API.
+- ``import <package>`` imports no framework (tensorflow alone takes seconds).
+
+Applied packages are found on disk (every top-level ``ivy_*`` package), so a new library is
+checked the day it lands.
+"""
+
+from __future__ import annotations
+
+import ast
+import importlib
+import inspect
+import pathlib
+import subprocess
+import sys
+import types
+
+import pytest
+
+import ivy
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+APPLIED = sorted(
+    p.name for p in ROOT.iterdir() if p.name.startswith("ivy_") and (p / "__init__.py").exists()
+)
+PACKAGES = ["ivy", *APPLIED]
+FRAMEWORKS = ("torch", "jax", "tensorflow")
+
+
+def _public_callables(module: types.ModuleType, prefix: str):
+    """``(qualified name, callable)`` for every public function, class constructor and public
+    method reachable from ``module.__all__`` (recursing into public submodules and namespaces)."""
+    seen: set[int] = set()
+    out = []
+
+    def walk(mod, path):
+        for name in getattr(mod, "__all__", ()):
+            obj = getattr(mod, name)
+            if id(obj) in seen:
+                continue
+            seen.add(id(obj))
+            qual = f"{path}.{name}"
+            if isinstance(obj, types.ModuleType):
+                walk(obj, qual)
+            elif inspect.isclass(obj):
+                for attr, value in vars(obj).items():
+                    if attr.startswith("_") and attr not in ("__init__", "__call__"):
+                        continue
+                    value = (
+                        value.__func__ if isinstance(value, (classmethod, staticmethod)) else value
+                    )
+                    if inspect.isfunction(value):
+                        out.append((f"{qual}.{attr}", value))
+            elif callable(obj):
+                out.append((qual, obj))
+
+    walk(module, prefix)
+    return out
+
+
+def _framework_parameter_problem(fn) -> str | None:
+    try:
+        sig = inspect.signature(fn)
+    except (TypeError, ValueError):  # builtins without a signature take no f
+        return None
+    p = sig.parameters.get("f")
+    if p is None:
+        return None
+    if p.kind is not p.KEYWORD_ONLY:
+        return f"f is {p.kind.description}"
+    if p.default is not None:
+        return f"f defaults to {p.default!r}, not None"
+    return None
+
+
+@pytest.mark.parametrize("package", PACKAGES)
+def test_f_is_keyword_only(package):
+    module = importlib.import_module(package)
+    callables = _public_callables(module, package)
+    if package == "ivy":
+        callables += _public_callables(ivy.nest, "ivy.nest")
+    assert callables, f"{package} exports no public callables"
+    problems = [
+        f"{name}{inspect.signature(fn)}: {problem}"
+        for name, fn in callables
+        if (problem := _framework_parameter_problem(fn))
+    ]
+    assert not problems, "\n".join(problems)
+
+
+def test_every_core_function_takes_f():
+    """Every dispatched function and composition of the core can be told its framework."""
+    missing = [
+        name
+        for name in ivy.core.__all__
+        if callable(fn := getattr(ivy.core, name))
+        and getattr(fn, "__ivy_kind__", None) in ("dispatch", "composition")
+        and "f" not in inspect.signature(fn).parameters
+    ]
+    assert not missing, missing
+
+
+def test_every_mechanics_function_takes_f():
+    import ivy_mechanics
+
+    missing = [
+        name
+        for name, fn in _public_callables(ivy_mechanics, "ivy_mechanics")
+        if "f" not in inspect.signature(fn).parameters
+    ]
+    assert not missing, missing
+
+
+def test_the_check_catches_positional_f():
+    """The walker sees a positional ``f`` (so the tests above can fail)."""
+
+    def positional(x, f=None): ...
+
+    def keyword(x, *, f=None): ...
+
+    def wrong_default(x, *, f="torch"): ...
+
+    assert _framework_parameter_problem(positional).startswith("f is positional")
+    assert _framework_parameter_problem(keyword) is None
+    assert "defaults to" in _framework_parameter_problem(wrong_default)
+
+
+def _private(name: str) -> bool:
+    return name.startswith("_") and not (name.startswith("__") and name.endswith("__"))
+
+
+def _private_imports(package: str) -> list[str]:
+    """Imports of another package's private module or name, anywhere in ``package``'s files."""
+    found = []
+    for path in sorted((ROOT / package).rglob("*.py")):
+        tree = ast.parse(path.read_text(), str(path))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+                modules = [node.module]
+                names = [a.name for a in node.names]
+            elif isinstance(node, ast.Import):
+                modules, names = [a.name for a in node.names], []
+            else:
+                continue
+            for module in modules:
+                parts = module.split(".")
+                if parts[0] == package:
+                    continue  # a package's own private modules are its business
+                if any(_private(p) for p in parts) or any(_private(n) for n in names):
+                    where = f"{path.relative_to(ROOT)}:{node.lineno}"
+                    found.append(f"{where}: from {module} import {', '.join(names) or '*'}")
+    return found
+
+
+@pytest.mark.parametrize("package", APPLIED)
+def test_applied_packages_import_nothing_private(package):
+    assert not _private_imports(package), "\n".join(_private_imports(package))
+
+
+@pytest.mark.parametrize("package", PACKAGES)
+def test_import_loads_no_framework(package):
+    code = f"import sys, {package}; print(sorted(m for m in {FRAMEWORKS!r} if m in sys.modules))"
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True
+    ).stdout.strip()
+    assert out == "[]", f"import {package} imported {out}"
