@@ -1,0 +1,110 @@
+"""Array helpers shared by ivy_robot's kernels (private). Every helper takes the backend
+namespace ``xp`` first; nothing here dispatches.
+
+Model constants are float64 numpy arrays computed once; :func:`constants` converts them, per
+call, to the dtype and device of the input (under ``jax.jit``, ``tf.function`` and
+``torch.compile`` they become constants of the compiled program, so the conversion costs nothing
+there). They are converted from Python lists, not numpy arrays: ``ivy.torch.asarray`` reads
+``ndarray.flags``, which ``torch.compile`` cannot trace (a graph break per constant). Nothing is
+cached between calls: an array made while ``tf.function`` or ``jax.jit`` traces belongs to that
+trace.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def to_backend(xp, value, like):
+    """``value`` (numpy array, number, nested list, or array) as an array of ``like``'s
+    framework, dtype and device; arrays that already are pass through, keeping gradients."""
+    if isinstance(value, type(like)) and value.dtype == like.dtype:
+        return value
+    if isinstance(value, (np.ndarray, np.generic)):
+        value = value.tolist()
+    return xp.asarray(value, dtype=like.dtype, device=xp.dev(like))
+
+
+def as_lists(arrays: dict) -> dict:
+    """``{name: numpy array}`` -> ``{name: nested list}``, once, when a model is built: kernels
+    then touch no numpy object (``torch.compile`` traces numpy arrays and breaks its graph on
+    ``tolist``)."""
+    return {k: np.asarray(v, dtype=np.float64).tolist() for k, v in arrays.items()}
+
+
+def constants(xp, like, lists: dict) -> dict:
+    """``{name: nested list}`` (from :func:`as_lists`) -> ``{name: backend array}`` of ``like``'s
+    dtype and device."""
+    dtype, device = like.dtype, xp.dev(like)
+    return {k: xp.asarray(v, dtype=dtype, device=device) for k, v in lists.items()}
+
+
+def check_last_axis(xp, x, size: int, name: str, owner: str, meaning: str) -> None:
+    """Raise a ValueError unless ``x`` is ``[..., size]``, and a TypeError unless it is
+    floating."""
+    shape = tuple(x.shape)
+    if len(shape) == 0 or shape[-1] != size:
+        raise ValueError(f"{owner}: {name} has shape {shape}; its last axis must hold {meaning}")
+    check_floating(xp, x, name, owner)
+
+
+def check_floating(xp, x, name: str, owner: str) -> None:
+    """Raise a TypeError unless ``x`` has a real floating dtype."""
+    if not xp.isdtype(x.dtype, "real floating"):
+        raise TypeError(
+            f"{owner}: {name} has dtype {x.dtype}; give a floating-point array (float32 or float64)"
+        )
+
+
+def batch_shape_of(x, trailing: int) -> tuple | None:
+    """The leading shape of ``x`` before its last ``trailing`` axes; None if unknown (a
+    ``tf.function`` traced with a None dimension)."""
+    shape = tuple(x.shape)
+    lead = shape[: len(shape) - trailing]
+    return None if any(d is None for d in lead) else lead
+
+
+def broadcast_leading(xp, const, like, like_trailing: int):
+    """``const`` (unbatched) broadcast to the batch shape of ``like``."""
+    lead = batch_shape_of(like, like_trailing)
+    if lead is not None:
+        return xp.broadcast_to(const, lead + tuple(const.shape))
+    # unknown batch shape: broadcast by adding zeros of the right leading shape
+    zeros = xp.zeros_like(like[(Ellipsis,) + (0,) * like_trailing])
+    return const + zeros[(Ellipsis,) + (None,) * len(const.shape)]
+
+
+def gather_spec(indices, size: int):
+    """A static gather of ``x[..., indices]`` along a last axis of length ``size``:
+    ``("slice", start, stop)`` when the indices are contiguous, else ``("matrix", rows)``, a 0/1
+    selection matrix as nested lists (exact: sums of ``x * 1`` and zeros; no fancy indexing,
+    which tensorflow lacks)."""
+    indices = [int(i) for i in indices]
+    if indices and indices == list(range(indices[0], indices[0] + len(indices))):
+        return ("slice", indices[0], indices[0] + len(indices))
+    rows = [[1.0 if i == j else 0.0 for j in indices] for i in range(size)]
+    return ("matrix", rows)
+
+
+def gather_last(xp, x, spec):
+    """``x[..., indices]`` for a :func:`gather_spec`."""
+    if spec[0] == "slice":
+        return x[..., spec[1] : spec[2]]
+    selection = xp.asarray(spec[1], dtype=x.dtype, device=xp.dev(x))
+    return xp.matmul(x[..., None, :], selection)[..., 0, :]
+
+
+def assemble_poses(xp, rot, pos):
+    """``[[R, t], [0, 0, 0, 1]]`` ``[..., 4, 4]`` from ``R`` ``[..., 3, 3]`` and ``t``
+    ``[..., 3]``."""
+    top = xp.concat([rot, pos[..., None]], axis=-1)
+    bottom = xp.concat(
+        [xp.zeros_like(top[..., 0:1, 0:3]), xp.ones_like(top[..., 0:1, 0:1])], axis=-1
+    )
+    return xp.concat([top, bottom], axis=-2)
+
+
+def skew(axis: np.ndarray) -> np.ndarray:
+    """The cross-product matrix of a numpy 3-vector."""
+    x, y, z = axis
+    return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])

@@ -1,0 +1,641 @@
+"""Kinematic trees from MJCF: forward kinematics of every body and site, and analytic Jacobians,
+written once for every backend.
+
+The model is parsed once through MuJoCo (:func:`ivy_robot.load_mjcf`) into float64 numpy
+constants; forward kinematics is then plain array code on numpy, torch, jax or tensorflow, with
+any leading batch shape, differentiable and compilable. MuJoCo never runs inside it.
+
+Conventions are MuJoCo's (``mj_kinematics``): bodies and sites in the model's order, body 0 is the
+world; a body's pose is its parent's pose composed with the body's ``pos``/``quat`` and then with
+its joints, in order:
+
+- hinge: a rotation by ``qpos - qpos0`` about the joint axis through the joint's ``pos``;
+- slide: a translation by ``qpos - qpos0`` along the joint axis;
+- ball: a rotation by the quaternion ``qpos[adr:adr+4]`` (MuJoCo's ``[w, x, y, z]``, normalised)
+  about the joint's ``pos``;
+- free: the world pose ``qpos[adr:adr+3]``, ``qpos[adr+3:adr+7]`` (``[w, x, y, z]``), whatever the
+  body's ``pos``/``quat``.
+
+Mocap bodies are placed at their model ``pos``/``quat`` (MuJoCo's default ``mocap_pos``).
+Jacobians follow ``mj_jac``: columns in MuJoCo's dof order (``nv``), linear rows then angular
+rows; ball and free rotational dofs are angular velocities in the body frame (the columns of the
+body's rotation), free translational dofs are world x, y, z.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any, NamedTuple
+
+import numpy as np
+
+import ivy
+import ivy_mechanics as mech
+from ivy.typing import Array, Framework
+from ivy_robot import _arrays as A
+from ivy_robot.mjcf import SUPPORTED_JOINT_TYPES, load_mjcf, mujoco_quaternion_to_rot_mat
+
+__all__ = ["KinematicTree", "BodySpheres"]
+
+_FREE, _BALL, _SLIDE, _HINGE = 0, 1, 2, 3
+_GEOM_SPHERE, _GEOM_CAPSULE, _GEOM_CYLINDER = 2, 3, 5
+
+
+class BodySpheres(NamedTuple):
+    """Spheres attached to bodies (numpy constants), e.g. a collision model of a robot.
+
+    Attributes:
+        body_ids: the body of each sphere *[num_spheres]* (int).
+        centres: centres in their body's frame *[num_spheres, 3]*.
+        radii: radii *[num_spheres]*.
+    """
+
+    body_ids: np.ndarray
+    centres: np.ndarray
+    radii: np.ndarray
+
+
+class _BodyPlan(NamedTuple):
+    """How one body's world pose is computed (all indices are static)."""
+
+    kind: str  # "world", "static", "fixed", "free", "chain"
+    parent: int | None  # the moving parent to compose with, or None
+    mat: int  # index into the 3x3 constants ("static", "fixed", non-hinge "chain" start)
+    vec: int  # index into the vector constants
+    hinge: int | None  # index in the vectorised first-hinge group ("chain")
+    joints: tuple[int, ...]  # the body's joints ("chain": all after a vectorised first hinge
+    # are applied one by one)
+
+
+class KinematicTree:
+    """A MuJoCo kinematic tree as float64 constants; forward kinematics and Jacobians on any
+    backend.
+
+    Build it with :meth:`from_mjcf`. Attributes (numpy, MuJoCo's order): ``body_names``,
+    ``site_names``, ``joint_names``, ``parent_ids``, ``nbody``, ``nsite``, ``njnt``, ``nq``,
+    ``nv``, ``qpos0`` (the reference configuration), ``qpos_lower`` / ``qpos_upper`` (joint
+    ranges per qpos entry, infinite where unlimited and for quaternions and free positions).
+
+    Example:
+        >>> tree = KinematicTree.from_mjcf(panda_mjcf())
+        >>> tree.forward_kinematics(np.zeros((5, tree.nq))).shape   # any backend's arrays
+        (5, 10, 4, 4)
+    """
+
+    def __init__(self, model: Any) -> None:
+        """Read a compiled ``mujoco.MjModel``; prefer :meth:`from_mjcf`."""
+        m = model
+        types = np.asarray(m.jnt_type, dtype=np.int64)
+        unknown = sorted(set(types.tolist()) - set(SUPPORTED_JOINT_TYPES))
+        if unknown:
+            raise ValueError(
+                f"KinematicTree: joint types {unknown} are not supported; supported are "
+                f"{SUPPORTED_JOINT_TYPES}"
+            )
+        self.nbody, self.njnt, self.nsite = int(m.nbody), int(m.njnt), int(m.nsite)
+        self.nq, self.nv = int(m.nq), int(m.nv)
+        self.body_names = tuple(m.body(i).name for i in range(self.nbody))
+        self.joint_names = tuple(m.joint(i).name for i in range(self.njnt))
+        self.site_names = tuple(m.site(i).name for i in range(self.nsite))
+        self.parent_ids = np.asarray(m.body_parentid, dtype=np.int64).copy()
+        self.qpos0 = np.asarray(m.qpos0, dtype=np.float64).copy()
+        self.joint_types = tuple(SUPPORTED_JOINT_TYPES[t] for t in types.tolist())
+
+        self._jnt_type = types
+        self._jnt_body = np.asarray(m.jnt_bodyid, dtype=np.int64)
+        self._jnt_qadr = np.asarray(m.jnt_qposadr, dtype=np.int64)
+        self._jnt_dadr = np.asarray(m.jnt_dofadr, dtype=np.int64)
+        self._jnt_axis = np.asarray(m.jnt_axis, dtype=np.float64).copy()
+        self._jnt_pos = np.asarray(m.jnt_pos, dtype=np.float64).copy()
+        self._body_pos = np.asarray(m.body_pos, dtype=np.float64).copy()
+        self._body_rot = mujoco_quaternion_to_rot_mat(np.asarray(m.body_quat))
+        self._site_body = np.asarray(m.site_bodyid, dtype=np.int64).copy()
+        self._site_pos = np.asarray(m.site_pos, dtype=np.float64).copy()
+        self._site_rot = mujoco_quaternion_to_rot_mat(np.asarray(m.site_quat).reshape(-1, 4))
+        self._geom_type = np.asarray(m.geom_type, dtype=np.int64).copy()
+        self._geom_body = np.asarray(m.geom_bodyid, dtype=np.int64).copy()
+        self._geom_size = np.asarray(m.geom_size, dtype=np.float64).copy()
+        self._geom_pos = np.asarray(m.geom_pos, dtype=np.float64).copy()
+        self._geom_rot = mujoco_quaternion_to_rot_mat(np.asarray(m.geom_quat).reshape(-1, 4))
+        self._qpos_limits(m)
+        self._build_plan(np.asarray(m.body_jntadr), np.asarray(m.body_jntnum))
+        self._build_dofs()
+        self._build_kernel_data()
+
+    # ------------------------------------------------------------------------------------------
+    # Construction
+    # ------------------------------------------------------------------------------------------
+
+    @classmethod
+    def from_mjcf(cls, source: Any) -> KinematicTree:
+        """Parse an MJCF model once, through MuJoCo, into a kinematic tree.
+
+        Args:
+            source: a path to an ``.xml`` file, an MJCF XML string, or a ``mujoco.MjModel``.
+
+        Returns:
+            The tree.
+
+        Raises:
+            ValueError: an unsupported joint type, or a model MuJoCo cannot compile.
+
+        Example:
+            >>> tree = KinematicTree.from_mjcf(panda_mjcf())   # or a path, or an MjModel
+            >>> tree.body_names[:3], tree.nq
+            (('world', 'link0', 'link1'), 7)
+        """
+        return cls(load_mjcf(source))
+
+    def _qpos_limits(self, m) -> None:
+        lower = np.full(self.nq, -np.inf)
+        upper = np.full(self.nq, np.inf)
+        limited = np.asarray(m.jnt_limited, dtype=bool)
+        ranges = np.asarray(m.jnt_range, dtype=np.float64)
+        for j in range(self.njnt):
+            if limited[j] and self._jnt_type[j] in (_HINGE, _SLIDE):
+                lower[self._jnt_qadr[j]], upper[self._jnt_qadr[j]] = ranges[j]
+        self.qpos_lower, self.qpos_upper = lower, upper
+
+    def _build_plan(self, body_jntadr, body_jntnum) -> None:
+        """Sort every body into a kind and precompute its constants (numpy float64)."""
+        mats, vecs = [np.eye(3)], [np.zeros(3)]
+        hinge = {k: [] for k in ("A", "B", "C", "P", "K", "K2", "qadr", "q0")}
+        world_rot = {0: np.eye(3)}  # world poses of static bodies
+        world_pos = {0: np.zeros(3)}
+        plan = [_BodyPlan("world", None, 0, 0, None, ())]
+        for i in range(1, self.nbody):
+            parent = int(self.parent_ids[i])
+            joints = tuple(range(int(body_jntadr[i]), int(body_jntadr[i] + body_jntnum[i])))
+            rot, pos = self._body_rot[i], self._body_pos[i]
+            parent_static = parent in world_rot
+            if parent_static:  # fold the parent's constant pose into this body's offset
+                rot, pos = world_rot[parent] @ rot, world_pos[parent] + world_rot[parent] @ pos
+            if not joints and parent_static:
+                world_rot[i], world_pos[i] = rot, pos
+                mats.append(rot), vecs.append(pos)
+                plan.append(_BodyPlan("static", None, len(mats) - 1, len(vecs) - 1, None, ()))
+            elif not joints:
+                mats.append(rot), vecs.append(pos)
+                plan.append(_BodyPlan("fixed", parent, len(mats) - 1, len(vecs) - 1, None, ()))
+            elif self._jnt_type[joints[0]] == _FREE:
+                plan.append(_BodyPlan("free", None, 0, 0, None, joints))
+            else:
+                moving_parent = None if parent_static else parent
+                j = joints[0]
+                if self._jnt_type[j] == _HINGE:
+                    k = A.skew(self._jnt_axis[j])
+                    k2 = k @ k
+                    c = self._jnt_pos[j]
+                    hinge["A"].append(rot)
+                    hinge["B"].append(rot @ k)
+                    hinge["C"].append(rot @ k2)
+                    hinge["P"].append(pos)
+                    hinge["K"].append(rot @ k @ c)
+                    hinge["K2"].append(rot @ k2 @ c)
+                    hinge["qadr"].append(self._jnt_qadr[j])
+                    hinge["q0"].append(self.qpos0[self._jnt_qadr[j]])
+                    index = len(hinge["A"]) - 1
+                    plan.append(_BodyPlan("chain", moving_parent, 0, 0, index, joints))
+                else:
+                    mats.append(rot), vecs.append(pos)
+                    plan.append(
+                        _BodyPlan(
+                            "chain", moving_parent, len(mats) - 1, len(vecs) - 1, None, joints
+                        )
+                    )
+        self._plan = tuple(plan)
+        self._hinge_qadr = np.asarray(hinge.pop("qadr"), dtype=np.int64)
+        consts = {"mats": np.stack(mats), "vecs": np.stack(vecs)}
+        if len(self._hinge_qadr):
+            consts.update({"h" + k: np.stack(v) for k, v in hinge.items()})
+        # per-joint constants, for joints applied one by one
+        one_by_one = any(len(p.joints) > (p.hinge is not None) for p in plan if p.kind == "chain")
+        if one_by_one:
+            consts["jK"] = np.stack([A.skew(a) for a in self._jnt_axis])
+            consts["jK2"] = consts["jK"] @ consts["jK"]
+            consts["jpos"] = self._jnt_pos
+            consts["jaxis"] = self._jnt_axis
+        self._consts = consts
+
+    def _build_dofs(self) -> None:
+        """Per-dof flags and the dof order of the Jacobian's blocks."""
+        hinge_slide = [j for j in range(self.njnt) if self._jnt_type[j] in (_HINGE, _SLIDE)]
+        others = [j for j in range(self.njnt) if self._jnt_type[j] in (_BALL, _FREE)]
+        self._hs_joints = tuple(hinge_slide)
+        self._ball_free_joints = tuple(others)
+        order = [int(self._jnt_dadr[j]) for j in hinge_slide]
+        rotational = []
+        for j in range(self.njnt):
+            kind = self._jnt_type[j]
+            rotational += {_HINGE: [1.0], _SLIDE: [0.0], _BALL: [1.0] * 3}.get(
+                kind, [0.0] * 3 + [1.0] * 3
+            )
+        for j in others:
+            n = 3 if self._jnt_type[j] == _BALL else 6
+            order += list(range(int(self._jnt_dadr[j]), int(self._jnt_dadr[j]) + n))
+        # the blocks are computed hinges/slides first, then balls/frees; permute to dof order
+        self._dof_permutation = None
+        if order != list(range(self.nv)):
+            perm = np.zeros((self.nv, self.nv))
+            perm[np.asarray(order), np.arange(self.nv)] = 1.0
+            self._dof_permutation = perm
+        # dof chains: the dofs of a body and of its ancestors
+        chains = np.zeros((self.nbody, self.nv))
+        for i in range(1, self.nbody):
+            chains[i] = chains[self.parent_ids[i]]
+            for j in np.flatnonzero(self._jnt_body == i):
+                n = {_HINGE: 1, _SLIDE: 1, _BALL: 3, _FREE: 6}[int(self._jnt_type[j])]
+                chains[i, self._jnt_dadr[j] : self._jnt_dadr[j] + n] = 1.0
+        self._chains = chains
+        self._dof_consts = {
+            "rot": np.asarray(rotational).reshape(self.nv, 1),
+            "trans": 1.0 - np.asarray(rotational).reshape(self.nv, 1),
+            "hs_axis": self._jnt_axis[list(hinge_slide)].reshape(-1, 3),
+            "hs_pos": self._jnt_pos[list(hinge_slide)].reshape(-1, 3),
+            "eye": np.eye(3),
+            "jpos": self._jnt_pos.reshape(-1, 3),
+        }
+        if self._dof_permutation is not None:
+            self._dof_consts["perm"] = self._dof_permutation
+
+    def _build_kernel_data(self) -> None:
+        """Everything the kernels read, as Python ints, floats and nested lists: no numpy object
+        is touched while a function is traced (``torch.compile`` breaks its graph on numpy)."""
+        self._k_consts = A.as_lists(self._consts)
+        self._k_dofs = A.as_lists(self._dof_consts)
+        self._k_hinge = A.gather_spec(self._hinge_qadr, self.nq)
+        self._k_joints = tuple(
+            (int(t), int(q), float(self.qpos0[q]), int(b))
+            for t, q, b in zip(self._jnt_type, self._jnt_qadr, self._jnt_body)
+        )
+        self._k_site_body = tuple(int(b) for b in self._site_body)
+        self._k_sites = A.as_lists({"r": self._site_rot.reshape(-1, 3, 3), "p": self._site_pos})
+        self._k_site_each = tuple(
+            A.as_lists({"r": self._site_rot[s], "p": self._site_pos[s]}) for s in range(self.nsite)
+        )
+        self._k_chain = tuple(self._chains[b][:, None].tolist() for b in range(self.nbody))
+
+    # ------------------------------------------------------------------------------------------
+    # Names
+    # ------------------------------------------------------------------------------------------
+
+    def body_id(self, body: str | int) -> int:
+        """The index of a body given by name (or index, checked).
+
+        Args:
+            body: a body name, or its index.
+
+        Returns:
+            The index, in MuJoCo's order.
+
+        Example:
+            >>> tree.body_id("link1")     # tree: the Panda of panda_mjcf()
+            2
+        """
+        return _lookup(body, self.body_names, "body")
+
+    def site_id(self, site: str | int) -> int:
+        """The index of a site given by name (or index, checked).
+
+        Args:
+            site: a site name, or its index.
+
+        Returns:
+            The index, in MuJoCo's order.
+
+        Example:
+            >>> tree.site_id("grasp")
+            1
+        """
+        return _lookup(site, self.site_names, "site")
+
+    def __repr__(self) -> str:
+        kinds = ", ".join(sorted(set(self.joint_types))) or "none"
+        return (
+            f"KinematicTree(nbody={self.nbody}, njnt={self.njnt}, nq={self.nq}, nv={self.nv}, "
+            f"nsite={self.nsite}, joints: {kinds})"
+        )
+
+    # ------------------------------------------------------------------------------------------
+    # Kinematics
+    # ------------------------------------------------------------------------------------------
+
+    def forward_kinematics(self, qpos: Array, *, f: Framework = None) -> Array:
+        """World poses of every body, as ``mj_kinematics`` computes ``xpos`` and ``xmat``.
+
+        Args:
+            qpos: joint positions *[batch_shape, nq]* (ball and free quaternions ``[w, x, y, z]``).
+            f: framework name or namespace; inferred from ``qpos`` if None.
+
+        Returns:
+            Homogeneous poses *[batch_shape, nbody, 4, 4]*; body 0 is the world (identity).
+
+        Example:
+            >>> T = tree.forward_kinematics(np.zeros(tree.nq))
+            >>> T[tree.body_id("hand"), :3, 3].round(3)      # its world position
+            array([0.088, 0.   , 0.926])
+        """
+        xp = ivy.get_framework(qpos, f=f)
+        self._check_qpos(xp, qpos)
+        rots, poss, _ = self._frames(xp, qpos)
+        rot = _stack_batched(xp, rots, qpos, -3)
+        pos = _stack_batched(xp, poss, qpos, -2)
+        return A.assemble_poses(xp, rot, pos)
+
+    def site_poses(self, qpos: Array, *, f: Framework = None) -> Array:
+        """World poses of every site (``site_xpos``, ``site_xmat``).
+
+        Args:
+            qpos: joint positions *[batch_shape, nq]*.
+            f: framework name or namespace; inferred from ``qpos`` if None.
+
+        Returns:
+            Homogeneous poses *[batch_shape, nsite, 4, 4]*.
+
+        Example:
+            >>> tree.site_poses(np.zeros((3, tree.nq))).shape
+            (3, 2, 4, 4)
+        """
+        xp = ivy.get_framework(qpos, f=f)
+        self._check_qpos(xp, qpos)
+        if self.nsite == 0:
+            shape = tuple(qpos.shape[:-1]) + (0, 4, 4)
+            return xp.zeros(shape, dtype=qpos.dtype, device=xp.dev(qpos))
+        rots, poss, _ = self._frames(xp, qpos)
+        c = A.constants(xp, qpos, self._k_sites)
+        body_rot = _stack_batched(xp, [rots[b] for b in self._k_site_body], qpos, -3)
+        body_pos = _stack_batched(xp, [poss[b] for b in self._k_site_body], qpos, -2)
+        rot = xp.matmul(body_rot, c["r"])
+        pos = body_pos + xp.matvec(body_rot, c["p"])
+        return A.assemble_poses(xp, rot, pos)
+
+    def transform_points(
+        self, qpos: Array, bodies: Sequence[int | str], points: Array, *, f: Framework = None
+    ) -> Array:
+        """World positions of points attached to bodies.
+
+        Args:
+            qpos: joint positions *[batch_shape, nq]*.
+            bodies: the body (index or name) of each point, length ``num_points``.
+            points: the points in their body's frame *[num_points, 3]* (or batched like qpos,
+                *[batch_shape, num_points, 3]*).
+            f: framework name or namespace; inferred from ``qpos`` if None.
+
+        Returns:
+            World positions *[batch_shape, num_points, 3]*.
+
+        Example:
+            >>> tree.transform_points(np.zeros(7), ["hand"], np.zeros((1, 3))).round(3)
+            array([[0.088, 0.   , 0.926]])
+        """
+        xp = ivy.get_framework(qpos, f=f)
+        self._check_qpos(xp, qpos)
+        ids = [self.body_id(b) for b in bodies]
+        rots, poss, _ = self._frames(xp, qpos)
+        body_rot = _stack_batched(xp, [rots[b] for b in ids], qpos, -3)
+        body_pos = _stack_batched(xp, [poss[b] for b in ids], qpos, -2)
+        points = A.to_backend(xp, points, qpos)
+        return body_pos + xp.matvec(body_rot, points)
+
+    def jacobian(
+        self,
+        qpos: Array,
+        body: str | int | None = None,
+        *,
+        site: str | int | None = None,
+        point: Array | None = None,
+        f: Framework = None,
+    ) -> Array:
+        """The Jacobian of a point attached to a body (``mj_jac``, ``mj_jacBody``,
+        ``mj_jacSite``), computed analytically.
+
+        Args:
+            qpos: joint positions *[batch_shape, nq]*.
+            body: the body (name or index); give ``body`` or ``site``.
+            site: a site (name or index) instead of a body: the point is the site's origin.
+            point: a point in the body's (or site's) frame *[3]* or *[batch_shape, 3]*; by
+                default the frame's origin (``mj_jacBody`` / ``mj_jacSite``).
+            f: framework name or namespace; inferred from ``qpos`` if None.
+
+        Returns:
+            *[batch_shape, 6, nv]*: rows 0-2 the linear velocity of the point per unit dof
+            velocity (``jacp``), rows 3-5 the angular velocity (``jacr``), in the world frame.
+
+        Example:
+            >>> J = tree.jacobian(np.zeros(7), "hand")
+            >>> J.shape, J[3:, 0]         # joint 1 turns the hand about the world z axis
+            ((6, 7), array([0., 0., 1.]))
+        """
+        xp = ivy.get_framework(qpos, f=f)
+        self._check_qpos(xp, qpos)
+        if (body is None) == (site is None):
+            raise ValueError("KinematicTree.jacobian: give exactly one of body= or site=")
+        rots, poss, joint_frames = self._frames(xp, qpos, joint_frames=True)
+        if site is not None:
+            s = self.site_id(site)
+            b = self._k_site_body[s]
+            c = A.constants(xp, qpos, self._k_site_each[s])
+            frame_rot = xp.matmul(rots[b], c["r"])
+            frame_pos = poss[b] + xp.matvec(rots[b], c["p"])
+        else:
+            b = self.body_id(body)
+            frame_rot, frame_pos = rots[b], poss[b]
+        target = frame_pos
+        if point is not None:
+            point = A.to_backend(xp, point, qpos)
+            target = frame_pos + xp.matvec(frame_rot, point)
+        axes, anchors = self._dof_axes(xp, qpos, rots, poss, joint_frames)
+        c = A.constants(xp, qpos, {**self._k_dofs, "chain": self._k_chain[b]})
+        offset = target[..., None, :] - anchors
+        linear = c["rot"] * xp.cross(axes, offset, axis=-1) + c["trans"] * axes
+        angular = c["rot"] * axes
+        jac = xp.concat([linear, angular], axis=-1) * c["chain"]
+        return xp.swapaxes(jac, -1, -2)
+
+    def collision_spheres(
+        self, spacing: float = 0.05, *, bodies: Sequence[str | int] | None = None
+    ) -> BodySpheres:
+        """Spheres covering the sphere, capsule and cylinder geoms of the moving bodies: one per
+        sphere, and along each capsule's or cylinder's axis, centres at most ``spacing`` apart.
+
+        Args:
+            spacing: the largest distance between neighbouring centres along an axis (metres).
+            bodies: the bodies whose geoms to cover; by default every body with a dof in its
+                chain (geoms of static bodies belong to the scene).
+
+        Returns:
+            :class:`BodySpheres` (numpy constants).
+
+        Example:
+            >>> spheres = tree.collision_spheres(0.05)
+            >>> tree.transform_points(np.zeros(7), spheres.body_ids, spheres.centres).shape
+            (31, 3)
+        """
+        if spacing <= 0:
+            raise ValueError(f"collision_spheres: spacing must be positive, got {spacing}")
+        if bodies is None:
+            chosen = {i for i in range(self.nbody) if self._chains[i].any()}
+        else:
+            chosen = {self.body_id(b) for b in bodies}
+        ids, centres, radii = [], [], []
+        for g in range(len(self._geom_type)):
+            b, kind = int(self._geom_body[g]), int(self._geom_type[g])
+            if b not in chosen or kind not in (_GEOM_SPHERE, _GEOM_CAPSULE, _GEOM_CYLINDER):
+                continue
+            radius, half = self._geom_size[g, 0], self._geom_size[g, 1]
+            if kind == _GEOM_SPHERE:
+                offsets = np.zeros((1, 3))
+            else:
+                n = int(np.ceil(2.0 * half / spacing)) + 1
+                offsets = np.zeros((n, 3))
+                offsets[:, 2] = np.linspace(-half, half, n)
+            local = self._geom_pos[g] + offsets @ self._geom_rot[g].T
+            ids += [b] * len(local)
+            centres.append(local)
+            radii += [radius] * len(local)
+        if not ids:
+            raise ValueError(
+                "collision_spheres: the chosen bodies have no sphere, capsule or cylinder geoms"
+            )
+        return BodySpheres(np.asarray(ids), np.concatenate(centres), np.asarray(radii))
+
+    # ------------------------------------------------------------------------------------------
+    # Kernels
+    # ------------------------------------------------------------------------------------------
+
+    def _check_qpos(self, xp, qpos) -> None:
+        meaning = f"the model's nq={self.nq} joint positions (MuJoCo's qpos order)"
+        A.check_last_axis(xp, qpos, self.nq, "qpos", "KinematicTree", meaning)
+
+    def _frames(self, xp, qpos, joint_frames: bool = False):
+        """World rotations and positions of every body (lists; constant bodies unbatched), and
+        of the frame right after each joint (for the Jacobian)."""
+        c = A.constants(xp, qpos, self._k_consts)
+        mats, vecs = c["mats"], c["vecs"]
+        if "hA" in c:
+            theta = A.gather_last(xp, qpos, self._k_hinge) - c["hq0"]
+            sin, vers = _sin_versine(xp, theta)
+            hinge_rot = c["hA"] + sin[..., None, None] * c["hB"] + vers[..., None, None] * c["hC"]
+            hinge_pos = c["hP"] - sin[..., None] * c["hK"] - vers[..., None] * c["hK2"]
+        rots, poss = [None] * self.nbody, [None] * self.nbody
+        frames = [None] * self.njnt
+        for i, step in enumerate(self._plan):
+            if step.kind in ("world", "static"):
+                rots[i], poss[i] = mats[step.mat], vecs[step.vec]
+                continue
+            if step.kind == "free":
+                adr = self._k_joints[step.joints[0]][1]
+                rot = _quaternion_rot(xp, qpos[..., adr + 3 : adr + 7])
+                pos = qpos[..., adr : adr + 3]
+                frames[step.joints[0]] = (rot, pos)
+                rots[i], poss[i] = rot, pos
+                continue
+            if step.hinge is not None:
+                rot, pos = hinge_rot[..., step.hinge, :, :], hinge_pos[..., step.hinge, :]
+            else:
+                rot, pos = mats[step.mat], vecs[step.vec]
+            if step.parent is not None:
+                parent_rot = rots[step.parent]
+                rot, pos = (
+                    xp.matmul(parent_rot, rot),
+                    poss[step.parent] + xp.matvec(parent_rot, pos),
+                )
+            joints = step.joints
+            if step.hinge is not None:
+                frames[joints[0]] = (rot, pos)
+                joints = joints[1:]
+            for j in joints:
+                rot, pos = self._apply_joint(xp, qpos, c, j, rot, pos)
+                frames[j] = (rot, pos)
+            rots[i], poss[i] = rot, pos
+        return rots, poss, frames
+
+    def _apply_joint(self, xp, qpos, c, j, rot, pos):
+        """The frame after joint ``j``, given the (world) frame before it."""
+        kind, adr, ref, _ = self._k_joints[j]
+        if kind == _SLIDE:
+            shift = qpos[..., adr : adr + 1] - ref
+            return rot, pos + xp.matvec(rot, c["jaxis"][j]) * shift
+        if kind == _HINGE:
+            sin, vers = _sin_versine(xp, qpos[..., adr] - ref)
+            local = (
+                c["mats"][0]
+                + sin[..., None, None] * c["jK"][j]
+                + vers[..., None, None] * (c["jK2"][j])
+            )
+        else:  # ball
+            local = _quaternion_rot(xp, qpos[..., adr : adr + 4])
+        anchor = pos + xp.matvec(rot, c["jpos"][j])
+        new_rot = xp.matmul(rot, local)
+        return new_rot, anchor - xp.matvec(new_rot, c["jpos"][j])
+
+    def _dof_axes(self, xp, qpos, rots, poss, frames):
+        """World axes and anchors of every dof *[batch_shape, nv, 3]*, in dof order."""
+        c = A.constants(xp, qpos, self._k_dofs)
+        axes, anchors = [], []
+        if self._hs_joints:
+            rot = _stack_batched(xp, [frames[j][0] for j in self._hs_joints], qpos, -3)
+            pos = _stack_batched(xp, [frames[j][1] for j in self._hs_joints], qpos, -2)
+            axes.append(xp.matvec(rot, c["hs_axis"]))
+            anchors.append(pos + xp.matvec(rot, c["hs_pos"]))
+        for j in self._ball_free_joints:
+            kind, _, _, b = self._k_joints[j]
+            body_axes = xp.swapaxes(rots[b], -1, -2)  # rows: the body frame's axes
+            if kind == _BALL:
+                rot, pos = frames[j]
+                anchor = pos + xp.matvec(rot, c["jpos"][j])
+                axes.append(body_axes)
+                anchors.append(xp.stack([anchor] * 3, axis=-2))
+            else:
+                axes.append(xp.concat([c["eye"] + xp.zeros_like(body_axes), body_axes], axis=-2))
+                anchors.append(xp.stack([poss[b]] * 6, axis=-2))
+        axes = _concat_batched(xp, axes, qpos)
+        anchors = _concat_batched(xp, anchors, qpos)
+        if self._dof_permutation is not None:
+            axes, anchors = xp.matmul(c["perm"], axes), xp.matmul(c["perm"], anchors)
+        return axes, anchors
+
+
+# ----------------------------------------------------------------------------------------------
+# Helpers
+# ----------------------------------------------------------------------------------------------
+
+
+def _lookup(key, names: tuple[str, ...], what: str) -> int:
+    if isinstance(key, (int, np.integer)) and not isinstance(key, bool):
+        if not 0 <= int(key) < len(names):
+            raise ValueError(f"{what} index {key} is out of range: the model has {len(names)}")
+        return int(key)
+    try:
+        return names.index(key)
+    except ValueError:
+        shown = ", ".join(repr(n) for n in names[:20]) + (", ..." if len(names) > 20 else "")
+        raise ValueError(f"unknown {what} {key!r}; the model's {what}s are: {shown}") from None
+
+
+def _sin_versine(xp, theta):
+    """``sin(theta)`` and ``1 - cos(theta)``, the latter as ``2 sin(theta / 2)**2`` (no
+    cancellation at small angles)."""
+    half = xp.sin(theta * 0.5)
+    return xp.sin(theta), 2.0 * half * half
+
+
+def _quaternion_rot(xp, quat_wxyz):
+    """Rotation matrices of MuJoCo quaternions ``[w, x, y, z]`` (normalised), through
+    ivy_mechanics, whose quaternions are ``[x, y, z, w]``."""
+    xyzw = xp.concat([quat_wxyz[..., 1:4], quat_wxyz[..., 0:1]], axis=-1)
+    return mech.quaternion_to_rot_mat(xyzw, f=xp)
+
+
+def _stack_batched(xp, arrays, like, axis):
+    """Stack arrays of which some lack the batch dimensions of ``like`` (constants)."""
+    trailing = -axis - 1  # 3x3 matrices stacked at -3 have 2 trailing axes, vectors 1
+    full = len(like.shape) - 1 + trailing
+    arrays = [a if len(a.shape) == full else A.broadcast_leading(xp, a, like, 1) for a in arrays]
+    return xp.stack(arrays, axis=axis)
+
+
+def _concat_batched(xp, arrays, like):
+    full = len(like.shape) - 1 + 2
+    arrays = [a if len(a.shape) == full else A.broadcast_leading(xp, a, like, 1) for a in arrays]
+    return arrays[0] if len(arrays) == 1 else xp.concat(arrays, axis=-2)

@@ -1,0 +1,123 @@
+"""The public API: listed once in ``__all__``; ``f`` keyword-only with default None on every
+public function and method that has it, and present on every public function; docstrings with
+Args/Returns/Example, and examples that run; no framework imported by ``import ivy_robot``; the
+kernels call primitives on the resolved namespace, never ``ivy.<fn>``; no other package's
+private module imported."""
+
+from __future__ import annotations
+
+import doctest
+import importlib
+import inspect
+import pathlib
+import pkgutil
+import re
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import ivy_robot
+
+PACKAGE = pathlib.Path(ivy_robot.__file__).parent
+MODULES = ["ivy_robot"] + sorted(
+    m.name for m in pkgutil.walk_packages(ivy_robot.__path__, "ivy_robot.") if not m.ispkg
+)
+CLASSES = [
+    getattr(ivy_robot, n) for n in ivy_robot.__all__ if inspect.isclass(getattr(ivy_robot, n))
+]
+FUNCTIONS = [
+    getattr(ivy_robot, n) for n in ivy_robot.__all__ if inspect.isfunction(getattr(ivy_robot, n))
+]
+METHODS = [
+    (cls, name, member)
+    for cls in CLASSES
+    for name, member in vars(cls).items()
+    if inspect.isfunction(member) and not name.startswith("_")
+]
+#: public functions and methods that take no array (they describe or build models)
+NO_ARRAYS = {
+    "load_mjcf", "mujoco_quaternion_to_rot_mat", "panda_mjcf", "from_mjcf", "body_id", "site_id",
+    "collision_spheres", "num_link_samples", "step_fn",
+}  # fmt: skip
+
+
+def test_all_is_complete():
+    assert len(ivy_robot.__all__) == len(set(ivy_robot.__all__))
+    for name in ivy_robot.__all__:
+        assert hasattr(ivy_robot, name), name
+    public = {
+        name
+        for module in MODULES[1:]
+        for name in getattr(importlib.import_module(module), "__all__", [])
+    }
+    assert public == set(ivy_robot.__all__)
+
+
+@pytest.mark.parametrize("fn", FUNCTIONS + [m for _, _, m in METHODS], ids=lambda f: f.__qualname__)
+def test_signature_and_docstring(fn):
+    params = inspect.signature(fn).parameters
+    if fn.__name__ not in NO_ARRAYS:
+        assert "f" in params, f"{fn.__qualname__} takes arrays but no f="
+    if "f" in params:
+        assert params["f"].kind is inspect.Parameter.KEYWORD_ONLY, f"{fn.__qualname__}: f"
+        assert params["f"].default is None
+    doc = inspect.getdoc(fn)
+    assert doc, f"{fn.__qualname__} has no docstring"
+    sections = ("Args:", "Returns:", "Example:") if len(params) > 1 else ("Example:",)
+    for section in sections:
+        assert section in doc, f"{fn.__qualname__} docstring lacks {section}"
+
+
+@pytest.mark.parametrize("module", MODULES)
+def test_docstring_examples(module):
+    import ivy_mechanics as mech
+
+    globs = {
+        "np": np,
+        "math": __import__("math"),
+        "mech": mech,
+        **{n: getattr(ivy_robot, n) for n in ivy_robot.__all__},
+        "tree": ivy_robot.KinematicTree.from_mjcf(ivy_robot.panda_mjcf()),
+        "ivy": __import__("ivy"),
+        # the drone of DronePlanner's example, for the examples of the planners' methods
+        "planner": ivy_robot.DronePlanner(
+            ivy_robot.RigidMobile([[0.0, 0.0, 0.0]]),
+            ivy_robot.SceneSDF(["ball"], ["sphere"], [[0.3, 0, 0]], [np.eye(4)]),
+            body_radius=0.1,
+        ),
+        "start": np.array([-1.0, 0.05, 0, 0, 0, 0]),
+        "goal": np.array([1.0, 0, 0, 0, 0, 0]),
+    }
+    result = doctest.testmod(
+        importlib.import_module(module),
+        extraglobs=globs,
+        optionflags=doctest.NORMALIZE_WHITESPACE | doctest.ELLIPSIS,
+    )
+    assert result.failed == 0
+    if module != "ivy_robot" and not module.split(".")[-1].startswith("_"):
+        assert result.attempted > 0, f"{module} has no runnable example"
+
+
+def test_import_loads_no_framework():
+    code = (
+        "import sys, ivy_robot; "
+        "print(sorted(m for m in ('torch', 'jax', 'tensorflow', 'mujoco') if m in sys.modules))"
+    )
+    root = str(PACKAGE.parent)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=root)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "[]"
+
+
+def test_kernels_use_the_namespace():
+    """Primitives are called on the resolved namespace ``xp``; ``ivy.`` appears only to resolve
+    it and for the functional gradient, compilation, optimizer and conversion entry points."""
+    allowed = {"get_framework", "execute_with_gradients", "compile_fn", "Adam", "to_numpy"}
+    for path in PACKAGE.rglob("*.py"):
+        source = path.read_text()
+        uses = set(re.findall(r"\bivy\.(\w+)\(", source))
+        assert uses <= allowed, f"{path.name} calls ivy.{sorted(uses - allowed)}"
+        assert not re.search(r"from ivy_mechanics\._|import ivy_mechanics\._|ivy\.core\._", source)
+        assert "framework ==" not in source and "backend ==" not in source
