@@ -56,6 +56,18 @@ class Capabilities:
         mutable_arrays: arrays written in place are seen by every view of their memory.
         devices: the kinds of device it places arrays on (``'cpu'``, ``'gpu'``).
         float64: 64-bit floats (and int64) work.
+        compiled_loops: ``ivy.compile_fn`` keeps ``ivy.scan``, ``fori_loop`` and ``while_loop``
+            loops: their body is traced once and the compiled program loops (jax's ``lax``
+            loops, tensorflow's while loops), so compiling a long loop costs what a short one
+            does. False where the compiler unrolls them, tracing the body once per step
+            (``torch.compile``: compile time grows with the number of steps; a loop whose length
+            depends on values cannot compile), or where there is no compiler. Code that compiles
+            whole loops (a rollout, the epochs of an update) can choose from it where to put the
+            compiled boundary.
+
+    Example:
+        >>> ivy.framework_handler.capabilities("jax").compiled_loops
+        True
     """
 
     autodiff: bool = False
@@ -63,6 +75,7 @@ class Capabilities:
     mutable_arrays: bool = False
     devices: tuple[str, ...] = ("cpu",)
     float64: bool = True
+    compiled_loops: bool = False
 
 
 @dataclass(frozen=True)
@@ -88,13 +101,15 @@ _BACKENDS: dict[str, _BackendSpec] = {
         "ivy.backends.jax",
         "jax",
         "jax",
-        Capabilities(autodiff=True, compilation=True, devices=("cpu", "gpu", "tpu")),
+        Capabilities(
+            autodiff=True, compilation=True, devices=("cpu", "gpu", "tpu"), compiled_loops=True
+        ),
     ),
     "tensorflow": _BackendSpec(
         "ivy.backends.tensorflow",
         "tensorflow",
         "tensorflow",
-        Capabilities(autodiff=True, compilation=True, devices=("cpu", "gpu")),
+        Capabilities(autodiff=True, compilation=True, devices=("cpu", "gpu"), compiled_loops=True),
     ),
 }
 _ALIASES = {"np": "numpy", "pytorch": "torch", "tf": "tensorflow"}
@@ -166,6 +181,7 @@ def register_framework(
     mutable_arrays: bool = False,
     devices: tuple[str, ...] = ("cpu",),
     float64: bool = True,
+    compiled_loops: bool = False,
 ) -> None:
     """Make an Array API namespace (2023.12) a backend of ivy, under ``name``.
 
@@ -185,6 +201,7 @@ def register_framework(
         mutable_arrays: in-place writes are seen through every view.
         devices: the kinds of device its arrays may live on.
         float64: 64-bit floats work.
+        compiled_loops: its compiler keeps loops (see :class:`Capabilities`).
 
     Example:
         >>> ivy.register_framework("array_api_strict", "array_api_strict")
@@ -201,7 +218,9 @@ def register_framework(
         f"ivy.backends.{name}",
         package,
         None,
-        Capabilities(autodiff, compilation, mutable_arrays, tuple(devices), float64),
+        Capabilities(
+            autodiff, compilation, mutable_arrays, tuple(devices), float64, compiled_loops
+        ),
         namespace,
     )
     _MODULE_ROOTS[package.partition(".")[0]] = name
@@ -267,7 +286,7 @@ def register_loaded(name: str, ns: types.ModuleType, capabilities: Any = None) -
     ``ivy.backends._assemble.assemble``), and run the load hooks on it."""
     ns.backend = name
     ns.use = _Use(ns)
-    ns.capabilities = capabilities
+    ns.capabilities = capabilities if capabilities is not None else _BACKENDS[name].capabilities
     for hook in _on_load:
         hook(ns)
     _loaded[name] = ns

@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from tests.compilers import native_compile
 from tests.helpers import check, native, numpy_of
 
 X = np.array([[3.0, -0.0, np.nan, 1.5], [2.0, 2.0, -np.inf, 0.25]], np.float32)
@@ -68,26 +69,17 @@ def _run_both(backend, name):
     xp = getattr(ivy, backend)
     x, i = native(X, backend), native(INTS, backend)
     eager = CALLS[name](xp, x, i)
-    if backend == "jax":
-        import jax
-
-        compiled = jax.jit(lambda x, i: CALLS[name](xp, x, i))(x, i)
-    else:
-        import tensorflow as tf
-
-        compiled = tf.function(lambda x, i: CALLS[name](xp, x, i))(x, i)
+    compiled = native_compile(backend, lambda x, i: CALLS[name](xp, x, i))(x, i)
     return eager, compiled
 
 
 @pytest.mark.parametrize("name", sorted(CALLS))
-@pytest.mark.parametrize("compiler", ["jax", "tensorflow"])
-def test_compiled_equals_eager(compiler, name):
-    pytest.importorskip(compiler)
-    eager, compiled = _run_both(compiler, name)
+def test_compiled_equals_eager(graph_backend, name):
+    eager, compiled = _run_both(graph_backend, name)
     assert len(eager) == len(compiled)
     for e, c in zip(eager, compiled):
         expected = numpy_of(e)
-        check(c, expected, compiler, rtol=0, atol=0)
+        check(c, expected, graph_backend, rtol=0, atol=0)
 
 
 def test_tf_function_with_unknown_shapes():

@@ -8,6 +8,8 @@ import pytest
 
 import ivy
 from ivy import nest
+from tests.compilers import native_compile
+from tests.conftest import require
 from tests.helpers import check, native, numpy_of, tolerance
 
 # ----------------------------------------------------------------------------------------------
@@ -175,35 +177,49 @@ def _step_case(backend):
     return model, opt, loss_fn, x, y
 
 
-# torch.compile's first call takes many seconds: a single torch case lives here.
-@pytest.mark.parametrize("compiled_backend", ["torch", "jax", "tensorflow"])
-def test_compiled_training_step_equals_eager(request, compiled_backend):
-    if compiled_backend not in request.config.ivy_backends:
-        pytest.skip(f"{compiled_backend} is not among the tested backends")
-    model, opt, loss_fn, x, y = _step_case(compiled_backend)
+def _torch_graph_counter():
+    """Clears dynamo's counters; the check then asserts that forward, autograd.grad and the
+    update formed one graph, with no break around the gradients."""
+    import torch._dynamo
+
+    counters = torch._dynamo.utils.counters
+    counters.clear()
+
+    def check_one_graph():
+        assert dict(counters["graph_break"]) == {}
+        assert counters["stats"]["unique_graphs"] == 1
+
+    return check_one_graph
+
+
+# Compilers that report their graphs: backend -> a function that starts counting and returns the
+# check that the compiled step was one graph (a new backend with such a report adds its row).
+ONE_GRAPH = {"torch": _torch_graph_counter}
+
+
+# A slow compiler's first call (torch.compile) takes many seconds: its single case lives here.
+def test_compiled_training_step_equals_eager(request, backend):
+    require(backend, "compilation")
+    require(backend, "autodiff")
+    model, opt, loss_fn, x, y = _step_case(backend)
     eager = opt.training_step(loss_fn)
     compiled = opt.training_step(loss_fn, compile=True)
     v_e = v_c = model.v
     s_e = s_c = opt.init(model.v)
-    if compiled_backend == "torch":
-        import torch._dynamo
-
-        torch._dynamo.utils.counters.clear()
+    check_one_graph = ONE_GRAPH[backend]() if backend in ONE_GRAPH else None
     for _ in range(3):
         loss_e, v_e, s_e = eager(v_e, s_e, x, y)
         loss_c, v_c, s_c = compiled(v_c, s_c, x, y)
-        check(loss_c, numpy_of(loss_e), compiled_backend, rtol=1e-5, atol=1e-6)
+        check(loss_c, numpy_of(loss_e), backend, rtol=1e-5, atol=1e-6)
     tol = dict(rtol=1e-4, atol=1e-6)
-    nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), compiled_backend, **tol), v_c, v_e)
-    nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), compiled_backend, **tol), s_c, s_e)
+    nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), backend, **tol), v_c, v_e)
+    nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), backend, **tol), s_c, s_e)
     instrumented = any(  # scripts/coverage_table.py's wrappers break graphs of their own
         getattr(p, "wraps_backend_functions", False)
         for p in request.config.pluginmanager.get_plugins()
     )
-    if compiled_backend == "torch" and not instrumented:
-        # forward, autograd.grad and the update form one graph, with no break around the grads
-        assert dict(torch._dynamo.utils.counters["graph_break"]) == {}
-        assert torch._dynamo.utils.counters["stats"]["unique_graphs"] == 1
+    if check_one_graph is not None and not instrumented:
+        check_one_graph()
 
 
 def test_stateful_forms_equal_the_functional_step(diff_backend):
@@ -265,13 +281,15 @@ def test_minimize_returns_aux(diff_backend):
     assert tuple(numpy_of(pred).shape) == (32, 1)
 
 
-def test_training_inside_jax_jit():
-    jax = pytest.importorskip("jax")
-    model, opt, loss_fn, x, y = _step_case("jax")
-    step = jax.jit(opt.training_step(loss_fn))
+def test_training_inside_the_frameworks_own_compiler(graph_backend):
+    """The functional training step compiled by the framework itself (jax.jit, tf.function),
+    not by ivy.compile_fn."""
+    model, opt, loss_fn, x, y = _step_case(graph_backend)
+    step = native_compile(graph_backend, opt.training_step(loss_fn))
     eager = opt.training_step(loss_fn)
     v, s = model.v, opt.init(model.v)
     loss_c, v_c, _ = step(v, s, x, y)
     loss_e, v_e, _ = eager(v, s, x, y)
-    check(loss_c, numpy_of(loss_e), "jax", rtol=1e-5, atol=1e-6)
-    nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), "jax", rtol=1e-4, atol=1e-6), v_c, v_e)
+    tol = dict(rtol=1e-4, atol=1e-6)
+    check(loss_c, numpy_of(loss_e), graph_backend, rtol=1e-5, atol=1e-6)
+    nest.multi_map_nest(lambda a, b: check(a, numpy_of(b), graph_backend, **tol), v_c, v_e)

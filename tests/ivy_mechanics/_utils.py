@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 import ivy_mechanics as mech
-from tests.helpers import native, numpy_of
+from tests.helpers import native, native_value_and_grads, numpy_of
 
 
 def call(backend, name, args, kwargs=None):
@@ -14,35 +14,10 @@ def call(backend, name, args, kwargs=None):
     return numpy_of(out)
 
 
-def grad(backend, fn, args, weights, wrt=0):
-    """Gradient of ``sum(weights * fn(*args))`` with respect to ``args[wrt]``, by the framework's
-    own autodiff (torch.autograd.grad, jax.grad, tf.GradientTape); float64 numpy in and out."""
-    if backend == "torch":
-        import torch
-
-        ts = [torch.tensor(a, requires_grad=(i == wrt)) for i, a in enumerate(args)]
-        loss = (fn(*ts) * torch.from_numpy(weights)).sum()
-        (g,) = torch.autograd.grad(loss, ts[wrt])
-        return g.numpy()
-    if backend == "jax":
-        import jax
-        import jax.numpy as jnp
-
-        arrays = [jnp.asarray(a) for a in args]
-
-        def loss(x):
-            return jnp.sum(fn(*arrays[:wrt], x, *arrays[wrt + 1 :]) * weights)
-
-        return np.asarray(jax.grad(loss)(arrays[wrt]))
-    if backend == "tensorflow":
-        import tensorflow as tf
-
-        ts = [tf.constant(a) for a in args]
-        with tf.GradientTape() as tape:
-            tape.watch(ts[wrt])
-            loss = tf.reduce_sum(fn(*ts) * tf.constant(weights))
-        return tape.gradient(loss, ts[wrt]).numpy()
-    raise ValueError(f"{backend} has no autodiff")
+def gradients(backend, fn, args, weights):
+    """Gradients of ``sum(weights * fn(*args))`` with respect to each of ``args``, by the
+    framework's own autodiff (``tests/helpers.py``); float64 numpy in and out."""
+    return native_value_and_grads(backend, fn, args, weights)[1]
 
 
 def finite_difference(fn, args, weights, wrt=0, h=1e-7):

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import ivy_mechanics as mech
+from tests.compilers import native_compile
 from tests.helpers import dtype_name, native, numpy_of
 from tests.ivy_mechanics._cases import BATCH_SHAPE, CASES, make_inputs
 from tests.ivy_mechanics._utils import call
@@ -68,15 +69,10 @@ def test_framework_inferred_or_chosen(backend):
 
 
 def _compiled(backend, fn, args):
-    if backend == "jax":
-        import jax
-
-        return np.asarray(jax.jit(fn)(*args))
-    import tensorflow as tf
-
-    specs = [tf.TensorSpec([None, *a.shape[1:]], tf.as_dtype(a.dtype)) for a in args]
-    compiled = tf.function(fn, input_signature=specs, autograph=False)  # no Python control flow
-    return compiled(*[tf.constant(a) for a in args]).numpy()
+    """``fn`` compiled by the framework itself, with the batch size unknown where the compiler
+    has that notion (tf.function's input_signature)."""
+    compiled = native_compile(backend, fn, unknown_batch_of=args)
+    return numpy_of(compiled(*[native(a, backend) for a in args]))
 
 
 def test_compiled_equals_eager(graph_backend):

@@ -20,6 +20,8 @@ import pytest
 
 import ivy
 from ivy import nest
+from ivy.framework_handler import capabilities
+from tests.conftest import capable, require
 from tests.helpers import check_gradients, is_native, native, numpy_of
 
 TOL = dict(rtol=1e-12, atol=1e-12)
@@ -164,12 +166,24 @@ def test_scan_of_no_steps_returns_empty_outputs(backend):
     assert numpy_of(ys["h"]).shape == (0, 2, 3) and numpy_of(ys["energy"]).shape == (0, 2)
 
 
-def rnn_outputs(backend):
-    """The rnn case as a function of (init, xs, w_in, w_rec) -> all outputs, one array."""
+def counted(step, traces):
+    """``step``, appending to ``traces`` each time it runs (in Python: eagerly, or tracing)."""
+
+    def counting(c, x):
+        traces.append(None)
+        return step(c, x)
+
+    return counting
+
+
+def rnn_outputs(backend, traces=None):
+    """The rnn case as a function of (init, xs, w_in, w_rec) -> all outputs, one array; its body
+    counts its runs in ``traces`` (a list) if given."""
     xp = getattr(ivy, backend)
 
     def fn(h0, xs, w_in, w_rec):
-        h, ys = ivy.scan(rnn(xp, (w_in, w_rec)), h0, xs)
+        step = rnn(xp, (w_in, w_rec))
+        h, ys = ivy.scan(step if traces is None else counted(step, traces), h0, xs)
         return xp.concat([xp.reshape(h, (-1,)), xp.reshape(ys["h"], (-1,)), ys["energy"][-1]])
 
     return fn
@@ -180,8 +194,8 @@ def test_scan_gradients_equal_finite_differences(diff_backend):
     check_gradients(diff_backend, rnn_outputs(diff_backend), [init, xs, *consts], n_directions=2)
 
 
-def _loss_and_grads(backend, args):
-    fn = rnn_outputs(backend)
+def _loss_and_grads(backend, args, traces=None):
+    fn = rnn_outputs(backend, traces)
 
     def loss(v):
         return ivy.sum(fn(*v) ** 2)
@@ -192,18 +206,21 @@ def _loss_and_grads(backend, args):
 
 @functools.cache
 def compiled_loss_and_grads(backend):
-    return ivy.compile_fn(lambda *args: _loss_and_grads(backend, args))
+    """The compiled rnn loss and gradients, and the list of its body's traces."""
+    traces = []
+    return ivy.compile_fn(lambda *args: _loss_and_grads(backend, args, traces)), traces
 
 
-@pytest.mark.parametrize("backend_", ["torch", "jax", "tensorflow"])
-def test_compiled_scan_gradients_equal_eager(request, backend_):
-    if backend_ not in request.config.ivy_backends:
-        pytest.skip(f"{backend_} not selected")
+def test_compiled_scan_gradients_equal_eager(backend):
+    require(backend, "compilation")  # torch.compile: once, here (cached)
     _, consts, init, xs, _ = SCAN_CASES["rnn"]
-    args = _on(backend_, [init, xs, *consts])
-    eager = _loss_and_grads(backend_, args)
-    compiled = compiled_loss_and_grads(backend_)(*args)
-    _assert_same(compiled, _numpy(eager), backend_, COMPILED_TOL)
+    args = _on(backend, [init, xs, *consts])
+    eager = _loss_and_grads(backend, args)
+    compiled, traces = compiled_loss_and_grads(backend)
+    _assert_same(compiled(*args), _numpy(eager), backend, COMPILED_TOL)
+    # the capability says whether the compiler keeps the loop (its body traced once or twice)
+    # or unrolls it (traced once per step, 5 here, or more)
+    assert (len(traces) < len(xs)) == capabilities(backend).compiled_loops, len(traces)
 
 
 RATES = rng.uniform(0.5, 1.5, size=6)
@@ -473,9 +490,15 @@ def test_signatures_end_with_keyword_only_f():
     assert str(inspect.signature(ivy.scan)).startswith("(fn:")
 
 
-def test_numpy_compile_of_a_scan_warns_and_runs():
+def test_compile_without_a_compiler_warns_and_runs_loops_in_python(backend):
+    if capable(backend, "compilation"):
+        pytest.skip(f"{backend} has a compiler")
+    traces = []
+    step = counted(cumulative(getattr(ivy, backend), ()), traces)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        compiled = ivy.compile_fn(lambda x: ivy.scan(cumulative(np, ()), x, np.ones(3)))
-        carry, _ = compiled(np.float64(0.0))
-    assert float(carry) == 3.0 and any("numpy has no compiler" in str(w.message) for w in caught)
+        compiled = ivy.compile_fn(lambda x: ivy.scan(step, x, _on(backend, np.ones(3))))
+        carry, _ = compiled(_on(backend, np.float64(0.0)))
+    assert float(carry) == 3.0
+    assert any(f"{backend} has no compiler" in str(w.message) for w in caught)
+    assert len(traces) == 3 and not capabilities(backend).compiled_loops
