@@ -18,6 +18,7 @@ from ivy_gym import (
     cartpole,
     facades,
     mountain_car,
+    optimise,
     pendulum,
     reacher,
     registration,
@@ -29,6 +30,7 @@ from ivy_gym.base import *  # noqa: F403
 from ivy_gym.cartpole import *  # noqa: F403
 from ivy_gym.facades import *  # noqa: F403
 from ivy_gym.mountain_car import *  # noqa: F403
+from ivy_gym.optimise import *  # noqa: F403
 from ivy_gym.pendulum import *  # noqa: F403
 from ivy_gym.reacher import *  # noqa: F403
 from ivy_gym.registration import *  # noqa: F403
@@ -44,6 +46,7 @@ __all__ = [
     *reacher.__all__,
     *swimmer.__all__,
     *rollouts.__all__,
+    *optimise.__all__,
     *rendering.__all__,
     *facades.__all__,
     *registration.__all__,

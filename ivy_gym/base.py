@@ -232,6 +232,7 @@ def as_action(xp, action, state):
     return xp.asarray(action, dtype=dtype)
 
 
-def unstack_last(state, n: int) -> list:
-    """The ``n`` components of the last axis of ``state``."""
-    return [state[..., i] for i in range(n)]
+def unstack_last(xp, x) -> tuple:
+    """The components of the last axis of ``x`` (one ``unstack``: slicing component by component
+    costs ~40 us a slice on eager jax and ~100 us on eager tensorflow)."""
+    return xp.unstack(x, axis=-1)

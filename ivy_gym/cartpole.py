@@ -109,8 +109,8 @@ class CartPole(_CartPoleBase):
         return -high, high
 
     def _step(self, xp, p, state, action):
-        x, x_dot, theta, theta_dot = unstack_last(state, 4)
-        force = p.force_mag * action[..., 0]
+        x, x_dot, theta, theta_dot = unstack_last(xp, state)
+        force = p.force_mag * unstack_last(xp, action)[0]
         xacc, thetaacc = _accelerations(xp, p, x_dot, theta, theta_dot, force)
         x = x + p.tau * x_dot
         x_dot = x_dot + p.tau * xacc
@@ -158,8 +158,8 @@ class CartPoleSwingUp(_CartPoleBase):
         return -high, high
 
     def _step(self, xp, p, state, action):
-        x, x_dot, theta, theta_dot = unstack_last(state, 4)
-        force = p.force_mag * action[..., 0]
+        x, x_dot, theta, theta_dot = unstack_last(xp, state)
+        force = p.force_mag * unstack_last(xp, action)[0]
         xacc, thetaacc = _accelerations(xp, p, x_dot, theta, theta_dot, force)
         x_dot = x_dot + p.tau * xacc
         x = x + p.tau * x_dot
@@ -172,7 +172,7 @@ class CartPoleSwingUp(_CartPoleBase):
         return state, obs, reward, xp.zeros_like(x) > 0
 
     def _observe(self, xp, p, state):
-        x, x_dot, theta, theta_dot = unstack_last(state, 4)
+        x, x_dot, theta, theta_dot = unstack_last(xp, state)
         return xp.stack([x, x_dot, xp.cos(theta), xp.sin(theta), theta_dot], axis=-1)
 
     def _draw(self, canvas, s):

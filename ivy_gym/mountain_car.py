@@ -156,8 +156,8 @@ class MountainCarContinuous(_MountainCarBase):
         return self._round(xp, state)
 
     def _step(self, xp, p, state, action):
-        position, velocity = unstack_last(state, 2)
-        a = action[..., 0]
+        position, velocity = unstack_last(xp, state)
+        a = unstack_last(xp, action)[0]
         force = xp.clip(a, p.min_action, p.max_action)
         increment = force * p.power - 0.0025 * xp.cos(self._round(xp, 3 * position))
         if self.float32_state and state.dtype != xp.float32:
@@ -218,8 +218,8 @@ class MountainCarShaped(_MountainCarBase):
         return np.array([-0.9, 0.0]), np.array([-0.2, 0.0])
 
     def _step(self, xp, p, state, action):
-        x, v = unstack_last(state, 2)
-        acc = p.torque_scale * action[..., 0] - p.g * xp.cos(3 * x)
+        x, v = unstack_last(xp, state)
+        acc = p.torque_scale * unstack_last(xp, action)[0] - p.g * xp.cos(3 * x)
         v = v + p.dt * acc
         x = x + p.dt * v
         d = x - p.goal_position

@@ -49,7 +49,7 @@ class _PendulumBase(Env):
     observation_names = ("cos_theta", "sin_theta", "theta_dot")
 
     def _observe(self, xp, p, state):
-        theta, theta_dot = unstack_last(state, 2)
+        theta, theta_dot = unstack_last(xp, state)
         return xp.stack([xp.cos(theta), xp.sin(theta), theta_dot], axis=-1)
 
     def _view(self, s):
@@ -106,8 +106,8 @@ class Pendulum(_PendulumBase):
         return -high, high
 
     def _step(self, xp, p, state, action):
-        th, thdot = unstack_last(state, 2)
-        u = xp.clip(action[..., 0], -p.max_torque, p.max_torque)
+        th, thdot = unstack_last(xp, state)
+        u = xp.clip(unstack_last(xp, action)[0], -p.max_torque, p.max_torque)
         wrapped = xp.remainder(th + math.pi, 2 * math.pi) - math.pi
         costs = wrapped * wrapped + 0.1 * (thdot * thdot) + 0.001 * (u * u)
         newthdot = thdot + (3 * p.g / (2 * p.l) * xp.sin(th) + 3.0 / (p.m * (p.l * p.l)) * u) * p.dt
@@ -150,8 +150,8 @@ class PendulumSmooth(_PendulumBase):
         return -high, high
 
     def _step(self, xp, p, state, action):
-        th, thdot = unstack_last(state, 2)
-        torque = p.torque_scale * action[..., 0]
+        th, thdot = unstack_last(xp, state)
+        torque = p.torque_scale * unstack_last(xp, action)[0]
         thacc = 3 * p.g / (2 * p.l) * xp.sin(th) + 3.0 / (p.m * (p.l * p.l)) * torque
         thdot = thdot + p.dt * thacc
         th = th + p.dt * thdot

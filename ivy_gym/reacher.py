@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ivy_gym.base import Env
+from ivy_gym.base import Env, unstack_last
 from ivy_gym.rendering import reward_color
 
 __all__ = ["Reacher", "ReacherParams"]
@@ -86,12 +86,13 @@ class Reacher(Env):
 
     def _step(self, xp, p, state, action):
         n = self.num_joints
-        angles, vels, goal = state[..., :n], state[..., n : 2 * n], state[..., 2 * n :]
+        angles, vels, goal = xp.split(state, [n, n, 2], axis=-1)
         vels = vels + p.dt * (p.torque_scale * action)
         angles = angles + p.dt * vels
         cos, sin = xp.cos(angles), xp.sin(angles)
-        dx = xp.sum(cos, axis=-1) - goal[..., 0]
-        dy = xp.sum(sin, axis=-1) - goal[..., 1]
+        goal_x, goal_y = unstack_last(xp, goal)
+        dx = xp.sum(cos, axis=-1) - goal_x
+        dy = xp.sum(sin, axis=-1) - goal_y
         reward = xp.exp(-(dx * dx + dy * dy))
         state = xp.concat([angles, vels, goal], axis=-1)
         obs = xp.concat([cos, sin, vels, goal], axis=-1)
@@ -99,8 +100,8 @@ class Reacher(Env):
 
     def _observe(self, xp, p, state):
         n = self.num_joints
-        angles = state[..., :n]
-        return xp.concat([xp.cos(angles), xp.sin(angles), state[..., n:]], axis=-1)
+        angles, rest = xp.split(state, [n, n + 2], axis=-1)
+        return xp.concat([xp.cos(angles), xp.sin(angles), rest], axis=-1)
 
     def _view(self, s):
         bound = self.num_joints + 0.2

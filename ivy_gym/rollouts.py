@@ -71,8 +71,9 @@ def rollout(
     gradient flows across the reset (the new state does not depend on the old one).
 
     ``window=K`` truncates gradients: the state is cut from the graph (``ivy.stop_gradient``)
-    every ``K`` steps, so gradients reach back at most ``K`` steps (as in short-horizon
-    actor-critic methods); the values are unchanged. ``T`` must be a multiple of ``K``.
+    at steps ``K, 2K, ...``, so a reward's gradient reaches back to the start of its window at
+    most (as in short-horizon actor-critic methods); the values are unchanged. ``T`` must be a
+    multiple of ``K``.
 
     Args:
         env: an :class:`ivy_gym.Env`.
@@ -164,15 +165,22 @@ def _windowed_scan(xp, step, carry, actions, steps, window):
     count = steps // window
     if actions is not None:
         actions = xp.reshape(actions, (count, window, *actions.shape[1:]))
+        first_actions, later_actions = actions[0], actions[1:]
+    else:
+        first_actions = later_actions = None
 
     def run_window(carry, window_actions):
         state, obs, alive = carry
         carry = (xp.stop_gradient(state), xp.stop_gradient(obs), alive)
         return ivy.scan(step, carry, window_actions, length=window, f=xp)
 
-    carry, outs = ivy.scan(run_window, carry, actions, length=count, f=xp)
-    outs = ivy.nest.map_nest(lambda a: xp.reshape(a, (steps, *a.shape[2:])), outs)
-    return carry, outs
+    carry, first = ivy.scan(step, carry, first_actions, length=window, f=xp)
+    carry, later = ivy.scan(run_window, carry, later_actions, length=count - 1, f=xp)
+
+    def join(a, b):
+        return xp.concat([a, xp.reshape(b, ((count - 1) * window, *a.shape[1:]))], axis=0)
+
+    return carry, ivy.nest.multi_map_nest(join, first, later)
 
 
 def discounted_return(rewards: Array, discount: float = 1.0, *, f: Framework = None) -> Array:

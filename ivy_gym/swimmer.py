@@ -78,15 +78,13 @@ class Swimmer(Env):
 
     def _step(self, xp, p, state, action):
         u = 2 * self.num_urchins
-        urchins, xy, vel, goal = (
-            state[..., :u],
-            state[..., u : u + 2],
-            state[..., u + 2 : u + 4],
-            state[..., u + 4 :],
-        )
+        if u:
+            urchins, xy, vel, goal = xp.split(state, [u, 2, 2, 2], axis=-1)
+        else:
+            urchins, (xy, vel, goal) = None, xp.split(state, [2, 2, 2], axis=-1)
         vel = vel + p.dt * action
         xy = xy + p.dt * vel
-        state = xp.concat([urchins, xy, vel, goal], axis=-1)
+        state = xp.concat([urchins, xy, vel, goal] if u else [xy, vel, goal], axis=-1)
         to_goal = xy - goal
         reward = xp.exp(-p.goal_sharpness * xp.sum(to_goal * to_goal, axis=-1))
         if self.num_urchins:
