@@ -412,6 +412,24 @@ def test_random_draws_in_a_compiled_scan_body_differ_per_step_and_call(graph_bac
     np.testing.assert_array_equal(first[1], again[1])
 
 
+def test_a_jitted_scan_before_any_seed_leaves_a_concrete_key(request):
+    if "jax" not in request.config.ivy_backends:
+        pytest.skip("jax not selected")
+    import jax
+
+    from ivy.backends.jax import random as jax_random
+
+    saved = jax_random._state.saved()
+    jax_random._state.restore((None, None))  # as in a new process: never seeded
+    try:
+        step = jax.jit(lambda x: ivy.scan(lambda c, _: (c + 1.0, c), x, None, 3))
+        np.testing.assert_array_equal(numpy_of(step(native(np.zeros(2), "jax"))[0]), 3.0)
+        assert not isinstance(jax_random._state.data, jax.core.Tracer)
+        assert numpy_of(ivy.random_uniform(shape=(2,), f="jax")).shape == (2,)
+    finally:
+        jax_random._state.restore(saved)
+
+
 # ----------------------------------------------------------------------------------------------
 # Errors: what jax and tensorflow refuse is refused on every backend
 # ----------------------------------------------------------------------------------------------

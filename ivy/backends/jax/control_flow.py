@@ -56,9 +56,11 @@ def _staged() -> bool:
 
 
 def _key_data():
-    """The key state's raw data, seeding it first if it was never seeded."""
+    """The key state's raw data, seeding it first if it was never seeded (concretely: seeding
+    while jax traces would store a tracer in the module's state)."""
     if _state.data is None:
-        _state.next_key()
+        with jax.ensure_compile_time_eval():
+            _state.next_key()
     return _state.data
 
 
