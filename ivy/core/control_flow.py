@@ -189,23 +189,25 @@ def cond(
 # ----------------------------------------------------------------------------------------------
 # Python loops, shared by the backends that run control flow as Python (numpy, torch, eager
 # tensorflow). ``ops`` gives the backend's natives: ``unstack(a) -> list of slices``,
-# ``stack(list) -> array``, ``zeros(shape, dtype)`` and ``asarray(a)`` (the backend's
-# ``ivy.<backend>.asarray``, used for Python scalars, which become arrays of the default dtypes,
-# as jax makes them arrays).
+# ``stack(list) -> array``, ``zeros(shape, dtype)``, ``asarray(a)`` (the backend's
+# ``ivy.<backend>.asarray``: Python scalars become arrays of the default dtypes, as jax makes
+# them arrays) and ``native``, the backend's array types.
 # ----------------------------------------------------------------------------------------------
 
 
 class LoopOps:
-    """The few native functions the Python loops need from a backend."""
+    """The few native functions the Python loops need from a backend, and its array types."""
 
-    __slots__ = ("unstack", "stack", "zeros", "asarray")
+    __slots__ = ("unstack", "stack", "zeros", "asarray", "native")
 
-    def __init__(self, unstack, stack, zeros, asarray):
+    def __init__(self, unstack, stack, zeros, asarray, native):
         self.unstack, self.stack, self.zeros, self.asarray = unstack, stack, zeros, asarray
+        self.native = native
 
     def arrays(self, nest: Nest) -> Nest:
-        """``nest`` with its Python scalars (leaves without a dtype) made arrays."""
-        return map_nest(lambda a: a if hasattr(a, "dtype") else self.asarray(a), nest)
+        """``nest`` with its leaves that are not arrays of the backend (Python scalars, numpy
+        arrays next to torch ones) made arrays of the backend."""
+        return map_nest(lambda a: a if isinstance(a, self.native) else self.asarray(a), nest)
 
 
 def scan_length(xs_leaves: Sequence[Any], length: int | None) -> int:

@@ -149,6 +149,13 @@ def test_scan_in_the_backend_namespace_and_with_f(backend):
         np.testing.assert_allclose(numpy_of(ys), expected[1], rtol=1e-6)
 
 
+def test_inputs_of_another_framework_are_converted_with_f(backend):
+    step = cumulative(np, ())
+    carry, ys = ivy.scan(step, native(np.float64(0.5), backend), np.arange(3.0), f=backend)
+    assert is_native(carry, backend) and is_native(ys, backend)
+    np.testing.assert_allclose(numpy_of(ys), [0.0, 0.5, 3.0])  # c * x, c += x
+
+
 def test_scan_of_no_steps_returns_empty_outputs(backend):
     make, consts, init, xs, _ = SCAN_CASES["rnn"]
     xp = getattr(ivy, backend)

@@ -46,7 +46,9 @@ def _unstack(a):
     return [a[i] for i in range(a.shape[0])]
 
 
-_OPS = LoopOps(unstack=_unstack, stack=jnp.stack, zeros=jnp.zeros, asarray=asarray)
+_OPS = LoopOps(
+    unstack=_unstack, stack=jnp.stack, zeros=jnp.zeros, asarray=asarray, native=jax.Array
+)
 
 
 def _staged() -> bool:

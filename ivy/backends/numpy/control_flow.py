@@ -15,7 +15,9 @@ from ivy.core.control_flow import (
 
 __all__ = ["scan", "fori_loop", "while_loop", "cond"]
 
-_OPS = LoopOps(unstack=list, stack=np.stack, zeros=np.zeros, asarray=asarray)
+_OPS = LoopOps(
+    unstack=list, stack=np.stack, zeros=np.zeros, asarray=asarray, native=(np.ndarray, np.generic)
+)
 
 
 def scan(fn, init, xs=None, length=None, unroll=1):

@@ -44,7 +44,13 @@ def _asarray(a):
     return a if isinstance(a, (tf.Tensor, tf.Variable)) else asarray(a)
 
 
-_OPS = LoopOps(unstack=tf.unstack, stack=tf.stack, zeros=_zeros, asarray=_asarray)
+_OPS = LoopOps(
+    unstack=tf.unstack,
+    stack=tf.stack,
+    zeros=_zeros,
+    asarray=_asarray,
+    native=(tf.Tensor, tf.Variable),
+)
 
 
 def _tensors(nest):

@@ -30,7 +30,9 @@ def _zeros(shape, dtype):
     return torch.zeros(shape, dtype=dtype)
 
 
-_OPS = LoopOps(unstack=_unstack, stack=torch.stack, zeros=_zeros, asarray=asarray)
+_OPS = LoopOps(
+    unstack=_unstack, stack=torch.stack, zeros=_zeros, asarray=asarray, native=torch.Tensor
+)
 
 
 def scan(fn, init, xs=None, length=None, unroll=1):
