@@ -126,9 +126,10 @@ def _run(xp, step, carry, iterations, compile):
 
 def _update(xp, opt, loss_fn, v, opt_state, max_grad_norm):
     loss, grads, mean_ret = ivy.execute_with_gradients(loss_fn, v)
-    norm = _global_norm(xp, grads)
-    if max_grad_norm is not None:
-        grads = xp.clip_by_global_norm(grads, max_grad_norm)
+    if max_grad_norm is None:
+        norm = _global_norm(xp, grads)
+    else:
+        grads, norm = xp.clip_by_global_norm(grads, max_grad_norm)
     v, opt_state = opt.step(v, grads, opt_state)
     return mean_ret, norm, v, opt_state
 
@@ -305,24 +306,49 @@ def mean_return(
     batch_size: int = 64,
     autoreset: bool = False,
     dtype: Dtype = "float32",
+    compile: bool | None = None,
     f: Framework = None,
 ) -> float:
     """The mean return of ``batch_size`` rollouts of ``horizon`` steps from fresh initial states,
     under ``policy(obs, v)``, or under uniformly random actions when ``policy`` is None.
 
+    Args:
+        env: the environment.
+        horizon: steps per rollout.
+        policy, v: the policy and its parameters, or None for random actions.
+        batch_size: number of rollouts.
+        autoreset: restart environments that terminate within the horizon.
+        dtype: dtype of the states.
+        compile: run the rollouts compiled; by default on jax and tensorflow (an eager jax
+            rollout compiles each of its operations at its first call).
+        f: framework; by default that of ``v`` or the global framework.
+
+    Returns:
+        The mean undiscounted return, a float.
+
     Example:
         >>> ivy_gym.mean_return(ivy_gym.PendulumSmooth(), 100, f="torch")  # a random policy
     """
     xp = ivy.get_framework(v, f=f) if v is not None else ivy.get_framework(f=f)
-    state = env.reset((batch_size,), dtype=dtype, f=xp)
-    if policy is None:
-        low, high = env.action_bounds()
-        u = xp.random_uniform(shape=(horizon, batch_size, env.action_dim), dtype=dtype)
-        actions = xp.asarray(low, dtype=dtype) + xp.asarray(high - low, dtype=dtype) * u
-        traj = rollout(env, state, actions, autoreset=autoreset, f=xp)
-    else:
-        traj = rollout(env, state, policy=policy, v=v, horizon=horizon, autoreset=autoreset, f=xp)
-    return float(ivy.to_numpy(xp.mean(xp.sum(traj.rewards, axis=0))))
+    if compile is None:
+        compile = xp.backend in ("jax", "tensorflow")
+
+    def run(v):
+        state = env.reset((batch_size,), dtype=dtype, f=xp)
+        if policy is None:
+            low, high = env.action_bounds()
+            u = xp.random_uniform(shape=(horizon, batch_size, env.action_dim), dtype=dtype)
+            actions = xp.asarray(low, dtype=dtype) + xp.asarray(high - low, dtype=dtype) * u
+            traj = rollout(env, state, actions, autoreset=autoreset, f=xp)
+        else:
+            traj = rollout(
+                env, state, policy=policy, v=v, horizon=horizon, autoreset=autoreset, f=xp
+            )
+        return xp.mean(xp.sum(traj.rewards, axis=0))
+
+    if compile:
+        run = ivy.compile_fn(run, f=xp)
+    return float(ivy.to_numpy(run(v)))
 
 
 def gradient_norms(
@@ -335,6 +361,7 @@ def gradient_norms(
     discount: float = 1.0,
     window: int | None = None,
     dtype: Dtype = "float32",
+    compile: bool | None = None,
     f: Framework = None,
 ) -> dict[str, np.ndarray]:
     """The norm of the gradient of the mean return against the horizon.
@@ -352,6 +379,7 @@ def gradient_norms(
         batch_size: initial states.
         discount, window: as for :func:`rollout` and :func:`optimise_actions`.
         dtype: dtype of the states.
+        compile: compile each horizon's gradient; by default on jax and tensorflow.
         f: framework (torch, jax or tensorflow).
 
     Returns:
@@ -364,6 +392,8 @@ def gradient_norms(
     if v is not None and f is None:
         f = ivy.get_framework(v)
     xp = _differentiable(f, "gradient_norms")
+    if compile is None:
+        compile = xp.backend != "torch"
     state = env.reset((batch_size,), dtype=dtype, f=xp)
     norms, rets = [], []
     for horizon in horizons:
@@ -380,12 +410,18 @@ def gradient_norms(
             ret = discounted_return(traj.rewards, discount, f=xp)
             return -xp.mean(ret), xp.mean(xp.sum(traj.rewards, axis=0))
 
+        def measure(variables, loss_fn=loss_fn):
+            _, grads, ret = ivy.execute_with_gradients(loss_fn, variables)
+            return _global_norm(xp, grads), ret
+
         if policy is None:
             variables = xp.zeros((horizon, batch_size, env.action_dim), dtype=dtype)
         else:
             variables = v
-        _, grads, ret = ivy.execute_with_gradients(loss_fn, variables)
-        norms.append(float(ivy.to_numpy(_global_norm(xp, grads))))
+        if compile:
+            measure = ivy.compile_fn(measure, f=xp)
+        norm, ret = measure(variables)
+        norms.append(float(ivy.to_numpy(norm)))
         rets.append(float(ivy.to_numpy(ret)))
     return {
         "horizon": np.asarray(horizons),

@@ -19,6 +19,7 @@ from typing import NamedTuple
 
 import ivy
 from ivy.typing import Array, Framework, Nest
+from ivy_gym.base import as_action
 
 __all__ = ["Trajectory", "rollout", "discounted_return"]
 
@@ -72,8 +73,8 @@ def rollout(
 
     ``window=K`` truncates gradients: the state is cut from the graph (``ivy.stop_gradient``)
     at steps ``K, 2K, ...``, so a reward's gradient reaches back to the start of its window at
-    most (as in short-horizon actor-critic methods); the values are unchanged. ``T`` must be a
-    multiple of ``K``.
+    most (as in short-horizon actor-critic methods); the values are unchanged. The last window
+    is shorter when ``K`` does not divide ``T``.
 
     Args:
         env: an :class:`ivy_gym.Env`.
@@ -106,6 +107,7 @@ def rollout(
                 f"rollout: actions must have shape (T, *batch, {env.action_dim}); got {shape}."
             )
         steps = shape[0]
+        actions = as_action(xp, actions, state)  # the state's framework and dtype, once
         if horizon is not None and operator.index(horizon) != steps:
             raise ValueError(f"rollout: horizon={horizon} but actions has {steps} steps.")
     else:
@@ -157,30 +159,38 @@ def rollout(
 
 
 def _windowed_scan(xp, step, carry, actions, steps, window):
-    """``ivy.scan(step, ...)`` in windows of ``window`` steps, cutting gradients between them."""
-    if window < 1 or steps % window:
-        raise ValueError(
-            f"rollout: the number of steps ({steps}) must be a multiple of window={window}."
-        )
-    count = steps // window
-    if actions is not None:
-        actions = xp.reshape(actions, (count, window, *actions.shape[1:]))
-        first_actions, later_actions = actions[0], actions[1:]
-    else:
-        first_actions = later_actions = None
+    """``ivy.scan(step, ...)`` in windows of ``window`` steps (the last one may be shorter),
+    cutting gradients between them."""
+    if window < 1:
+        raise ValueError(f"rollout: window must be a positive number of steps, got {window}.")
+    full, rest = divmod(steps, window)
+
+    def part(start, stop):
+        return None if actions is None else actions[start:stop]
+
+    def cut(carry):
+        state, obs, alive = carry
+        return (xp.stop_gradient(state), xp.stop_gradient(obs), alive)
 
     def run_window(carry, window_actions):
-        state, obs, alive = carry
-        carry = (xp.stop_gradient(state), xp.stop_gradient(obs), alive)
-        return ivy.scan(step, carry, window_actions, length=window, f=xp)
+        return ivy.scan(step, cut(carry), window_actions, length=window, f=xp)
 
-    carry, first = ivy.scan(step, carry, first_actions, length=window, f=xp)
-    carry, later = ivy.scan(run_window, carry, later_actions, length=count - 1, f=xp)
-
-    def join(a, b):
-        return xp.concat([a, xp.reshape(b, ((count - 1) * window, *a.shape[1:]))], axis=0)
-
-    return carry, ivy.nest.multi_map_nest(join, first, later)
+    carry, first = ivy.scan(step, carry, part(0, window), length=window, f=xp)
+    pieces = [first]
+    if full > 1:
+        middle = part(window, full * window)
+        if middle is not None:
+            middle = xp.reshape(middle, (full - 1, window, *middle.shape[1:]))
+        carry, outs = ivy.scan(run_window, carry, middle, length=full - 1, f=xp)
+        pieces.append(
+            ivy.nest.map_nest(lambda a: xp.reshape(a, ((full - 1) * window, *a.shape[2:])), outs)
+        )
+    if rest:
+        carry, outs = ivy.scan(step, cut(carry), part(full * window, steps), length=rest, f=xp)
+        pieces.append(outs)
+    if len(pieces) == 1:
+        return carry, first
+    return carry, ivy.nest.multi_map_nest(lambda *a: xp.concat(a, axis=0), *pieces)
 
 
 def discounted_return(rewards: Array, discount: float = 1.0, *, f: Framework = None) -> Array:

@@ -188,8 +188,8 @@ def test_rollout_errors():
         ivy_gym.rollout(env, state, policy=lambda o, v: o[..., :1], v={})
     with pytest.raises(ValueError, match="components"):
         ivy_gym.rollout(env, np.zeros((2, 5)), np.zeros((10, 2, 1)))
-    with pytest.raises(ValueError, match="multiple"):
-        ivy_gym.rollout(env, state, np.zeros((10, 2, 1)), window=3)
+    with pytest.raises(ValueError, match="positive"):
+        ivy_gym.rollout(env, state, np.zeros((10, 2, 1)), window=0)
     with pytest.raises(ValueError, match="one state"):
         env.render(state)
 
