@@ -313,7 +313,7 @@ def test_while_loop_with_maximum_iterations_is_differentiable(diff_backend):
     check_gradients(diff_backend, fn, [rng.uniform(1, 4, size=3), np.ones(3) * 1.5])
 
 
-def test_jax_while_loop_without_maximum_iterations_refuses_reverse_mode_when_compiled(request):
+def test_jax_while_loop_without_maximum_iterations_refuses_reverse_mode(request):
     if "jax" not in request.config.ivy_backends:
         pytest.skip("jax not selected")
     keep_going, body = newton(ivy.jax, 2.0)
@@ -325,10 +325,9 @@ def test_jax_while_loop_without_maximum_iterations_refuses_reverse_mode_when_com
         return ivy.execute_with_gradients(fn, x0)
 
     x0 = native(np.ones(2), "jax")
-    eager = value_and_grads(x0)  # eagerly a Python loop: differentiable
-    np.testing.assert_allclose(numpy_of(eager[1]), 0.0, atol=1e-3)  # converged: no dependence
-    with pytest.raises(ValueError, match="Reverse-mode differentiation does not work"):
-        ivy.compile_fn(value_and_grads)(x0)
+    for run in (value_and_grads, ivy.compile_fn(value_and_grads)):  # eager (traced x0), compiled
+        with pytest.raises(ValueError, match="Reverse-mode differentiation does not work"):
+            run(x0)
 
 
 def branches(xp):
