@@ -232,6 +232,11 @@ def as_action(xp, action, state):
     return xp.asarray(action, dtype=dtype)
 
 
+def scalar_action(xp, action):
+    """The action of a task with one action component, without its last axis."""
+    return xp.squeeze(action, axis=-1)
+
+
 def unstack_last(xp, x) -> tuple:
     """The components of the last axis of ``x`` (one ``unstack``: slicing component by component
     costs ~40 us a slice on eager jax and ~100 us on eager tensorflow)."""

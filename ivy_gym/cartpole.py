@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ivy_gym.base import Env, unstack_last
+from ivy_gym.base import Env, scalar_action, unstack_last
 from ivy_gym.rendering import reward_color
 
 __all__ = ["CartPole", "CartPoleSwingUp", "CartPoleParams"]
@@ -110,17 +110,15 @@ class CartPole(_CartPoleBase):
 
     def _step(self, xp, p, state, action):
         x, x_dot, theta, theta_dot = unstack_last(xp, state)
-        force = p.force_mag * unstack_last(xp, action)[0]
+        force = p.force_mag * scalar_action(xp, action)
         xacc, thetaacc = _accelerations(xp, p, x_dot, theta, theta_dot, force)
         x = x + p.tau * x_dot
         x_dot = x_dot + p.tau * xacc
         theta = theta + p.tau * theta_dot
         theta_dot = theta_dot + p.tau * thetaacc
         state = xp.stack([x, x_dot, theta, theta_dot], axis=-1)
-        terminated = xp.logical_or(
-            xp.logical_or(x < -p.x_threshold, x > p.x_threshold),
-            xp.logical_or(theta < -p.theta_threshold_radians, theta > p.theta_threshold_radians),
-        )
+        # |x| > t is Gymnasium's x < -t or x > t (both False for NaN)
+        terminated = (xp.abs(x) > p.x_threshold) | (xp.abs(theta) > p.theta_threshold_radians)
         return state, state, xp.ones_like(x), terminated
 
     def _observe(self, xp, p, state):
@@ -159,7 +157,7 @@ class CartPoleSwingUp(_CartPoleBase):
 
     def _step(self, xp, p, state, action):
         x, x_dot, theta, theta_dot = unstack_last(xp, state)
-        force = p.force_mag * unstack_last(xp, action)[0]
+        force = p.force_mag * scalar_action(xp, action)
         xacc, thetaacc = _accelerations(xp, p, x_dot, theta, theta_dot, force)
         x_dot = x_dot + p.tau * xacc
         x = x + p.tau * x_dot

@@ -63,15 +63,20 @@ class _Facade:
         self._single_observation_space = _box(*core.observation_bounds(), self.dtype)
         self._action_low, self._action_high = low, high
         self._step = core.step
+        reset_low, reset_high = core.reset_bounds()
+        self._random = reset_low != reset_high
+        self._reset_box = reset_low, reset_high, reset_low[self._random], reset_high[self._random]
 
     def _draw_states(self, rng: np.random.Generator, count: int | None) -> np.ndarray:
         """Initial states drawn with Gymnasium's generator: the random components of the reset
         box in one call (as Gymnasium's own environments draw them)."""
-        low, high = self.core.reset_bounds()
-        random = low != high
-        size = (random.sum(),) if count is None else (count, random.sum())
-        states = np.broadcast_to(low, size[:-1] + low.shape).copy()
-        states[..., random] = rng.uniform(low[random], high[random], size=size)
+        low, high, random_low, random_high = self._reset_box
+        batch = () if count is None else (count,)
+        if self._random.all():
+            return rng.uniform(low, high, size=(*batch, len(low)))
+        states = np.empty((*batch, len(low)))
+        states[...] = low
+        states[..., self._random] = rng.uniform(random_low, random_high, (*batch, len(random_low)))
         return states
 
     def _to_backend(self, states: np.ndarray):
@@ -83,29 +88,29 @@ class _Facade:
 
     def _checked_actions(self, action, batch: tuple[int, ...]) -> np.ndarray:
         """The action(s) as float64 core actions ``(*batch, action_dim)``, or a clear error."""
+        a = np.asarray(action)
         if self.discrete:
-            a = np.asarray(action)
-            if a.shape != batch or not np.issubdtype(a.dtype, np.integer):
+            if a.shape != batch or a.dtype.kind not in "iu":
                 raise ValueError(
                     f"{self._name}: expected integer action(s) of shape {batch} in {{0, 1}}, got "
                     f"{action!r} (shape {a.shape}, dtype {a.dtype})."
                 )
-            if np.any((a != 0) & (a != 1)):
+            if ((a != 0) & (a != 1)).any():
                 raise ValueError(
-                    f"{self._name}: actions must be 0 (push left) or 1 (push right), got {action!r}."
+                    f"{self._name}: actions must be 0 (push left) or 1 (push right), got "
+                    f"{action!r}."
                 )
             return (2.0 * a - 1.0)[..., None]
-        a = np.asarray(action, dtype=np.float64)
         want = (*batch, self.core.action_dim)
         if a.shape != want:
             raise ValueError(
                 f"{self._name}: expected action(s) of shape {want}, got shape {a.shape}."
             )
-        outside = ~((a >= self._action_low) & (a <= self._action_high))  # NaN is outside too
-        if np.any(outside):
+        inside = (a >= self._action_low) & (a <= self._action_high)  # NaN is outside
+        if not inside.all():
             raise ValueError(
                 f"{self._name}: action(s) outside the action space [{self._action_low}, "
-                f"{self._action_high}]: {a[outside]}. Clip or rescale the action (e.g. tanh)."
+                f"{self._action_high}]: {a[~inside]}. Clip or rescale the action (e.g. tanh)."
             )
         return a
 
@@ -292,11 +297,11 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
             truncated = self._steps >= self.max_episode_steps
         restart = self._prev_done
         if restart.any():
-            fresh = self._draw_states(self.np_random, int(restart.sum()))
-            state_np = np.asarray(ivy.to_numpy(state), np.float64)
-            state_np[restart] = fresh
-            state = self._to_backend(state_np)
-            obs[restart] = self._numpy(self.core.observe(state))[restart]
+            fresh = self._to_backend(self._draw_states(self.np_random, int(restart.sum())))
+            state_np = np.array(ivy.to_numpy(state))  # a writable copy, in the state's dtype
+            state_np[restart] = ivy.to_numpy(fresh)
+            state = self.xp.asarray(state_np)
+            obs[restart] = self._numpy(self.core.observe(fresh))
             reward[restart] = 0.0
             terminated[restart] = False
             truncated[restart] = False

@@ -12,7 +12,7 @@ from functools import partial
 
 import numpy as np
 
-from ivy_gym.base import Env, unstack_last
+from ivy_gym.base import Env, scalar_action, unstack_last
 from ivy_gym.rendering import reward_color
 
 __all__ = [
@@ -157,7 +157,7 @@ class MountainCarContinuous(_MountainCarBase):
 
     def _step(self, xp, p, state, action):
         position, velocity = unstack_last(xp, state)
-        a = unstack_last(xp, action)[0]
+        a = scalar_action(xp, action)
         force = xp.clip(a, p.min_action, p.max_action)
         increment = force * p.power - 0.0025 * xp.cos(self._round(xp, 3 * position))
         if self.float32_state and state.dtype != xp.float32:
@@ -219,7 +219,7 @@ class MountainCarShaped(_MountainCarBase):
 
     def _step(self, xp, p, state, action):
         x, v = unstack_last(xp, state)
-        acc = p.torque_scale * unstack_last(xp, action)[0] - p.g * xp.cos(3 * x)
+        acc = p.torque_scale * scalar_action(xp, action) - p.g * xp.cos(3 * x)
         v = v + p.dt * acc
         x = x + p.dt * v
         d = x - p.goal_position

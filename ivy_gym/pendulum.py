@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ivy_gym.base import Env, unstack_last
+from ivy_gym.base import Env, scalar_action, unstack_last
 from ivy_gym.rendering import reward_color
 
 __all__ = ["Pendulum", "PendulumSmooth", "PendulumParams", "PendulumSmoothParams"]
@@ -107,7 +107,7 @@ class Pendulum(_PendulumBase):
 
     def _step(self, xp, p, state, action):
         th, thdot = unstack_last(xp, state)
-        u = xp.clip(unstack_last(xp, action)[0], -p.max_torque, p.max_torque)
+        u = xp.clip(scalar_action(xp, action), -p.max_torque, p.max_torque)
         wrapped = xp.remainder(th + math.pi, 2 * math.pi) - math.pi
         costs = wrapped * wrapped + 0.1 * (thdot * thdot) + 0.001 * (u * u)
         newthdot = thdot + (3 * p.g / (2 * p.l) * xp.sin(th) + 3.0 / (p.m * (p.l * p.l)) * u) * p.dt
@@ -151,7 +151,7 @@ class PendulumSmooth(_PendulumBase):
 
     def _step(self, xp, p, state, action):
         th, thdot = unstack_last(xp, state)
-        torque = p.torque_scale * unstack_last(xp, action)[0]
+        torque = p.torque_scale * scalar_action(xp, action)
         thacc = 3 * p.g / (2 * p.l) * xp.sin(th) + 3.0 / (p.m * (p.l * p.l)) * torque
         thdot = thdot + p.dt * thacc
         th = th + p.dt * thdot
