@@ -106,9 +106,10 @@ def _differentiable(f: Framework, name: str):
     return xp
 
 
-def _run(xp, step, carry, iterations, compile):
-    """Call ``carry = step(*carry)`` ``iterations`` times (compiled if asked); returns the final
-    carry, the returns, the gradient norms and the timings."""
+def _run(xp, step, carry, iterations, compile, callback=None, to_user=lambda v: v):
+    """Call ``carry = step(*carry)`` ``iterations`` times (compiled if asked), or until
+    ``callback(iteration, variables)`` returns True; returns the final carry, the returns, the
+    gradient norms and the timings."""
     fn = ivy.compile_fn(step, f=xp) if compile else step
     returns, norms = [], []
     start = time.perf_counter()
@@ -119,6 +120,8 @@ def _run(xp, step, carry, iterations, compile):
         norms.append(norm)
         if i == 0:
             first = time.perf_counter() - start
+        if callback is not None and callback(i, to_user(carry[0])):
+            break
     returns = np.array([float(ivy.to_numpy(r)) for r in returns])
     norms = np.array([float(ivy.to_numpy(n)) for n in norms])
     return carry, returns, norms, time.perf_counter() - start, first
@@ -146,9 +149,11 @@ def optimise_actions(
     window: int | None = None,
     max_grad_norm: float | None = None,
     init_scale: float = 1.0,
+    initial_logits: Array | None = None,
     seed: int | None = None,
     dtype: Dtype = "float32",
     compile: bool | None = None,
+    callback: Callable[[int, Array], bool | None] | None = None,
     f: Framework = None,
 ) -> OptimisationResult:
     """Optimise an open-loop action sequence through a differentiable rollout (Adam).
@@ -167,9 +172,13 @@ def optimise_actions(
         window: cut gradients every ``window`` steps (a divisor of ``horizon``), or None.
         max_grad_norm: clip the gradient's global norm, or None.
         init_scale: initial logits are uniform in ``[-init_scale, init_scale]``.
+        initial_logits: the initial logits ``(T, *B, action_dim)`` instead (any backend's array
+            or numpy), e.g. the same on every backend.
         seed: ``ivy.seed`` for the backend first (None: leave the generator as it is).
         dtype: dtype of the states and actions.
         compile: run each iteration compiled; by default on jax and tensorflow.
+        callback: ``callback(iteration, actions)`` after each update (the actions after it);
+            returning True stops the optimisation (e.g. once the task is solved).
         f: framework (torch, jax or tensorflow); by default the global framework or that of
             ``initial_state``.
 
@@ -191,7 +200,15 @@ def optimise_actions(
     dtype = initial_state.dtype
     batch = tuple(initial_state.shape[:-1])
     shape = (horizon, *batch, env.action_dim)
-    logits = xp.random_uniform(-init_scale, init_scale, shape, dtype=dtype)
+    if initial_logits is None:
+        logits = xp.random_uniform(-init_scale, init_scale, shape, dtype=dtype)
+    else:
+        logits = xp.asarray(ivy.to_numpy(initial_logits), dtype=dtype)
+        if tuple(logits.shape) != shape:
+            raise ValueError(
+                f"optimise_actions: initial_logits must have shape {shape}, got "
+                f"{tuple(logits.shape)}."
+            )
     opt = ivy.Adam(lr, f=xp)
 
     def loss_fn(logits):
@@ -205,7 +222,9 @@ def optimise_actions(
     if compile is None:
         compile = xp.backend != "torch"
     carry = (logits, opt.init(logits))
-    (logits, _), returns, norms, seconds, first = _run(xp, step, carry, iterations, compile)
+    (logits, _), returns, norms, seconds, first = _run(
+        xp, step, carry, iterations, compile, callback, lambda v: squash_actions(v, env, f=xp)
+    )
     actions = squash_actions(logits, env, f=xp)
     final = rollout(env, initial_state, actions, f=xp)
     final_return = float(ivy.to_numpy(xp.mean(xp.sum(final.rewards, axis=0))))
@@ -230,6 +249,7 @@ def optimise_policy(
     seed: int | None = None,
     dtype: Dtype = "float32",
     compile: bool | None = None,
+    callback: Callable[[int, Nest], bool | None] | None = None,
     f: Framework = None,
 ) -> OptimisationResult:
     """Optimise a policy's parameters through differentiable rollouts (Adam): at every
@@ -250,6 +270,7 @@ def optimise_policy(
         seed: ``ivy.seed`` for the backend first (None: leave the generator as it is).
         dtype: dtype of the states.
         compile: run each iteration compiled; by default on jax and tensorflow.
+        callback: ``callback(iteration, v)`` after each update; True stops the optimisation.
         f: framework; by default that of ``v``.
 
     Returns:
@@ -292,7 +313,9 @@ def optimise_policy(
 
     if compile is None:
         compile = xp.backend != "torch"
-    (v, _), returns, norms, seconds, first = _run(xp, step, (v, opt.init(v)), iterations, compile)
+    (v, _), returns, norms, seconds, first = _run(
+        xp, step, (v, opt.init(v)), iterations, compile, callback
+    )
     final_return = mean_return(env, horizon, policy=policy, v=v, batch_size=batch_size, f=xp)
     return OptimisationResult(v, returns, norms, final_return, seconds, first)
 

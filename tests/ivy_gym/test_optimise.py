@@ -72,6 +72,20 @@ def test_optimise_actions_options_run(request):
     np.testing.assert_allclose(again.returns, result.returns, rtol=1e-10)  # seeded
 
 
+def test_callback_sees_the_actions_and_can_stop(request):
+    backend = _quick_backend(request)
+    env = ivy_gym.Pendulum()
+    seen = []
+
+    def callback(iteration, actions):
+        seen.append((iteration, numpy_of(actions).shape, float(np.abs(numpy_of(actions)).max())))
+        return iteration == 2
+
+    result = ivy_gym.optimise_actions(env, 10, 50, f=backend, callback=callback, seed=0)
+    assert [s[0] for s in seen] == [0, 1, 2] and result.returns.shape == (3,)
+    assert all(shape == (10, 1) and largest <= 2.0 for _, shape, largest in seen)
+
+
 def test_optimise_policy_improves_the_mean_return(request):
     backend = _quick_backend(request)
     env = ivy_gym.CartPoleSwingUp()
