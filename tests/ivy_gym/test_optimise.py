@@ -40,36 +40,15 @@ def _quick_backend(request):
     pytest.skip("needs a differentiable backend")
 
 
-def test_optimise_actions_options_run(request):
+def test_optimise_actions_options_run_and_seed_repeats(request):
     backend = _quick_backend(request)
     env = ivy_gym.CartPoleSwingUp()
-    result = ivy_gym.optimise_actions(
-        env,
-        20,
-        5,
-        batch_shape=(3,),
-        discount=0.95,
-        window=5,
-        max_grad_norm=1.0,
-        dtype="float64",
-        f=backend,
-        seed=1,
-    )
+    options = dict(batch_shape=(3,), discount=0.95, window=5, max_grad_norm=1.0, dtype="float64")
+    result = ivy_gym.optimise_actions(env, 20, 5, f=backend, seed=1, **options)
     assert numpy_of(result.initial_state).shape == (3, 4)
     assert numpy_of(result.actions).dtype == np.float64
-    again = ivy_gym.optimise_actions(
-        env,
-        20,
-        5,
-        batch_shape=(3,),
-        discount=0.95,
-        window=5,
-        max_grad_norm=1.0,
-        dtype="float64",
-        f=backend,
-        seed=1,
-    )
-    np.testing.assert_allclose(again.returns, result.returns, rtol=1e-10)  # seeded
+    again = ivy_gym.optimise_actions(env, 20, 5, f=backend, seed=1, **options)
+    np.testing.assert_allclose(again.returns, result.returns, rtol=1e-10)
 
 
 def test_callback_sees_the_actions_and_can_stop(request):
