@@ -60,6 +60,22 @@ class Env:
 
     def __init__(self, **params: Any) -> None:
         self.params = self.Params(**params)
+        self._boxes = self._python_boxes()
+
+    def _python_boxes(self) -> dict[str, tuple[float, ...]]:
+        """The reset and action boxes as tuples of Python floats, made once, outside any trace:
+        constants that every compiler takes as they are (numpy arrays inside a function that
+        torch.compile traces become traced tensors)."""
+        low, high = self.reset_bounds()
+        action_low, action_high = self.action_bounds()
+        return {
+            "reset_low": tuple(float(v) for v in low),
+            "reset_width": tuple(float(v) for v in high - low),
+            "action_low": tuple(float(v) for v in action_low),
+            "action_mid": tuple(float(v) for v in (action_high + action_low) / 2),
+            "action_half": tuple(float(v) for v in (action_high - action_low) / 2),
+            "action_width": tuple(float(v) for v in action_high - action_low),
+        }
 
     # ------------------------------------------------------------------------------------------
     # Description
@@ -104,6 +120,10 @@ class Env:
         """
         new = copy.copy(self)
         new.params = dataclasses.replace(self.params, **changes)
+        values = [getattr(new.params, field.name) for field in dataclasses.fields(new.params)]
+        if not all(_is_number(v) for v in values):
+            return new  # array parameters (for gradients) keep the boxes of the numbers
+        new._boxes = new._python_boxes()
         return new
 
     def __repr__(self) -> str:
@@ -133,11 +153,10 @@ class Env:
         """
         xp = ivy.get_framework(f=f)
         batch_shape = _shape(batch_shape)
-        low, high = self.reset_bounds()
-        low_a = xp.asarray(low, dtype=dtype)
-        width = xp.asarray(high - low, dtype=dtype)
+        low = xp.asarray(self._boxes["reset_low"], dtype=dtype)
+        width = xp.asarray(self._boxes["reset_width"], dtype=dtype)
         u = xp.random_uniform(shape=(*batch_shape, self.state_dim), dtype=dtype)
-        return self._initial(xp, low_a + width * u)
+        return self._initial(xp, low + width * u)
 
     def _initial(self, xp, state):
         """A hook on freshly drawn states (e.g. rounding); identity by default."""
@@ -216,6 +235,10 @@ class Env:
 
     def _draw(self, canvas, s: np.ndarray) -> None:
         raise NotImplementedError
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, (int, float, bool))
 
 
 def _shape(batch_shape: Shape | int) -> tuple[int, ...]:

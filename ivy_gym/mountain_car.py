@@ -125,9 +125,9 @@ class MountainCarContinuous(_MountainCarBase):
     max_episode_steps = 999
 
     def __init__(self, *, smooth: bool = False, float32_state: bool = True, **params) -> None:
-        super().__init__(**params)
         self.smooth = bool(smooth)
         self.float32_state = bool(float32_state)
+        super().__init__(**params)
 
     def __repr__(self) -> str:
         return (

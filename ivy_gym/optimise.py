@@ -85,9 +85,8 @@ def squash_actions(logits: Array, env: Env, *, f: Framework = None) -> Array:
         array([[0.], [0.], [0.]])
     """
     xp = ivy.get_framework(logits, f=f)
-    low, high = env.action_bounds()
-    mid = xp.asarray((high + low) / 2, dtype=logits.dtype)
-    half = xp.asarray((high - low) / 2, dtype=logits.dtype)
+    mid = xp.asarray(env._boxes["action_mid"], dtype=logits.dtype)
+    half = xp.asarray(env._boxes["action_half"], dtype=logits.dtype)
     return mid + half * xp.tanh(logits)
 
 
@@ -359,9 +358,9 @@ def mean_return(
     def run(v):
         state = env.reset((batch_size,), dtype=dtype, f=xp)
         if policy is None:
-            low, high = env.action_bounds()
             u = xp.random_uniform(shape=(horizon, batch_size, env.action_dim), dtype=dtype)
-            actions = xp.asarray(low, dtype=dtype) + xp.asarray(high - low, dtype=dtype) * u
+            low = xp.asarray(env._boxes["action_low"], dtype=dtype)
+            actions = low + xp.asarray(env._boxes["action_width"], dtype=dtype) * u
             traj = rollout(env, state, actions, autoreset=autoreset, f=xp)
         else:
             traj = rollout(

@@ -88,8 +88,8 @@ class Pendulum(_PendulumBase):
     Params = PendulumParams
 
     def __init__(self, *, smooth: bool = False, **params) -> None:
-        super().__init__(**params)
         self.smooth = bool(smooth)
+        super().__init__(**params)
 
     def __repr__(self) -> str:
         return f"Pendulum(smooth={self.smooth}, {self.params})"

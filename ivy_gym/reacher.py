@@ -51,9 +51,7 @@ class Reacher(Env):
     def __init__(self, num_joints: int = 2, **params) -> None:
         if int(num_joints) < 1:
             raise ValueError(f"Reacher: num_joints must be at least 1, got {num_joints}.")
-        super().__init__(**params)
-        self.num_joints = int(num_joints)
-        n = self.num_joints
+        self.num_joints = n = int(num_joints)
         self.state_names = (
             *(f"angle_{i}" for i in range(n)),
             *(f"angle_vel_{i}" for i in range(n)),
@@ -67,6 +65,7 @@ class Reacher(Env):
             "goal_x",
             "goal_y",
         )
+        super().__init__(**params)
 
     def __repr__(self) -> str:
         return f"Reacher(num_joints={self.num_joints}, {self.params})"

@@ -51,7 +51,6 @@ class Swimmer(Env):
     def __init__(self, num_urchins: int = 5, **params) -> None:
         if int(num_urchins) < 0:
             raise ValueError(f"Swimmer: num_urchins must be non-negative, got {num_urchins}.")
-        super().__init__(**params)
         self.num_urchins = int(num_urchins)
         names = (
             *(f"urchin_{i}_{c}" for i in range(self.num_urchins) for c in "xy"),
@@ -63,6 +62,7 @@ class Swimmer(Env):
             "goal_y",
         )
         self.state_names = self.observation_names = names
+        super().__init__(**params)
 
     def __repr__(self) -> str:
         return f"Swimmer(num_urchins={self.num_urchins}, {self.params})"
