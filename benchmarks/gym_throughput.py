@@ -135,8 +135,10 @@ def pendulum_gradient(backend, compile, steps=200, batch=64):
 def _interleaved(variants, repeats):
     """Median seconds per call of each variant, the variants taking turns (shared drift)."""
     timers = {}
+    for _ in range(2):  # warm up (and compile) all, twice: torch.compile guards on ivy's cache
+        for fn in variants.values():  # of array types, which the other variants fill
+            _block(fn())
     for name, fn in variants.items():
-        _block(fn())  # warm up (and compile)
         timers[name] = timeit.Timer(lambda fn=fn: _block(fn()))
     samples = interleaved_samples(timers, 1, repeats)
     return {name: median(values) for name, values in samples.items()}
