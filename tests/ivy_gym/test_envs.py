@@ -224,6 +224,7 @@ def test_canvas_fills_shapes_where_they_are():
     assert abs(area - 20 * 20) <= 40  # a 2x2 square at 10 px per unit
 
 
+@pytest.mark.filterwarnings("ignore:os.fork:RuntimeWarning")  # imageio-ffmpeg's subprocess
 def test_save_video_writes_gif_and_mp4(tmp_path):
     import imageio.v3 as iio
 
