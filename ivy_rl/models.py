@@ -49,6 +49,7 @@ __all__ = [
     "polyak_update",
     "actor_critic",
     "space_kind",
+    "check_observation_space",
 ]
 
 
@@ -497,6 +498,26 @@ def space_kind(space: Any, supported: Sequence[str] = SUPPORTED_SPACES, *, who: 
     return kind
 
 
+def check_observation_space(space: Any, *, who: str = "") -> None:
+    """Raise a TypeError unless ``space`` is a Box (of any shape; models flatten it), listing
+    what is supported.
+
+    Example:
+        >>> check_observation_space(gymnasium.spaces.Discrete(16), who="PPO")
+        TypeError: PPO does not support the observation space Discrete(16); ...
+    """
+    import gymnasium as gym
+
+    if not isinstance(space, gym.spaces.Box):
+        prefix = f"{who} " if who else ""
+        raise TypeError(
+            f"{prefix}does not support the observation space {space!r}; supported observation "
+            "spaces: Box (of any shape, flattened). Wrap the environment to give Box "
+            "observations (e.g. gymnasium.wrappers.FlattenObservation, or a one-hot of "
+            "Discrete states)"
+        )
+
+
 def actor_critic(
     observation_space: Any,
     action_space: Any,
@@ -537,6 +558,7 @@ def actor_critic(
         >>> model = actor_critic(env.observation_space, env.action_space, rng=rng, f="torch")
     """
     kind = space_kind(action_space, who="actor_critic")
+    check_observation_space(observation_space, who="actor_critic")
     build = {"dtype": dtype, "device": device, "f": f}
     obs_size = int(np.prod(observation_space.shape))
     default_head = "gaussian" if kind == "Box" else "categorical"

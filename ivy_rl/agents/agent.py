@@ -28,7 +28,7 @@ import numpy as np
 import ivy
 from ivy.stateful.checkpoint import flat_dict_to_nest, nest_to_flat_dict
 from ivy.typing import Framework, Nest
-from ivy_rl.models import space_kind
+from ivy_rl.models import check_observation_space, space_kind
 
 __all__ = ["Agent"]
 
@@ -86,6 +86,8 @@ class Agent:
         """
         name = type(self).__name__
         self.action_kind = space_kind(action_space, self.supported_action_spaces, who=name)
+        if self.learns:
+            check_observation_space(observation_space, who=name)
         if f is None:
             f = ivy.current_framework() or "numpy"
         self.xp = ivy.get_framework(f=f)

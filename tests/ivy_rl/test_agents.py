@@ -75,7 +75,7 @@ _updates: dict = {}
 
 
 def _one_update(agent_name, space, backend, compile=False, fusion="update", **settings):
-    """``(v, optimizer states, logs)`` as numpy after the first update of an agent in float64
+    """``(v, optimizer states, logs, fusion level)``, as numpy, after the first update of an agent in float64
     fed the same synthetic transitions (with terminations and time limits)."""
     key = (agent_name, space, backend, compile, fusion, tuple(sorted(settings.items())))
     if key in _updates:
@@ -99,13 +99,13 @@ def _one_update(agent_name, space, backend, compile=False, fusion="update", **se
     arrays = ivy.nest.map_nest(
         lambda x: np.asarray(ivy.to_numpy(x)), (agent.v, agent.optimizer_states)
     )
-    _updates[key] = (*arrays, logs)
+    _updates[key] = (*arrays, logs, agent.fusion)
     return _updates[key]
 
 
 def _assert_same(got, expected, *, rtol=1e-9, atol=1e-11):
-    got_v, got_states, got_logs = got
-    v, states, logs = expected
+    got_v, got_states, got_logs = got[:3]
+    v, states, logs = expected[:3]
     for a, b in zip(
         ivy.nest.flatten_nest((got_v, got_states))[0], ivy.nest.flatten_nest((v, states))[0]
     ):
@@ -146,14 +146,30 @@ def test_same_update_on_every_backend_and_fusion_level_in_float64(agent_name, sp
 
 
 @pytest.mark.parametrize(
-    "agent_name,space,framework",
-    [("PPO", "Discrete", "torch"), ("TRPO", "Box", "jax"), ("A2C", "Box", "jax")],
+    "agent_name,space,framework,fusion",
+    [
+        ("PPO", "Discrete", "torch", "auto"),
+        ("TRPO", "Box", "jax", "steps"),
+        ("A2C", "Box", "jax", "steps"),
+    ],
 )
-def test_compiled_step_by_step_equals_eager(agent_name, space, framework):
-    # fusion='steps': the returns and each optimisation step compiled on their own
-    # (torch.compile here: the one torch-compiled case of the suite)
-    compiled = _one_update(agent_name, space, framework, compile=True, fusion="steps")
+def test_compiled_step_by_step_equals_eager(agent_name, space, framework, fusion):
+    # the returns and each optimisation step compiled on their own (torch.compile here: the
+    # one torch-compiled case of the suite, where 'auto' finds that torch.compile unrolls loops)
+    compiled = _one_update(agent_name, space, framework, compile=True, fusion=fusion)
+    assert compiled[3] == "steps"
     _assert_same(compiled, _one_update(agent_name, space, "torch"))
+
+
+def test_fusion_auto_fuses_where_compiled_loops_are_loops():
+    # jax and tensorflow compile ivy.scan as a loop: the whole update is one function
+    assert not ivy_rl.agents.compiled_scan_unrolls(ivy.get_framework(f="jax"))
+    assert not ivy_rl.agents.compiled_scan_unrolls(ivy.get_framework(f="tensorflow"))
+    for backend in ("jax", "tensorflow"):
+        agent = ivy_rl.PPO(**SETTINGS["PPO"]).initialize(
+            gym.spaces.Box(-1, 1, (3,)), gym.spaces.Discrete(2), f=backend
+        )
+        assert agent.fusion == "update"
 
 
 def test_ppo_kl_stop_masks_the_remaining_actor_steps():
@@ -213,6 +229,8 @@ def test_clear_errors_list_what_is_available():
         ivy_rl.PPO(fusion="all")
     with pytest.raises(TypeError, match="supported action spaces: Box, Discrete"):
         ivy_rl.PPO().initialize(gym.spaces.Box(-1, 1, (3,)), gym.spaces.MultiBinary(2), f="jax")
+    with pytest.raises(TypeError, match="supported observation spaces: Box"):
+        ivy_rl.PPO().initialize(gym.spaces.Discrete(16), gym.spaces.Discrete(2), f="jax")
     with pytest.raises(ivy.errors.UnsupportedError, match="torch', 'jax' or 'tensorflow"):
         ivy_rl.A2C().initialize(gym.spaces.Box(-1, 1, (3,)), gym.spaces.Discrete(2), f="numpy")
     with pytest.raises(ValueError, match="did you mean: CartPole-v1"):

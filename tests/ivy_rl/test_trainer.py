@@ -188,8 +188,8 @@ def test_train_plot_and_play_commands(tmp_path, capsys):
     assert results[0]["length"] >= 1 and os.path.getsize(tmp_path / "play.gif") > 1000
 
 
-def test_command_line_errors_list_what_is_available():
-    from ivy_rl import train
+def test_command_line_errors_list_what_is_available(tmp_path):
+    from ivy_rl import play, train
 
     with pytest.raises(ValueError, match="available agents"):
         train.main(["--agent", "DQN"])
@@ -203,6 +203,8 @@ def test_command_line_errors_list_what_is_available():
         cwd=ROOT,
     )
     assert done.returncode == 2 and "available agents: A2C, PPO" in done.stderr
+    with pytest.raises(FileNotFoundError, match="not a run folder"):
+        play.main([str(tmp_path)])
 
 
 def test_ray_workers_match_sync_workers():
