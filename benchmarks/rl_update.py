@@ -71,7 +71,9 @@ def measure(case: str, backend: str, fusion: str, updates: int) -> dict:
     t = 0
     while len(times) < updates:
         start = time.perf_counter()
-        logs = agent.update(data.normal(size=(workers, obs_size)), np.ones(workers), ends[t], ends[t])
+        logs = agent.update(
+            data.normal(size=(workers, obs_size)), np.ones(workers), ends[t], ends[t]
+        )
         if logs:
             times.append(time.perf_counter() - start)
         t += 1

@@ -19,7 +19,7 @@ SETTINGS = {
     "TRPO": dict(TINY, critic_iterations=2, cg_steps=3, backtrack_steps=3),
 }
 BRIEF_ENVIRONMENTS = {"A2C": "CartPole-v1", "PPO": "Pendulum-v1", "TRPO": "CartPole-v1"}
-TIME_COLUMNS = ("train/seconds", "train/epoch_seconds", "train/steps_per_second")
+TIME_COLUMNS = ("train/seconds", "train/epoch_seconds", "train/steps_per_second", "test/seconds")
 _trained: dict = {}
 
 

@@ -19,7 +19,7 @@ from ivy_rl.trainer import Trainer, latest_checkpoint
 from tests.ivy_rl._workers import assert_same_runs, observed
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-TIME_COLUMNS = ("train/seconds", "train/epoch_seconds", "train/steps_per_second")
+TIME_COLUMNS = ("train/seconds", "train/epoch_seconds", "train/steps_per_second", "test/seconds")
 PPO_TINY = dict(hidden_sizes=(16,), segment_size=24, batch_size=16, epochs=2)
 
 
