@@ -10,9 +10,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from ivy_rl.agents.a2c import A2C, compiled_scan_unrolls
+from ivy_rl.agents.a2c import A2C
 from ivy_rl.agents.agent import Agent
 from ivy_rl.agents.baselines import Constant, Uniform
+from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.agents.ppo import PPO
 from ivy_rl.agents.trpo import TRPO
 
@@ -26,6 +27,7 @@ __all__ = [
     "AGENTS",
     "make",
     "compiled_scan_unrolls",
+    "FUSION_LEVELS",
 ]
 
 AGENTS: dict[str, type[Agent]] = {

@@ -34,43 +34,15 @@ import ivy
 from ivy.nest import multi_map_nest
 from ivy_rl import updaters
 from ivy_rl.agents.agent import Agent
+from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.models import actor_critic
 from ivy_rl.normalizers import MeanStd, ReturnNormalizer, _fold_moments, _standard_deviation
 from ivy_rl.replays import Segment
 from ivy_rl.returns import _lambda_returns
 
-__all__ = ["A2C", "FUSION_LEVELS", "compiled_scan_unrolls"]
+__all__ = ["A2C"]
 
-FUSION_LEVELS = ("auto", "update", "steps")
 _TRANSITION_KEYS = ("observations", "next_observations", "rewards", "resets", "terminations")
-
-
-_UNROLLS: dict[str, bool] = {}
-
-
-def compiled_scan_unrolls(xp: Any) -> bool:
-    """Whether ``ivy.compile_fn`` on the backend namespace ``xp`` unrolls ``ivy.scan`` (traces
-    its body once per step, as ``torch.compile`` does) rather than compiling it as a loop (jax,
-    tensorflow). Found once per backend by compiling a scan of 8 steps and counting the
-    traces of its body; agents choose their fusion level from it (``fusion='auto'``).
-
-    Example:
-        >>> compiled_scan_unrolls(ivy.jax), compiled_scan_unrolls(ivy.torch)
-        (False, True)
-    """
-    if xp.backend not in _UNROLLS:
-        traces = []
-
-        def body(total, x):
-            traces.append(None)
-            return total + x, x
-
-        def run(xs):
-            return xp.scan(body, xs[0], xs)[0]
-
-        ivy.compile_fn(run, f=xp)(xp.zeros((8,), dtype="float32"))
-        _UNROLLS[xp.backend] = len(traces) >= 8
-    return _UNROLLS[xp.backend]
 
 
 class A2C(Agent):
@@ -200,7 +172,7 @@ class A2C(Agent):
         self._mode = self._compile(self._mode_fn)
         self.fusion = c["fusion"]
         if self.fusion == "auto":
-            unrolls = self.compiled and compiled_scan_unrolls(xp)
+            unrolls = self.compiled and compiled_scan_unrolls(f=xp)
             self.fusion = "steps" if unrolls else "update"
         self._fused = self.fusion == "update"
         self._compiled_steps: dict[str, Callable] = {}

@@ -163,8 +163,8 @@ def test_compiled_step_by_step_equals_eager(agent_name, space, framework, fusion
 
 def test_fusion_auto_fuses_where_compiled_loops_are_loops():
     # jax and tensorflow compile ivy.scan as a loop: the whole update is one function
-    assert not ivy_rl.agents.compiled_scan_unrolls(ivy.get_framework(f="jax"))
-    assert not ivy_rl.agents.compiled_scan_unrolls(ivy.get_framework(f="tensorflow"))
+    assert not ivy_rl.agents.compiled_scan_unrolls(f="jax")
+    assert not ivy_rl.agents.compiled_scan_unrolls(f="tensorflow")
     for backend in ("jax", "tensorflow"):
         agent = ivy_rl.PPO(**SETTINGS["PPO"]).initialize(
             gym.spaces.Box(-1, 1, (3,)), gym.spaces.Discrete(2), f=backend
