@@ -1,8 +1,8 @@
 """A2C: advantage actor-critic (also called vanilla policy gradient), the base of PPO and TRPO.
 
 Each update uses one segment of ``segment_size`` steps of every worker. Its numbers form one
-function of arrays, :meth:`A2C._update_fn`, compiled with ``ivy.compile_fn`` as a whole by
-default (``fusion="update"``):
+function of arrays, :meth:`A2C._update_fn`, compiled with ``ivy.compile_fn`` as a whole
+(``fusion="update"``, what ``"auto"`` chooses where the compiler compiles loops as loops):
 
 1. the critic evaluates the observations and the true next observations;
 2. λ-returns and advantages follow by an ``ivy.scan`` backwards in time, with partial-episode
@@ -12,11 +12,11 @@ default (``fusion="update"``):
    the critic's mini-batches (PPO and TRPO change this part). The mini-batch orders are an input
    drawn from the agent's numpy generator, so the compiled function draws nothing.
 
-With ``fusion="steps"`` the same functions are compiled piece by piece instead: the returns
-(step 1-2) as one function and each optimisation step as another, looped over on the host.
-Backends whose compiler unrolls ``ivy.scan`` (``torch.compile``) compile a long update slowly;
-this level keeps their compile time short. Both levels give the same numbers, as does
-``compile=False`` (everything eager).
+With ``fusion="steps"`` the same code is compiled piece by piece instead: the critic's values
+as one function, each optimisation step as another, the loops (the returns' scan, the
+mini-batches) running on the host. Compilers that unroll ``ivy.scan`` (``torch.compile``) take
+minutes on a whole update; this level keeps each compiled function one step long. Both levels
+give the same numbers, as does ``compile=False`` (everything eager).
 
 Example:
     >>> agent = A2C(segment_size=128).initialize(env.observation_space, env.action_space,
@@ -68,8 +68,8 @@ class A2C(Agent):
         normalize_returns: the critic predicts returns normalised by their running mean and std.
         normalize_advantages: standardise the advantages of each segment.
         fusion: what one compiled function holds: ``'update'`` (the whole update: returns and
-            every optimisation step), ``'steps'`` (the returns, and each optimisation step, as
-            separate compiled functions looped over on the host), or ``'auto'`` (default:
+            every optimisation step), ``'steps'`` (the critic's values, and each optimisation
+            step, as separate compiled functions; the loops on the host), or ``'auto'`` (default:
             ``'update'`` where ``ivy.compile_fn`` compiles ``ivy.scan`` as a loop, ``'steps'``
             where it unrolls it, as ``torch.compile`` does; see :func:`compiled_scan_unrolls`).
             Same numbers either way.
@@ -145,9 +145,10 @@ class A2C(Agent):
             head=c["head"],
             log_std_init=c["log_std_init"],
             dtype=self.dtype,
+            device=self.device,
             f=xp,
         )
-        self.v = self.model.v
+        self.v = self._placed(self.model.v)
         self.actor_optimizer = ivy.Adam(c["actor_lr"], f=xp)
         self.critic_optimizer = ivy.Adam(c["critic_lr"], f=xp)
         self.optimizer_states = {
@@ -176,12 +177,7 @@ class A2C(Agent):
             self.fusion = "steps" if unrolls else "update"
         self._fused = self.fusion == "update"
         self._compiled_steps: dict[str, Callable] = {}
-        if self._fused:
-            self._prepare_call = self._prepare
-            self._update = self._compile(self._update_fn)
-        else:
-            self._prepare_call = self._compile(self._prepare)
-            self._update = self._update_fn
+        self._update = self._compile(self._update_fn) if self._fused else self._update_fn
 
     def _passes(self) -> int:
         """Passes over a segment per update."""
@@ -193,14 +189,14 @@ class A2C(Agent):
         self.stats = {
             "obs": None
             if norm is None
-            else {k: self.xp.asarray(a) for k, a in norm.stats(self.dtype).items()}
+            else {k: self._asarray(a) for k, a in norm.stats(self.dtype).items()}
         }
 
     def _return_moments(self) -> dict[str, Any] | None:
         norm = self.return_normalizer
         if norm is None:
             return None
-        return {k: self.xp.asarray(a) for k, a in norm.moments(self.dtype).items()}
+        return {k: self._asarray(a) for k, a in norm.moments(self.dtype).items()}
 
     # ------------------------------------------------------------------------------------------
     # Pure functions (compiled)
@@ -220,7 +216,7 @@ class A2C(Agent):
     def _update_fn(self, v, states, obs_stats, return_moments, segment, orders):
         """The whole update: ``(v, states, return_moments, logs)`` after learning from the
         segment (arrays ``[time, workers, ...]``) with the mini-batches ``orders``."""
-        batch, return_moments, return_stats = self._prepare_call(
+        batch, return_moments, return_stats = self._prepare(
             v["critic"], obs_stats, return_moments, segment
         )
         stats = {"obs": obs_stats, "ret": return_stats}
@@ -245,10 +241,14 @@ class A2C(Agent):
         observations = xp.reshape(segment["observations"], (size, -1))
         following = xp.reshape(segment["next_observations"], (size, -1))
         return_stats = self._moment_stats(return_moments)
-        values = self.model.critic(
-            xp.concat([observations, following], axis=0), obs_stats, return_stats, v=critic_v
+        values = self._run_once(
+            "critic_values",
+            self._critic_values,
+            critic_v,
+            obs_stats,
+            return_stats,
+            xp.concat([observations, following], axis=0),
         )
-        values = xp.stop_gradient(values)
         current = xp.reshape(values[:size], (steps, workers))
         next_values = xp.reshape(values[size:], (steps, workers))
         returns = _lambda_returns(
@@ -281,6 +281,10 @@ class A2C(Agent):
             if key not in _TRANSITION_KEYS:
                 batch[key] = xp.reshape(value, (size, *tuple(value.shape)[2:]))
         return batch, return_moments, return_stats
+
+    def _critic_values(self, critic_v, obs_stats, return_stats, observations):
+        values = self.model.critic(observations, obs_stats, return_stats, v=critic_v)
+        return self.xp.stop_gradient(values)
 
     def _moment_stats(self, moments):
         if moments is None:
@@ -403,7 +407,9 @@ class A2C(Agent):
         xp = self.xp
         obs = self._observations(observations)
         noise = self._noise(obs.shape[0])
-        out = self._act(self.v["actor"], self.stats["obs"], xp.asarray(obs), xp.asarray(noise))
+        out = self._act(
+            self.v["actor"], self.stats["obs"], self._asarray(obs), self._asarray(noise)
+        )
         out = {k: np.asarray(xp.to_numpy(a)) for k, a in out.items()}
         unit = out.pop("unit")
         self._pending = {"observations": obs, **out}
@@ -413,7 +419,7 @@ class A2C(Agent):
         self._check_initialized()
         xp = self.xp
         obs = self._observations(observations)
-        mode = self._mode(self.v["actor"], self.stats["obs"], xp.asarray(obs))
+        mode = self._mode(self.v["actor"], self.stats["obs"], self._asarray(obs))
         return self._env_actions(np.asarray(xp.to_numpy(mode)))
 
     # ------------------------------------------------------------------------------------------
@@ -460,7 +466,7 @@ class A2C(Agent):
                 value = value.astype(self.np_dtype)
             elif value.dtype.kind in "iu":
                 value = value.astype(np.int32)
-            out[key] = self.xp.asarray(value)
+            out[key] = self._asarray(value)
         return out
 
     def _learn(self) -> dict[str, float]:
@@ -472,7 +478,7 @@ class A2C(Agent):
             self.stats["obs"],
             self._return_moments(),
             self._segment(),
-            xp.asarray(orders),
+            self._asarray(orders),
         )
         self.v, self.optimizer_states = v, states
         if moments is not None:

@@ -1,8 +1,8 @@
 """Fusion levels of an agent's update: what one ``ivy.compile_fn`` function holds.
 
 ``'update'``: the whole update (returns, every optimisation step) is one compiled function;
-``'steps'``: the returns and each optimisation step are compiled on their own and looped over on
-the host; ``'auto'``: ``'update'`` where the framework's compiler compiles ``ivy.scan`` as a loop
+``'steps'``: the critic's values and each optimisation step are compiled on their own, and the
+loops (the returns' scan, the mini-batches) run on the host; ``'auto'``: ``'update'`` where the framework's compiler compiles ``ivy.scan`` as a loop
 (jax, tensorflow), ``'steps'`` where it unrolls it (``torch.compile``), as found by
 :func:`compiled_scan_unrolls`.
 

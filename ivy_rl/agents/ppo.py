@@ -69,7 +69,7 @@ class PPO(A2C):
 
     def _optimize(self, v, states, stats, batch, orders):
         xp = self.xp
-        carry = (v, states, xp.asarray(True))
+        carry = (v, states, self._asarray(True))
         (v, states, _), ys = self._run_loop("ppo_step", self._ppo_step, carry, orders, stats, batch)
         # the actor's scalars are averaged over the steps it took
         taken = ys["actor/taken"]

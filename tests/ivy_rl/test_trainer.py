@@ -96,8 +96,15 @@ def test_workers_keep_time_limits_apart_from_terminations():
 
 
 def test_async_workers_match_sync_workers():
+    # async workers start by forkserver (this process has jax threads running); the
+    # time-awareness wrapper travels to them
     actions = np.random.default_rng(0).integers(0, 2, size=(60, 3))
-    assert_same_runs(observed("sync", 3, 2, actions), observed("async", 3, 2, actions))
+    sync = observed("sync", 3, 2, actions, time_feature=True)
+    assert_same_runs(sync, observed("async", 3, 2, actions, time_feature=True))
+    first, after_one = sync[0], sync[1]
+    assert first.shape == (3, 5)
+    np.testing.assert_allclose(first[:, -1], 1.0)
+    np.testing.assert_allclose(after_one[:, -1], 1.0 - 1.0 / 500, rtol=1e-6)
 
 
 def test_time_feature_counts_down_to_the_time_limit():
