@@ -203,7 +203,7 @@ def test_ppo_kl_stop_masks_the_remaining_actor_steps():
 
 def test_baselines_act_in_the_action_space():
     obs = np.zeros((6, 3))
-    box = gym.spaces.Box(np.array([0.0, -4.0]), np.array([1.0, 4.0]))
+    box = gym.spaces.Box(np.array([0.0, -4.0], np.float32), np.array([1.0, 4.0], np.float32))
     for space in (box, gym.spaces.Discrete(4, start=2)):
         agent = ivy_rl.Uniform().initialize(gym.spaces.Box(-1, 1, (3,)), space, seed=1)
         actions = agent.step(obs)
