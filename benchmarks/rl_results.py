@@ -17,7 +17,7 @@ Where ivy_rl normalises observations (its default), stable-baselines3 runs in
 ``VecNormalize(norm_obs=True, norm_reward=False, clip_obs=10)``, the same normalisation.
 
 Usage:
-    python benchmarks/rl_results.py                      # everything (about 40 min here)
+    python benchmarks/rl_results.py                      # everything (an hour here, loaded)
     python benchmarks/rl_results.py --only cartpole --frameworks jax
     python benchmarks/rl_results.py --steps 20000        # a quick look
     python -m ivy_rl.plot runs/bench/PPO-CartPole-v1-* --out curves.png
