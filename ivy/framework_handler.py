@@ -135,17 +135,27 @@ _CONTAINERS = (list, tuple, dict)
 # globals, so updating an entry here updates every one of them at once.
 #   _current  : the namespace set globally, or None
 #   _by_type  : type(x) -> namespace, for array types only
+#   _by_type_id : id(type(x)) -> namespace, the same (what the dispatchers read, see below)
 #   _by_f     : value of ``f`` (name or namespace) -> namespace
+#
+# The look-ups by type go through ``id(type)``, an int: compilers that trace Python and guard on
+# what it read (torch.compile's dynamo) then guard on that one key being present, where a dict
+# keyed by types is guarded on all its keys, and every new type seen anywhere (a Parameter, a
+# numpy scalar) would recompile every compiled function. A type's id is never reused: the
+# tables keep each type they hold alive.
 dispatch_globals: dict[str, Any] = {
     "_current": None,
     "_by_type": {},
+    "_by_type_id": {},
     "_by_f": {},
     "_passive": _PASSIVE,
 }
 _by_type: dict[type, types.ModuleType] = dispatch_globals["_by_type"]
+_by_type_id: dict[int, types.ModuleType] = dispatch_globals["_by_type_id"]
 _by_f: dict[Any, types.ModuleType] = dispatch_globals["_by_f"]
-_weak_types: set[type] = set()  # numpy scalars: numpy only if no other framework is present
-_neutral_types: set[type] = set(_PASSIVE)
+# id(type) -> type; numpy scalars: numpy only if no other framework is present
+_weak_types: dict[int, type] = {}
+_neutral_types: dict[int, type] = {id(t): t for t in _PASSIVE}  # id(type) -> type
 
 _loaded: dict[str, types.ModuleType] = {}
 _stack: list[types.ModuleType] = []
@@ -338,13 +348,14 @@ def _classify(t: type) -> types.ModuleType | None:
     """Resolve and cache a type never seen before."""
     name = framework_of_type(t)
     if name is None:
-        _neutral_types.add(t)
+        _neutral_types[id(t)] = t
         return None
     ns = load_backend(name)
     if name == "numpy" and issubclass(t, _numpy_generic()):
-        _weak_types.add(t)
+        _weak_types[id(t)] = t
     else:
         _by_type[t] = ns
+        _by_type_id[id(t)] = ns
     return ns
 
 
@@ -364,13 +375,14 @@ def _infer(*objs: Any, name: str = "this function") -> types.ModuleType:
     while pending:
         obj = pending.pop()
         t = type(obj)
-        ns = _by_type.get(t)
+        key = id(t)  # (see dispatch_globals)
+        ns = _by_type_id.get(key)
         if ns is None:
-            if t in _neutral_types:
+            if key in _neutral_types:
                 if isinstance(obj, _CONTAINERS):
                     pending.extend(obj.values() if isinstance(obj, dict) else obj)
                 continue
-            if t in _weak_types:
+            if key in _weak_types:
                 weak = _loaded["numpy"]
                 continue
             if isinstance(obj, _CONTAINERS):
@@ -379,7 +391,7 @@ def _infer(*objs: Any, name: str = "this function") -> types.ModuleType:
             ns = _classify(t)
             if ns is None:
                 continue
-            if t in _weak_types:
+            if key in _weak_types:
                 weak = ns
                 continue
         if found is None:

@@ -207,6 +207,8 @@ class LoopOps:
     def arrays(self, nest: Nest) -> Nest:
         """``nest`` with its leaves that are not arrays of the backend (Python scalars, numpy
         arrays next to torch ones) made arrays of the backend."""
+        if isinstance(nest, self.native):  # the common case, without a walk of the nest
+            return nest
         return map_nest(lambda a: a if isinstance(a, self.native) else self.asarray(a), nest)
 
 
@@ -254,17 +256,16 @@ def check_carry(name: str, before: Nest, after: Nest) -> None:
             f"(as jax and tensorflow require); initial {spec_before}, returned {spec_after}."
         )
     problems = []
-    paths = optree.tree_paths(before, none_is_leaf=False)
-    for path, a, b in zip(paths, leaves_before, leaves_after):
+    for i, (a, b) in enumerate(zip(leaves_before, leaves_after)):
         if not (hasattr(a, "shape") and hasattr(a, "dtype")):
             continue  # a Python scalar: its type is the backend's business
         shape_b = tuple(getattr(b, "shape", ()))
         dtype_b = getattr(b, "dtype", type(b).__name__)
         if tuple(a.shape) != shape_b or a.dtype != dtype_b:
-            problems.append(
-                f"at {path or 'the root'}: {a.dtype}{tuple(a.shape)} -> {dtype_b}{shape_b}"
-            )
-    if problems:
+            problems.append((i, f"{a.dtype}{tuple(a.shape)} -> {dtype_b}{shape_b}"))
+    if problems:  # the leaves' paths only for the message (they cost more than the check)
+        paths = optree.tree_paths(before, none_is_leaf=False)
+        problems = [f"at {paths[i] or 'the root'}: {change}" for i, change in problems]
         raise TypeError(
             f"ivy.{name}: the body must keep the carry's shapes and dtypes (as jax and tensorflow "
             f"require); changed " + "; ".join(problems) + ". Cast or reshape inside the body."

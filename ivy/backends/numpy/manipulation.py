@@ -27,6 +27,8 @@ def stack(arrays, /, *, axis=0):
 
 
 def unstack(x, /, *, axis=0):
+    if axis == 0 and x.ndim:  # slices: several times cheaper than np.moveaxis
+        return tuple([x[i, ...] for i in range(x.shape[0])])
     return tuple(np.moveaxis(x, axis, 0))
 
 
