@@ -46,6 +46,10 @@ try:  # private: the fast path is an optimisation, never a requirement
     )
 except ImportError:  # tensorflow moved them: plain tf.function
     _FAST_PATH = False
+try:  # private too: no tape is recording (then a trace's flat entry point needs no gradient)
+    from tensorflow.python.eager.record import could_possibly_record as _tape_may_record
+except ImportError:
+    _tape_may_record = None
 
 _MAX_FAST_TRACES = 64  # beyond this many argument signatures, tf.function's own cache serves
 _UNCHECKED, _REFUSED = object(), object()
@@ -64,7 +68,9 @@ def _call_key(leaves, treedef):
     parts, tensors = [treedef], []
     for leaf in leaves:
         if type(leaf) is _EagerTensor:
-            parts.append((leaf.dtype, leaf._shape_tuple()))
+            # the dtype as its enum (an int): tf.DType hashes and compares in Python, which cost
+            # more than the rest of the key (the table's look-up hashes and compares each part)
+            parts.append((leaf._datatype_enum(), leaf._shape_tuple()))
             tensors.append(leaf)
         elif isinstance(leaf, (tf.Tensor, tf.Variable)):
             return None, None  # symbolic tensors and variables: tf.function handles them
@@ -92,15 +98,21 @@ class _FastCall:
         key, tensors = _call_key(leaves, treedef)
         if key is None:
             return self._function(*args, **kwargs)
-        concrete = self._traces.get(key, _UNCHECKED)
-        if concrete is _UNCHECKED:
+        trace = self._traces.get(key, _UNCHECKED)
+        if trace is _UNCHECKED:
             out = self._function(*args, **kwargs)
             if len(self._traces) < _MAX_FAST_TRACES:
                 self._traces[key] = self._checked_trace(args, kwargs, tensors)
             return out
-        if concrete is _REFUSED:
+        if trace is _REFUSED:
             return self._function(*args, **kwargs)
-        return concrete._call_flat(tensors, concrete.captured_inputs)
+        if trace.direct is not None and not _tape_may_record() and tf.executing_eagerly():
+            if trace.out_spec is not None:
+                flat = trace.direct(*tensors, *trace.captured)
+                return optree.tree_unflatten(trace.out_spec, flat)
+            if not trace.out_checked:
+                return trace.first_direct_call(tensors)
+        return trace.concrete._call_flat(tensors, trace.captured)
 
     def _checked_trace(self, args, kwargs, tensors):
         """The trace tf.function chose for these arguments, if tf flattens them into exactly
@@ -115,7 +127,7 @@ class _FastCall:
             return _REFUSED
         if len(flat) != len(tensors) or any(a is not b for a, b in zip(flat, tensors)):
             return _REFUSED
-        return concrete
+        return _Trace(concrete)
 
     def get_concrete_function(self, *args, **kwargs):
         return self._function.get_concrete_function(*args, **kwargs)
@@ -126,3 +138,37 @@ class _FastCall:
 
     def __get__(self, obj, objtype=None):
         return self if obj is None else functools.partial(self, obj)
+
+
+class _Trace:
+    """A trace that ``tf.function`` chose, and, in eager calls where no gradient tape records,
+    its graph function's flat entry point with the outputs packed by optree (tf's own packing,
+    ``function_type.pack_output``, rebuilds the output nest in Python, about a third of the
+    Python cost of a call that returns a training step's parameters and state). The packing is
+    checked once: at the first such call, tf packs the outputs and optree must find exactly the
+    same tensors in the same order in the result; otherwise every call takes ``_call_flat``."""
+
+    __slots__ = ("concrete", "captured", "direct", "out_spec", "out_checked")
+
+    def __init__(self, concrete):
+        self.concrete = concrete
+        self.captured = list(concrete.captured_inputs)
+        atomic = getattr(concrete, "_inference_function", None)
+        usable = (
+            _tape_may_record is not None
+            and hasattr(atomic, "call_flat")
+            and hasattr(getattr(concrete, "function_type", None), "pack_output")
+        )
+        self.direct = atomic.call_flat if usable else None
+        self.out_spec = None
+        self.out_checked = False
+
+    def first_direct_call(self, tensors):
+        """One call through the flat entry point, packed by tf; it checks optree's packing."""
+        self.out_checked = True
+        flat = self.direct(*tensors, *self.captured)
+        out = self.concrete.function_type.pack_output(flat)
+        leaves, spec = optree.tree_flatten(out)
+        if len(leaves) == len(flat) and all(a is b for a, b in zip(leaves, flat)):
+            self.out_spec = spec
+        return out

@@ -232,6 +232,49 @@ def test_tensorflow_calls_after_the_first_skip_argument_matching_and_stay_correc
         np.testing.assert_allclose(numpy_of(out), expected(x_np, 2.0)[0]["y"], rtol=1e-5)
 
 
+def test_tensorflow_fast_calls_pack_outputs_as_tf_does(request):
+    """Eager calls with no tape recording run the trace's flat entry point and pack its outputs
+    with optree, once checked against tf's packing; outputs that optree would pack otherwise
+    (composite tensors), or a tape that records, keep tf's own path. Results are tf.function's in every case."""
+    if "tensorflow" not in request.config.ivy_backends:
+        pytest.skip("tensorflow not selected")
+    import tensorflow as tf
+
+    def step(v, x):
+        h = ivy.matmul(x, v["w"])
+        return {"h": h, "parts": [ivy.sum(h), (None, v["b"] * 2.0)]}, ivy.mean(x)
+
+    compiled = ivy.compile_fn(step, f="tensorflow")
+    w, b = rng.normal(size=(3, 2)), rng.normal(size=2)
+    v = _on("tensorflow", {"w": w, "b": b})
+    for _ in range(4):  # traced; the first fast call checks the packing; then optree packs
+        x_np = rng.normal(size=(4, 3))
+        out, mean = compiled(v, _on("tensorflow", x_np))
+        np.testing.assert_allclose(numpy_of(out["h"]), x_np @ w, **COMPILED_TOL)
+        np.testing.assert_allclose(numpy_of(out["parts"][0]), (x_np @ w).sum(), **COMPILED_TOL)
+        assert out["parts"][1][0] is None
+        np.testing.assert_allclose(numpy_of(out["parts"][1][1]), 2.0 * b, **COMPILED_TOL)
+        np.testing.assert_allclose(numpy_of(mean), x_np.mean(), **COMPILED_TOL)
+    (trace,) = compiled._traces.values()
+    assert trace.out_spec is not None  # optree's packing was checked and is used
+    with tf.GradientTape() as tape:  # a recording tape: tf's path, which it records
+        tape.watch(v["w"])
+        loss = compiled(v, _on("tensorflow", x_np))[0]["parts"][0]
+    np.testing.assert_allclose(
+        numpy_of(tape.gradient(loss, v["w"])), x_np.sum(0)[:, None].repeat(2, 1), 1e-12
+    )
+
+    def ragged(x):  # a composite tensor: one output of several flat tensors
+        return ivy.sum(x), tf.RaggedTensor.from_row_lengths(x, [1, 2])
+
+    with_composite = ivy.compile_fn(ragged, f="tensorflow")
+    for _ in range(3):
+        total, rows = with_composite(_on("tensorflow", np.arange(3.0)))
+        assert float(numpy_of(total)) == 3.0 and rows.to_list() == [[0.0], [1.0, 2.0]]
+    (trace,) = with_composite._traces.values()
+    assert trace.out_checked and trace.out_spec is None  # tf packs: optree's leaves differ
+
+
 @pytest.mark.parametrize("committed", [False, True])
 def test_jax_compiles_once_whether_or_not_arrays_are_placed(request, committed):
     """The PRNG key that compile_fn threads through follows its neighbours' placement, so a

@@ -310,11 +310,9 @@ def test_compiled_categorical_draws_differ_between_calls_and_repeat_after_seed(b
         np.testing.assert_array_equal(a, b)
 
 
-@pytest.mark.parametrize("backend_", ["jax", "tensorflow"])
-def test_noisy_compiled_training_step(request, backend_):
+def test_noisy_compiled_training_step(graph_backend):
     """Noise inside a compiled step with gradients (dropout-like): fresh on every call."""
-    if backend_ not in request.config.ivy_backends:
-        pytest.skip(f"{backend_} not selected")
+    backend_ = graph_backend
     xp = getattr(ivy, backend_)
 
     def step(v):
