@@ -211,6 +211,12 @@ class LoopOps:
             return nest
         return map_nest(lambda a: a if isinstance(a, self.native) else self.asarray(a), nest)
 
+    def leaves(self, leaves: list) -> list:
+        """A flat list of leaves made arrays of the backend (as :meth:`arrays`, without a walk
+        of a nest or a call per leaf)."""
+        native, asarray = self.native, self.asarray
+        return [a if isinstance(a, native) else asarray(a) for a in leaves]
+
 
 def scan_length(xs_leaves: Sequence[Any], length: int | None) -> int:
     """The number of steps of a scan: the common leading axis of ``xs_leaves`` and ``length``."""
@@ -275,7 +281,7 @@ def check_carry(name: str, before: Nest, after: Nest) -> None:
 def python_scan(ops: LoopOps, fn, init, xs, length, unroll):
     """:func:`scan` as a Python loop."""
     xs_leaves, xs_spec = flatten_nest(xs)
-    xs_leaves = ops.arrays(xs_leaves)
+    xs_leaves = ops.leaves(xs_leaves)
     n = scan_length(xs_leaves, length)
     if n == 0:
         return ops.arrays(init), _empty_outputs(ops, fn, init, xs_leaves, xs_spec)
@@ -300,7 +306,7 @@ def stack_outputs(ops: LoopOps, ys: list):
     """The per-step output nests ``ys`` stacked leaf by leaf along a new leading axis."""
     first, spec = flatten_nest(ys[0])
     if spec.is_leaf():
-        return ops.stack(ops.arrays(ys))
+        return ops.stack(ops.leaves(ys))
     if not first:
         return ys[0]
     columns = [[] for _ in first]
@@ -312,7 +318,7 @@ def stack_outputs(ops: LoopOps, ys: list):
             )
         for column, leaf in zip(columns, leaves):
             column.append(leaf)
-    return unflatten_nest(spec, [ops.stack(ops.arrays(c)) for c in columns])
+    return unflatten_nest(spec, [ops.stack(ops.leaves(c)) for c in columns])
 
 
 def _empty_outputs(ops: LoopOps, fn, init, xs_leaves, xs_spec):
@@ -321,7 +327,7 @@ def _empty_outputs(ops: LoopOps, fn, init, xs_leaves, xs_spec):
     x = unflatten_nest(xs_spec, [ops.zeros(tuple(a.shape[1:]), a.dtype) for a in xs_leaves])
     _, y = fn(ops.arrays(init), x)
     leaves, spec = flatten_nest(y)
-    leaves = ops.arrays(leaves)
+    leaves = ops.leaves(leaves)
     return unflatten_nest(spec, [ops.zeros((0, *tuple(v.shape)), v.dtype) for v in leaves])
 
 
