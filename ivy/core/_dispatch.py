@@ -105,7 +105,7 @@ def _infer_block(name: str, arrays: list[str], indent: str) -> str:
     lines = [
         f"t = type({first})",
         "try:",
-        "    ns = _by_type_id[id(t)]",  # keyed by id: see ivy.framework_handler.dispatch_globals
+        "    ns = _by_type[t]",
         "except KeyError:",
         f"    ns = {slow}",
     ]
