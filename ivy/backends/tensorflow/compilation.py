@@ -20,8 +20,12 @@ third of the step. ``compile_native`` therefore keeps its own table from a cheap
 ``tf.function`` chose, and calls that trace's flat entry point directly. A key enters the table
 only after checking, at its first call, that tf itself flattens the arguments into exactly the
 same tensors in the same order; calls with variables, symbolic tensors (inside another graph)
-or unhashable static values always take ``tf.function``'s own path. This uses
-``ConcreteFunction._call_flat`` and ``function_type_utils``, private parts of tensorflow, imported
+or unhashable static values always take ``tf.function``'s own path. In eager calls where no
+gradient tape records, the trace's graph function is called on the flat tensors and its outputs
+are packed by optree (see :class:`_Trace`); a tape that records takes ``_call_flat``, which
+records the call for the gradient. This uses
+``ConcreteFunction._call_flat`` and ``_inference_function``, ``function_type_utils`` and
+``record.could_possibly_record``, private parts of tensorflow, imported
 under a guard: where they are missing or moved, ``compile_fn`` is plain ``tf.function`` and only
 the speed changes.
 """
