@@ -155,7 +155,10 @@ def execute_with_gradients(
         return _loss_and_aux(func(unflatten_nest(spec, leaves)), "execute_with_gradients")
 
     loss, aux, grads = xp.value_and_grad_native(loss_and_aux, leaves, retain_grads=retain_grads)
-    return (loss, unflatten_nest(spec, grads), *aux)
+    # the structure of xs found again, not ``spec``: where the loss breaks a torch.compile
+    # graph, dynamo resumes this frame with a ``spec`` that its optree polyfill cannot unflatten
+    # (torch 2.13: "unhashable type: 'list'", "length mismatch")
+    return (loss, unflatten_nest(flatten_nest(xs)[1], grads), *aux)
 
 
 @composition

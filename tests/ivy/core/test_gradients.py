@@ -444,3 +444,26 @@ def test_compiled_matches_eager(graph_backend):
     eager = _network(*arrays)
     compiled = native_compile(graph_backend, _network)(*arrays)
     check(compiled, numpy_of(eager), graph_backend, rtol=1e-10, atol=1e-10)
+
+
+def test_gradients_under_torch_compile_with_a_graph_break_in_the_loss(request):
+    """A loss that breaks torch.compile's graph (a print, a numpy call, the coverage recorder's
+    wrappers): dynamo resumes execute_with_gradients after the break, and the gradients still
+    come back with the structure of ``xs``."""
+    if "torch" not in request.config.ivy_backends:
+        pytest.skip("torch is not among the tested backends")
+    import torch
+    import torch._dynamo
+
+    def step(v):
+        def loss(v):
+            torch._dynamo.graph_break()
+            return ivy.sum(v["w"] ** 2) + ivy.sum(v["b"][0])
+
+        return ivy.execute_with_gradients(loss, v)
+
+    v = {"w": native(np.array([1.0, -2.0, 3.0]), "torch"), "b": [native(np.ones(2), "torch")]}
+    loss, grads = torch.compile(step, backend="eager")(v)  # dynamo only: quick
+    np.testing.assert_allclose(numpy_of(loss), 16.0, **F64)
+    np.testing.assert_allclose(numpy_of(grads["w"]), [2.0, -4.0, 6.0], **F64)
+    np.testing.assert_allclose(numpy_of(grads["b"][0]), [1.0, 1.0], **F64)
