@@ -51,6 +51,7 @@ class _Facade:
             raise TypeError(f"ivy_gym facade: expected an ivy_gym.Env, got {type(core)!r}.")
         self.core = core
         self.xp = ivy.get_framework(f=framework)
+        self._to_numpy = self.xp.to_numpy  # the backend's own: no dispatch at every step
         self.framework = self.xp.backend
         self.dtype = _dtype_name(dtype)
         self.discrete = bool(discrete)
@@ -94,7 +95,7 @@ class _Facade:
         return self.core._initial(self.xp, x)
 
     def _numpy(self, x) -> np.ndarray:
-        return np.asarray(ivy.to_numpy(x), dtype=self.dtype)
+        return np.asarray(self._to_numpy(x), dtype=self.dtype)
 
     def _checked_actions(self, action, batch: tuple[int, ...]):
         """The action(s) as core actions ``(*batch, action_dim)`` of the backend and the
@@ -201,8 +202,8 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
         self._state = state
         return (
             self._numpy(obs),
-            float(ivy.to_numpy(reward)),
-            bool(ivy.to_numpy(terminated)),
+            float(self._to_numpy(reward)),
+            bool(self._to_numpy(terminated)),
             False,
             {},
         )
@@ -299,7 +300,7 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         a = self._checked_actions(actions, (self.num_envs,))
         state, obs, reward, terminated = self._step(self._state, a)
         state_np, obs, reward = self._numpy(state), self._numpy(obs), self._numpy(reward)
-        terminated = np.asarray(ivy.to_numpy(terminated), bool)
+        terminated = np.asarray(self._to_numpy(terminated), bool)
         steps = self._steps
         steps += 1
         if self.max_episode_steps is None:
@@ -311,7 +312,7 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         if restarts:
             # Gymnasium's next-step autoreset, in place on numpy copies of this step's outputs
             fresh = self._to_backend(self._draw_states(self.np_random, restarts))
-            if not state_np.flags.writeable or state_np is ivy.to_numpy(self._state):
+            if not state_np.flags.writeable or state_np is self._to_numpy(self._state):
                 state_np = state_np.copy()
             state_np[restart] = self._numpy(fresh)
             state = self.xp.asarray(state_np)
