@@ -71,7 +71,7 @@ class _Facade:
         # (the actions arrive in the backend's dtype, so ``Env.step``'s look-up of the backend
         # and conversion of the action are not needed at every step).
         self._step = functools.partial(core._step, self.xp, core.params)
-        reset_low, reset_high = core.reset_bounds()
+        reset_low, reset_high = core.initial_bounds()
         random = reset_low != reset_high
         self._reset_low, self._random = reset_low, None if random.all() else random
         self._random_low = reset_low[random]
