@@ -65,7 +65,7 @@ class _Facade:
         self._single_observation_space = _box(*core.observation_bounds(), self.dtype)
         self._action_low, self._action_high = low.astype(self.dtype), high.astype(self.dtype)
         # Gymnasium's discrete actions {0, 1} index this table of core actions (push left,
-        # right), in the facade's dtype: one ``take`` per step, which also rejects other values.
+        # right), in the facade's dtype: one ``take`` per step.
         self._discrete_actions = np.array([[-1.0], [1.0]], self.dtype)
         # The step, resolved once: the core's kernel on the facade's namespace and parameters
         # (the actions arrive in the backend's dtype, so ``Env.step``'s look-up of the backend
@@ -107,14 +107,12 @@ class _Facade:
                     f"{self._name}: expected integer action(s) of shape {batch} in {{0, 1}}, got "
                     f"{action!r} (shape {a.shape}, dtype {a.dtype})."
                 )
-            # Seen as unsigned, negative actions are huge: ``take`` rejects all but 0 and 1.
-            try:
-                core_action = self._discrete_actions.take(a.view(a.dtype.str.replace("i", "u")), 0)
-            except IndexError:
+            if (a >> 1).any():  # nonzero for everything but 0 and 1 (negative numbers too)
                 raise ValueError(
                     f"{self._name}: actions must be 0 (push left) or 1 (push right), got "
                     f"{action!r}."
-                ) from None
+                )
+            core_action = self._discrete_actions.take(a, 0)
             return self.xp.asarray(core_action)
         want = (*batch, self.core.action_dim)
         if a.shape != want:
