@@ -147,9 +147,10 @@ def to_array(xp, entries, qpos, trailing_shape):
         return broadcast_leading(xp, const, qpos, 1)
     fill = Broadcaster(xp, first)
     arrays = [fill(e) for e in entries]
-    # nested stacks of at most a few arrays each: one stack of all entries is a concatenation
-    # of many operands, into which XLA duplicates the whole computation per operand group (10x
-    # slower for a 7-DOF arm); nested, jax.jit and torch.compile each emit one fused loop
+    # nested stacks (rows, then matrices, then the leading trailing axis): one stack of all
+    # entries is a concatenation of many operands into which XLA duplicates the computation
+    # (the joint sines 17 times over for a 7-DOF arm, 10x slower); nested, jax.jit and
+    # torch.compile each emit one fused loop over the batch
     for level, size in enumerate(reversed(trailing_shape)):
         arrays = [
             xp.stack(arrays[k : k + size], axis=-1 - level) for k in range(0, len(arrays), size)
@@ -158,5 +159,14 @@ def to_array(xp, entries, qpos, trailing_shape):
 
 
 def pose_entries(rot, pos):
-    """A 4x4 homogeneous pose as 16 flat entries."""
-    return [*rot[0], pos[0], *rot[1], pos[1], *rot[2], pos[2], 0.0, 0.0, 0.0, 1.0]
+    """The top three rows of a homogeneous pose, as 12 flat entries."""
+    return [*rot[0], pos[0], *rot[1], pos[1], *rot[2], pos[2]]
+
+
+def poses_to_array(xp, entries, qpos, count):
+    """:func:`pose_entries` of ``count`` poses -> homogeneous poses
+    ``[batch_shape, count, 4, 4]``: the top rows from the entries, then one constant
+    ``[0, 0, 0, 1]`` row for all."""
+    top = to_array(xp, entries, qpos, (count, 3, 4))
+    bottom = xp.asarray([[[0.0, 0.0, 0.0, 1.0]]] * count, dtype=qpos.dtype, device=xp.dev(qpos))
+    return xp.concat([top, broadcast_leading(xp, bottom, qpos, 1)], axis=-2)

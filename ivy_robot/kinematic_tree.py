@@ -242,6 +242,7 @@ class KinematicTree:
             for t, q, b in zip(self._jnt_type, self._jnt_qadr, self._jnt_body)
         )
         self._k_site_body = tuple(int(b) for b in self._site_body)
+        self._k_dof_adr = tuple(int(d) for d in self._jnt_dadr)
         self._k_chain = tuple(self._chains[b][:, None].tolist() for b in range(self.nbody))
         # entry-wise constants (Python floats, snapped): see ivy_robot._entries
         consts = self._consts
@@ -331,7 +332,7 @@ class KinematicTree:
         self._check_qpos(xp, qpos)
         rots, poss, _ = self._frames(xp, qpos)
         entries = [e for rot, pos in zip(rots, poss) for e in E.pose_entries(rot, pos)]
-        return E.to_array(xp, entries, qpos, (self.nbody, 4, 4))
+        return E.poses_to_array(xp, entries, qpos, self.nbody)
 
     def site_poses(self, qpos: Array, *, f: Framework = None) -> Array:
         """World poses of every site (``site_xpos``, ``site_xmat``).
@@ -356,7 +357,7 @@ class KinematicTree:
         entries = []
         for s, b in enumerate(self._k_site_body):
             entries += E.pose_entries(*E.compose(rots[b], poss[b], *self._e_sites[s]))
-        return E.to_array(xp, entries, qpos, (self.nsite, 4, 4))
+        return E.poses_to_array(xp, entries, qpos, self.nsite)
 
     def transform_points(
         self, qpos: Array, bodies: Sequence[int | str], points: Array, *, f: Framework = None
@@ -571,22 +572,21 @@ class KinematicTree:
         eye = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
         for j in range(self.njnt):
             kind, _, _, b = self._k_joints[j]
-            dof = int(self._jnt_dadr[j])
-            rot, pos = frames[j]
-            anchor = [
-                E.add(pos[r], x) for r, x in enumerate(E.matvec(rot, self._e_joint[j]["pos"]))
-            ]
-            if kind in (_HINGE, _SLIDE):
-                axes[dof] = E.matvec(rot, self._e_joint[j]["axis"])
-                anchors[dof] = anchor
-                continue
-            body_axes = [[rots[b][r][col] for r in range(3)] for col in range(3)]
-            if kind == _BALL:
-                axes[dof : dof + 3] = body_axes
-                anchors[dof : dof + 3] = [anchor] * 3
-            else:
+            dof = self._k_dof_adr[j]
+            if kind == _FREE:
+                body_axes = [[rots[b][r][col] for r in range(3)] for col in range(3)]
                 axes[dof : dof + 6] = eye + body_axes
                 anchors[dof : dof + 6] = [poss[b]] * 6
+                continue
+            rot, pos = frames[j]
+            offset = E.matvec(rot, self._e_joint[j]["pos"])
+            anchor = [E.add(pos[r], x) for r, x in enumerate(offset)]
+            if kind == _BALL:  # angular velocity in the body frame: the body's axes
+                axes[dof : dof + 3] = [[rots[b][r][col] for r in range(3)] for col in range(3)]
+                anchors[dof : dof + 3] = [anchor] * 3
+            else:
+                axes[dof] = E.matvec(rot, self._e_joint[j]["axis"])
+                anchors[dof] = anchor
         flat_axes = [e for axis in axes for e in axis]
         flat_anchors = [e for anchor in anchors for e in anchor]
         return (
