@@ -105,6 +105,21 @@ def _sync(backend):
     return lambda out: out
 
 
+def installed_backends(names: str, torch_threads: int) -> list[str]:
+    """The installed backends among ``names`` (comma-separated), set up for these benchmarks:
+    jax in float64, torch with ``torch_threads`` threads."""
+    backends = [b for b in names.split(",") if importlib.util.find_spec(b)]
+    if "jax" in backends:
+        import jax
+
+        jax.config.update("jax_enable_x64", True)
+    if "torch" in backends:
+        import torch
+
+        torch.set_num_threads(torch_threads)
+    return backends
+
+
 def build(backends, batch, rng):
     """name -> (function of no argument, its checker), all on the same configurations."""
     tree = ivy_robot.KinematicTree.from_mjcf(XML)
@@ -144,15 +159,7 @@ def main():
     parser.add_argument("--torch-threads", type=int, default=1)
     parser.add_argument("--clock", choices=("wall", "cpu"), default="wall")
     args = parser.parse_args()
-    backends = [b for b in args.backends.split(",") if importlib.util.find_spec(b)]
-    if "jax" in backends:
-        import jax
-
-        jax.config.update("jax_enable_x64", True)
-    if "torch" in backends:
-        import torch
-
-        torch.set_num_threads(args.torch_threads)
+    backends = installed_backends(args.backends, args.torch_threads)
     if "torch" in backends and importlib.util.find_spec("pytorch_kinematics") is None:
         print("pytorch_kinematics is not installed: its rows are left out "
               "(pip install pytorch_kinematics)\n")  # fmt: skip

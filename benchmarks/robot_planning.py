@@ -16,7 +16,6 @@ Usage:
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import os
 import sys
 import time
@@ -27,6 +26,7 @@ _HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path[:0] = [_HERE, os.path.join(_HERE, "..")]
 
 from _timing import interleaved_samples  # noqa: E402
+from robot_kinematics import installed_backends  # noqa: E402
 
 import ivy  # noqa: E402
 import ivy_robot  # noqa: E402
@@ -66,15 +66,7 @@ def main():
     parser.add_argument("--clock", choices=("wall", "cpu"), default="wall")
     parser.add_argument("--torch-threads", type=int, default=1)
     args = parser.parse_args()
-    backends = [b for b in args.backends.split(",") if importlib.util.find_spec(b)]
-    if "jax" in backends:
-        import jax
-
-        jax.config.update("jax_enable_x64", True)
-    if "torch" in backends:
-        import torch
-
-        torch.set_num_threads(args.torch_threads)
+    backends = installed_backends(args.backends, args.torch_threads)
     warnings.filterwarnings("ignore")
     clock = time.perf_counter if args.clock == "wall" else time.process_time
     problems = planners()
