@@ -1,6 +1,9 @@
 """Trajectory optimisation steps of ivy_robot's planners: how long ``ivy.compile_fn`` takes to
 build one step (cost, gradient by ``ivy.execute_with_gradients``, Adam update) on each
 differentiable backend, and the time per step compiled and eager, measured in the same run.
+The compile time is wall-clock seconds of the first call (trace and compile; inductor builds
+its C++ in worker processes, which a process's CPU time leaves out; torch reuses kernels
+cached on disk by an earlier run, so a second run compiles faster).
 
 The problems are those of the tests (``tests/ivy_robot/_models.py``): the MJCF Panda (7 hinges,
 31 collision spheres, 40 path samples) around a post, and a drone (pose space, 40 samples)
@@ -84,9 +87,9 @@ def main():
             inputs = (anchors, state, start, goal)
             compiled = _blocking(backend, planner.step_fn(optimizer))
             eager = _blocking(backend, planner.step_fn(optimizer, compile=False))
-            began = clock()
+            began = time.perf_counter()  # wall: inductor compiles in worker processes
             compiled(*inputs)
-            compile_s = clock() - began
+            compile_s = time.perf_counter() - began
             eager(*inputs)
             samples = interleaved_samples(
                 {
