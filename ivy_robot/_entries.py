@@ -30,7 +30,7 @@ def snap(values: np.ndarray) -> np.ndarray:
 
 
 def is_const(entry) -> bool:
-    return isinstance(entry, float)
+    return type(entry) is float  # not numpy scalars (np.float64 subclasses float): values
 
 
 def affine(const: float, terms) -> object:
