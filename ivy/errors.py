@@ -7,6 +7,7 @@ __all__ = [
     "MixedFrameworksError",
     "NoFrameworkError",
     "UnsupportedError",
+    "UnavailableDtypeError",
 ]
 
 
@@ -32,3 +33,9 @@ class NoFrameworkError(IvyError, TypeError):
 
 class UnsupportedError(IvyError, NotImplementedError):
     """A function that a backend truly cannot provide (e.g. gradients on numpy)."""
+
+
+class UnavailableDtypeError(IvyError, AttributeError):
+    """A dtype attribute of a backend namespace that the backend does not have, or cannot hold
+    now (``ivy.jax.float64`` while jax's 64-bit types are off). An AttributeError, so that
+    ``hasattr(ivy.jax, 'float64')`` tells whether float64 arrays can be made now."""

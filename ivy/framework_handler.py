@@ -517,10 +517,17 @@ def _restore_depth(depth: int) -> None:
 
 def _bind(ns: types.ModuleType) -> None:
     ivy_dict = sys.modules["ivy"].__dict__
+    own = ns.__dict__
     for name in ns.__all__:
         if name not in _saved:
             _saved[name] = ivy_dict.get(name, _MISSING)
-        ivy_dict[name] = ns.__dict__[name]
+        # (a dtype the backend cannot hold now, such as jax's float64 without x64, is no
+        # attribute of the namespace: ivy keeps its name, which then raises where it is used)
+        value = own.get(name, _saved[name])
+        if value is _MISSING:
+            ivy_dict.pop(name, None)
+        else:
+            ivy_dict[name] = value
     dispatch_globals["_current"] = ns
 
 

@@ -57,6 +57,14 @@ def assemble_registered(name: str, spec: Any) -> types.ModuleType:
             module.host_bridged.append(fn_name)
         return fn
 
+    info = xp.__array_namespace_info__() if hasattr(xp, "__array_namespace_info__") else None
+
+    def devices() -> list:
+        """'cpu' for the default device; the library's own device objects for the others."""
+        if info is None:
+            return []
+        return [d if helpers["device_name"](d) != "cpu" else "cpu" for d in info.devices()]
+
     return assemble(
         module,
         backend=name,
@@ -66,4 +74,5 @@ def assemble_registered(name: str, spec: Any) -> types.ModuleType:
         reals=helpers["reals"],
         capabilities=spec.capabilities,
         fallback=recorded,
+        devices=devices,
     )

@@ -23,6 +23,27 @@ _NEEDS_X64 = {
 }
 
 
+def _x64() -> bool:
+    return jax.config.jax_enable_x64
+
+
+# The dtypes jax holds only while 64-bit types are on (read at each look-up: x64 may be switched
+# on after import).
+X64_DTYPES = {name: _x64 for name in ("int64", "uint64", "float64", "complex128")}
+# jax.numpy's own inspection says no to both, since neither works inside jax.jit; ivy's
+# functions are eager unless compiled, and there both work.
+ARRAY_API_CAPABILITIES = {
+    "boolean indexing": True,
+    "data-dependent shapes": True,
+    "max dimensions": None,
+}
+
+
+def device_names() -> list[str]:
+    """ivy's names of the devices jax sees (``'cpu'``, ``'gpu:0'``...)."""
+    return [device_name(d) for d in jax.devices()]
+
+
 def default_int():
     """int64 when jax has 64-bit types enabled, else int32 (jax cannot hold int64 then)."""
     return jnp.int64 if jax.config.jax_enable_x64 else jnp.int32

@@ -251,6 +251,12 @@ def tf_device(device: str) -> str:
     return name
 
 
+def device_names() -> list[str]:
+    """ivy's names of the devices tensorflow sees: the CPU and each GPU."""
+    gpus = tf.config.list_logical_devices("GPU")
+    return ["cpu"] + [f"gpu:{i}" for i in range(len(gpus))]
+
+
 def placed(device):
     """Context manager placing new tensors on ``device`` (does nothing for None)."""
     return _NULL_SCOPE if device is None else tf.device(tf_device(device))

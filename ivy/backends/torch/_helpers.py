@@ -109,3 +109,8 @@ def _as_is(native, name: str):
 # real numbers in its default float dtype, float32, by itself; the shims of the others
 # (reductions, activations) convert them.
 REALS = {"unary": _as_is, "binary": _as_is, "options": _as_is}
+
+
+def device_names() -> list[str]:
+    """ivy's names of the devices torch sees: the CPU and each CUDA device."""
+    return ["cpu"] + [f"gpu:{i}" for i in range(torch.cuda.device_count())]
