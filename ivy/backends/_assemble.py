@@ -32,6 +32,7 @@ from typing import Any
 
 from ivy import framework_handler as _fh
 from ivy.backends._inspection import info_function
+from ivy.backends._reals import scalar_operands
 from ivy.core import GROUP_NAMES, GROUPS
 from ivy.core._dispatch import REGISTRY
 from ivy.core._extensions import ExtensionNamespace, extension_groups
@@ -72,6 +73,7 @@ def assemble(
     dtypes_now: Mapping[str, Callable[[], bool]] | None = None,
     devices: Callable[[], list[str]] | None = None,
     array_api_capabilities: Mapping[str, Any] | None = None,
+    scalars_need_shims: bool = False,
 ) -> types.ModuleType:
     """Fill ``namespace`` with the backend's public names and register it as backend ``backend``.
 
@@ -99,6 +101,9 @@ def assemble(
         array_api_capabilities: the Array API capability flags, for
             ``__array_namespace_info__().capabilities()``; None: boolean indexing and
             data-dependent shapes.
+        scalars_need_shims: the framework's natives promote Python scalars otherwise than ivy
+            (numpy and jax: an int8 array plus 2.5 is float64 there, float32 in ivy), so
+            dispatched calls with Python scalars go to the namespace's shims, not its fast view.
 
     Returns:
         The namespace module, complete.
@@ -164,8 +169,32 @@ def assemble(
         ns[ext] = ExtensionNamespace(f"ivy.{backend}.{ext}", group.__all__, ns.__getitem__, call)
         exported.add(ext)
     ns["__all__"] = sorted(exported)
+    fast = _fast_view(module, exported)
+    module.__ivy_fast__ = fast
+    module.__ivy_scalars__ = module
+    if fast is not module:
+        fast.__ivy_scalars__ = module if scalars_need_shims else fast
     _fh.register_loaded(backend, module, capabilities)
     return module
+
+
+def _fast_view(module: types.ModuleType, exported: set[str]) -> Any:
+    """What the framework-agnostic dispatchers call: ``module`` itself, or, where some of its
+    functions are shims that only add what the framework's native refuses (they carry the
+    native as ``__ivy_native__``), a view of it with those natives in their place. The
+    dispatchers hand what a native refuses to the shim (``framework_handler._recover``)."""
+    natives = {
+        name: native
+        for name in exported
+        if (native := getattr(module.__dict__.get(name), "__ivy_native__", None)) is not None
+    }
+    if not natives:
+        return module
+    view = types.ModuleType(f"{module.__name__}.<fast>")
+    view.__dict__.update({k: v for k, v in module.__dict__.items() if not k.startswith("__")})
+    view.__dict__.update(natives)
+    view.__ivy_full__ = module
+    return view
 
 
 _ARRAY_API_CAPABILITIES = {
@@ -233,12 +262,16 @@ def bind_shared(module: types.ModuleType, xp: Any, bind: Mapping[str, Any]) -> d
         if isinstance(value, types.FunctionType) and value.__module__ == module.__name__:
             if all(hasattr(xp, attr) for attr in needs.get(name, ())):
                 scope[name] = out[name] = _rebind(value, scope)
-    for name, path in getattr(module, "NATIVE", {}).items():
-        native = xp
-        for part in path.split("."):
-            native = getattr(native, part, None)
-        if native is not None and name not in out:
-            out[name] = native
+    for table, wrap in (
+        (getattr(module, "NATIVE", {}), None),
+        (getattr(module, "SCALAR_OPERANDS", {}), scalar_operands),
+    ):
+        for name, path in table.items():
+            native = xp
+            for part in path.split("."):
+                native = getattr(native, part, None)
+            if native is not None and name not in out:
+                out[name] = native if wrap is None else wrap(native, name)
     return {n: f for n, f in out.items() if not n.startswith("_")}
 
 
@@ -253,7 +286,9 @@ def _rebind(fn: types.FunctionType, scope: dict[str, Any]) -> types.FunctionType
 
 
 def _core_function(name: str) -> Callable:
-    return getattr(GROUPS[GROUP_NAMES.index(REGISTRY[name].group)], name)
+    """The composition ``name`` as written (without the agnostic function's conversions)."""
+    fn = getattr(GROUPS[GROUP_NAMES.index(REGISTRY[name].group)], name)
+    return getattr(fn, "__ivy_body__", fn)
 
 
 def _bound(comp: Callable, ns: types.ModuleType) -> Callable:

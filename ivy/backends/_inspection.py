@@ -1,14 +1,18 @@
 """The Array API's inspection namespace of an ivy backend: ``ivy.torch.__array_namespace_info__()``.
 
 What it reports is what the backend can do now: dtypes are the backend namespace's own dtype
-objects, and only those the backend can hold at the time of the call (jax's 64-bit types exist
-only while ``jax_enable_x64`` is on, which may change after import); devices are ivy's device
-names (``'cpu'``, ``'gpu:0'``), which every ivy function takes.
+objects, the Array API's only (not float16, which ivy has beyond the standard), and only those
+the backend can hold at the time of the call (jax's 64-bit types exist only while
+``jax_enable_x64`` is on, which may change after import); devices are the framework's own device
+objects, which arrays report as ``x.device`` and every ivy function takes as ``device=`` (as do
+ivy's names, ``'cpu'`` and ``'gpu:0'``).
 
 Example:
     >>> info = ivy.torch.__array_namespace_info__()
     >>> info.default_dtypes()["real floating"]
     torch.float32
+    >>> info.default_device()
+    device(type='cpu')
     >>> sorted(info.dtypes(kind="unsigned integer"))
     ['uint16', 'uint32', 'uint64', 'uint8']
 """
@@ -21,6 +25,8 @@ from typing import Any
 
 from ivy.core._dtype_rules import KINDS
 from ivy.dtypes import DTYPE_NAMES
+
+ARRAY_API_DTYPES = tuple(n for n in DTYPE_NAMES if n != "float16")  # float16 is ivy's extra
 
 
 class NamespaceInfo:
@@ -48,14 +54,12 @@ class NamespaceInfo:
         need static shapes)."""
         return dict(self._capabilities)
 
-    def default_device(self) -> str:
-        """The device new arrays go to (ivy's name, e.g. ``'cpu'``)."""
-        ns = self._ns
-        return ns.dev(ns.zeros(()))
+    def default_device(self) -> Any:
+        """The device new arrays go to (the framework's own object, as ``x.device``)."""
+        return self._ns.zeros(()).device
 
     def devices(self) -> list:
-        """The devices the backend can place arrays on: ivy's names (``'cpu'``, ``'gpu:0'``),
-        or a registered library's own device objects beyond its default device."""
+        """The devices the backend can place arrays on (the framework's own objects)."""
         found = list(self._devices())
         default = self.default_device()
         return found if default in found else [default, *found]
@@ -80,7 +84,7 @@ class NamespaceInfo:
         """The dtypes the backend can hold now, by name, of ``kind`` (a kind name such as
         ``'real floating'``, a dtype, or a tuple of these; None: every dtype)."""
         out = {}
-        for name in DTYPE_NAMES:
+        for name in ARRAY_API_DTYPES:
             native = getattr(self._ns, name, None)
             if native is not None and (kind is None or self._is_of(name, native, kind)):
                 out[name] = native

@@ -25,7 +25,6 @@ KNOWN_STRICT_GAPS: dict[str, str] = {
     "test_cross[array_api_strict]": "the standard's cross takes 3-vectors only; ivy's takes 2-vectors too",
     "test_diff[array_api_strict]": "the standard's diff refuses bool",
     "test_diff_prepend_and_append[array_api_strict]": "the standard's diff refuses bool",
-    "test_f_as_name_namespace_and_alias[array_api_strict]": "a numpy array given with f='array_api_strict' is not converted (issue 17)",
     "test_global_framework_answers_with_its_dtypes[array_api_strict]": "dtype rules on a dtype the library lacks (float16)",
     "test_integer_products_keep_their_dtype[array_api_strict-int32]": "the standard's matmul/vecdot refuse integers",
     "test_integer_products_keep_their_dtype[array_api_strict-int64]": "the standard's matmul/vecdot refuse integers",

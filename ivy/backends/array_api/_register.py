@@ -60,10 +60,7 @@ def assemble_registered(name: str, spec: Any) -> types.ModuleType:
     info = xp.__array_namespace_info__() if hasattr(xp, "__array_namespace_info__") else None
 
     def devices() -> list:
-        """'cpu' for the default device; the library's own device objects for the others."""
-        if info is None:
-            return []
-        return [d if helpers["device_name"](d) != "cpu" else "cpu" for d in info.devices()]
+        return list(info.devices()) if info is not None else []
 
     return assemble(
         module,

@@ -28,7 +28,8 @@ assemble(
     xp=jax.numpy,
     bind=_helpers.SHARED,
     reals=_reals.WRAPPERS,
+    scalars_need_shims=True,
     dtypes_now=_helpers.X64_DTYPES,
-    devices=_helpers.device_names,
+    devices=_helpers.devices,
     array_api_capabilities=_helpers.ARRAY_API_CAPABILITIES,
 )

@@ -39,9 +39,10 @@ ARRAY_API_CAPABILITIES = {
 }
 
 
-def device_names() -> list[str]:
-    """ivy's names of the devices jax sees (``'cpu'``, ``'gpu:0'``...)."""
-    return [device_name(d) for d in jax.devices()]
+def devices() -> list:
+    """The devices jax sees: those of its default backend, and the CPU."""
+    found = list(jax.devices())
+    return found + [d for d in jax.devices("cpu") if d not in found]
 
 
 def default_int():
@@ -172,4 +173,5 @@ SHARED = {
     "as_inexact": as_inexact,
     "dtype_name": dtype_name,
     "device_name": device_name,
+    "concrete": lambda value: not isinstance(value, jax.core.Tracer),
 }

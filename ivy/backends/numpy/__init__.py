@@ -21,4 +21,5 @@ assemble(
     xp=numpy,
     bind=_helpers.SHARED,
     reals=_reals.WRAPPERS,
+    scalars_need_shims=True,
 )

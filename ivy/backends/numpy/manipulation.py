@@ -53,7 +53,7 @@ def squeeze(x, /, axis=None):
     return np.squeeze(x, axis=axis)
 
 
-def expand_dims(x, /, *, axis=0):
+def expand_dims(x, /, axis=0):
     return np.expand_dims(x, axis)
 
 

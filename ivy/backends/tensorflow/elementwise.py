@@ -19,6 +19,7 @@ import math
 
 import tensorflow as tf
 
+from ivy.backends._clip_args import clip_bounds
 from ivy.backends.tensorflow._helpers import (
     FAST_TYPES,
     REFUSED,
@@ -29,7 +30,6 @@ from ivy.backends.tensorflow._helpers import (
     tensor_of,
 )
 
-abs = tf.math.abs
 acos = tf.math.acos
 acosh = tf.math.acosh
 asin = tf.math.asin
@@ -44,11 +44,9 @@ expm1 = tf.math.expm1
 imag = tf.math.imag
 log = tf.math.log
 log1p = tf.math.log1p
-negative = tf.math.negative
 positive = tf.identity
 real = tf.math.real
 round = tf.math.round
-sign = tf.math.sign
 sin = tf.math.sin
 sinh = tf.math.sinh
 sqrt = tf.math.sqrt
@@ -57,12 +55,45 @@ tan = tf.math.tan
 tanh = tf.math.tanh
 
 
+def _log_base(x, base: float):
+    out = log(x)
+    if out.dtype.is_complex:  # divide each part by the real ln(base) (a complex division
+        # would make the imaginary part of log(0) = -inf + 0j NaN)
+        scale = tf.constant(1.0 / math.log(base), out.dtype.real_dtype)
+        return tf.complex(tf.math.real(out) * scale, tf.math.imag(out) * scale)
+    return out / math.log(base)
+
+
 def log2(x, /):
-    return log(x) / math.log(2.0)
+    return _log_base(x, 2.0)
 
 
 def log10(x, /):
-    return log(x) / math.log(10.0)
+    return _log_base(x, 10.0)
+
+
+def _unsigned_kernel(native, name: str, of_unsigned, of_bool=None):
+    """tf's ``native``, which has no kernel for unsigned integers (``of_unsigned`` computes
+    them exactly) nor for bools (``of_bool``; None: refused as tf refuses them)."""
+
+    def fn(x, /):
+        try:
+            return native(x)
+        except REFUSED:
+            x = tensor(x)
+            if x.dtype.is_unsigned:
+                return of_unsigned(x)
+            if x.dtype is tf.bool and of_bool is not None:
+                return of_bool(x)
+            raise
+
+    fn.__name__ = fn.__qualname__ = name
+    return fn
+
+
+abs = _unsigned_kernel(tf.math.abs, "abs", tf.identity, tf.identity)
+negative = _unsigned_kernel(tf.math.negative, "negative", lambda x: tf.zeros_like(x) - x)
+sign = _unsigned_kernel(tf.math.sign, "sign", lambda x: tf.cast(x > 0, x.dtype), tf.identity)
 
 
 def reciprocal(x, /):
@@ -119,10 +150,12 @@ isnan = _classification(tf.math.is_nan, "isnan", False, tf.math.logical_or)
 
 
 def _as_bools(*values) -> list:
+    """Truth values: nonzero is true (tf's cast of a complex number to bool reads its real part
+    only)."""
     out = []
     for v in values:
         v = tensor(v)
-        out.append(v if v.dtype is tf.bool else tf.cast(v, tf.bool))
+        out.append(v if v.dtype is tf.bool else tf.not_equal(v, tf.zeros((), v.dtype)))
     return out
 
 
@@ -161,7 +194,30 @@ maximum = _binary(tf.math.maximum, "maximum")
 minimum = _binary(tf.math.minimum, "minimum")
 multiply = _binary(tf.math.multiply, "multiply")
 not_equal = _binary(tf.math.not_equal, "not_equal")
-pow = _binary(tf.math.pow, "pow")
+
+
+def _wide_pow(x1, x2):
+    """x1 ** x2 for tensors of one dtype; unsigned integers (no tf kernel) through int64, whose
+    wrap-around modulo 2**64 is theirs."""
+    a, b = promote(x1, x2)
+    if not a.dtype.is_unsigned:
+        return tf.math.pow(a, b)
+    if a.dtype is tf.uint64:
+        out = tf.math.pow(tf.bitcast(a, tf.int64), tf.bitcast(b, tf.int64))
+        return tf.bitcast(out, tf.uint64)
+    return tf.cast(tf.math.pow(tf.cast(a, tf.int64), tf.cast(b, tf.int64)), a.dtype)
+
+
+_pow = _binary(tf.math.pow, "pow")
+
+
+def pow(x1, x2, /):
+    try:
+        return _pow(x1, x2)
+    except REFUSED:
+        return _wide_pow(x1, x2)
+
+
 remainder = _binary(tf.math.floormod, "remainder")
 subtract = _binary(tf.math.subtract, "subtract")
 logical_and = _binary(tf.math.logical_and, "logical_and", _as_bools)
@@ -178,16 +234,24 @@ def divide(x1, x2, /):
 
 
 def logical_not(x, /):
-    x = tensor(x)
-    return tf.math.logical_not(x if x.dtype is tf.bool else tf.cast(x, tf.bool))
+    return tf.math.logical_not(_as_bools(x)[0])
 
 
 def clip(x, /, min=None, max=None):
+    """The result has ``x``'s dtype whatever the bounds' (``ivy/backends/_clip_args.py``)."""
+    x = tensor(x)
+    import ivy
+
+    min, max = clip_bounds(ivy.tensorflow, x, min, max)
+    if x.dtype is tf.bool:
+        if min is not None:
+            x = tf.math.logical_or(x, tensor_of(min, tf.bool))
+        return x if max is None else tf.math.logical_and(x, tensor_of(max, tf.bool))
     if min is not None:
-        x = maximum(x, min)
+        x = maximum(x, tensor_of(min, x.dtype))
     if max is not None:
-        x = minimum(x, max)
-    return tensor(x)
+        x = minimum(x, tensor_of(max, x.dtype))
+    return x
 
 
 # ----------------------------------------------------------------------------------------------
@@ -213,8 +277,32 @@ def _bitwise(native, logical, name: str):
 bitwise_and = _bitwise(tf.bitwise.bitwise_and, tf.math.logical_and, "bitwise_and")
 bitwise_or = _bitwise(tf.bitwise.bitwise_or, tf.math.logical_or, "bitwise_or")
 bitwise_xor = _bitwise(tf.bitwise.bitwise_xor, tf.math.logical_xor, "bitwise_xor")
-bitwise_left_shift = _bitwise(tf.bitwise.left_shift, None, "bitwise_left_shift")
-bitwise_right_shift = _bitwise(tf.bitwise.right_shift, None, "bitwise_right_shift")
+
+
+def _shift(native, name: str, left: bool):
+    """tf's shift ``native``, with numpy's answers for shift counts that are negative or not
+    less than the width (tf takes such counts modulo the width): 0 for left shifts, 0 or -1
+    (the sign) for right shifts."""
+    bitwise = _bitwise(native, None, name)
+
+    def fn(x1, x2, /):
+        out = bitwise(x1, x2)
+        a, b = promote(x1, x2)
+        valid = (
+            (b >= 0) & (b < a.dtype.size * 8) if not b.dtype.is_unsigned else b < a.dtype.size * 8
+        )
+        if left or a.dtype.is_unsigned:
+            fill = tf.zeros_like(out)
+        else:
+            fill = tf.where(a < 0, tf.constant(-1, a.dtype), tf.constant(0, a.dtype))
+        return tf.where(valid, out, fill)
+
+    fn.__name__ = fn.__qualname__ = name
+    return fn
+
+
+bitwise_left_shift = _shift(tf.bitwise.left_shift, "bitwise_left_shift", True)
+bitwise_right_shift = _shift(tf.bitwise.right_shift, "bitwise_right_shift", False)
 
 
 def bitwise_invert(x, /):

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import tensorflow as tf
 
+from ivy.backends._index_checks import check_bounds
 from ivy.backends.tensorflow._helpers import native_dtype, tensor
 
 gather_nd = tf.gather_nd
@@ -49,6 +50,11 @@ def scatter_nd(indices, updates, /, shape, *, reduction="sum"):
 
 def one_hot(indices, depth, /, *, dtype=None):
     dt = native_dtype(dtype) or tf.float32
+    indices = tensor(indices)
+    if tf.executing_eagerly():  # (inside tf.function indices have no values yet)
+        check_bounds(
+            indices.numpy(), depth, function="one_hot", backend="tensorflow", negative=False
+        )
     if dt is tf.bool:  # tf's default on and off values are the numbers 1 and 0
         return tf.one_hot(indices, depth, on_value=True, off_value=False, dtype=dt)
     return tf.one_hot(indices, depth, dtype=dt)

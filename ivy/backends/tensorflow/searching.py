@@ -5,10 +5,35 @@ from __future__ import annotations
 import tensorflow as tf
 
 from ivy.backends.tensorflow._helpers import FAST_TYPES, REFUSED, fast, promote, static_rank, tensor
+from ivy.errors import InvalidValueError
 
 
 def _arg_reduce(native, x, axis, keepdims, name):
     x = tensor(x)
+    shape = x.shape
+    if shape.rank is not None and shape.num_elements() == 0 and (axis is None or shape[axis] == 0):
+        raise InvalidValueError(
+            f"{name} of an empty array (shape {tuple(shape)}) has no answer.",
+            function=name,
+            argument="x",
+            backend="tensorflow",
+        )
+    if x.dtype.is_floating:
+        # NaN wins, as on every backend (tf's argmax skips NaN): where a NaN is, argmax of the
+        # NaN mask (its first NaN) is the answer
+        nan = tf.math.is_nan(x)
+        found = _arg_plain(tf.math.argmax, tf.cast(nan, tf.uint8), axis, keepdims, name)
+        plain = _arg_plain(native, tf.where(nan, tf.zeros((), x.dtype), x), axis, keepdims, name)
+        any_nan = tf.reduce_any(nan, axis=axis, keepdims=keepdims)
+        if axis is None and keepdims:
+            any_nan = tf.reshape(any_nan, tf.shape(found))
+        return tf.where(any_nan, found, plain)
+    if x.dtype is tf.bool:
+        x = tf.cast(x, tf.uint8)
+    return _arg_plain(native, x, axis, keepdims, name)
+
+
+def _arg_plain(native, x, axis, keepdims, name):
     if axis is None:
         out = native(tf.reshape(x, [-1]), axis=0)
         return tf.reshape(out, [1] * static_rank(x, name)) if keepdims else out

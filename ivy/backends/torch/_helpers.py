@@ -111,6 +111,8 @@ def _as_is(native, name: str):
 REALS = {"unary": _as_is, "binary": _as_is, "options": _as_is}
 
 
-def device_names() -> list[str]:
-    """ivy's names of the devices torch sees: the CPU and each CUDA device."""
-    return ["cpu"] + [f"gpu:{i}" for i in range(torch.cuda.device_count())]
+def devices() -> list[torch.device]:
+    """The devices torch sees: the CPU and each CUDA device."""
+    return [torch.device("cpu")] + [
+        torch.device("cuda", i) for i in range(torch.cuda.device_count())
+    ]

@@ -12,6 +12,8 @@ from ivy.backends.torch._helpers import (
     native_device,
     native_dtype,
 )
+from ivy.backends.torch._unsigned import WIDE_UNSIGNED, unsigned_safe, work_dtype
+from ivy.errors import DtypeError
 
 # torch's default dtypes can be changed by the user; ivy's cannot.
 _DOWNCAST = {torch.float64: torch.float32, torch.complex128: torch.complex64}
@@ -19,9 +21,15 @@ _DOWNCAST = {torch.float64: torch.float32, torch.complex128: torch.complex64}
 
 def asarray(obj, /, *, dtype=None, device=None, copy=None):
     dtype, device = native_dtype(dtype), native_device(device)
+    if isinstance(obj, torch.Tensor):
+        return _from_tensor(obj, dtype, device, copy)
     if isinstance(obj, (list, tuple)) and obj and has_own_dtype(obj):
         obj = _stack(obj)
-    elif isinstance(obj, np.ndarray) and not obj.flags.writeable:
+    elif (
+        isinstance(obj, np.ndarray)
+        and not torch.compiler.is_compiling()  # (torch.compile cannot read numpy's flags)
+        and not obj.flags.writeable
+    ):
         obj = obj.copy()  # torch would alias a read-only buffer as writable (and warn)
     elif not isinstance(obj, (torch.Tensor, np.ndarray, np.generic)) and (
         hasattr(obj, "__dlpack__") or hasattr(obj, "__array__")
@@ -31,6 +39,22 @@ def asarray(obj, /, *, dtype=None, device=None, copy=None):
     if dtype is None and x.dtype in _DOWNCAST and not has_own_dtype(obj):
         return x.to(_DOWNCAST[x.dtype])
     return x
+
+
+def _from_tensor(x, dtype, device, copy):
+    """A tensor as it is, or converted (``Tensor.to``, which keeps ``requires_grad`` without
+    torch.asarray's warning about it)."""
+    same = (dtype is None or dtype is x.dtype) and (
+        device is None or torch.device(device) == x.device
+    )
+    if same and not copy:
+        return x
+    if not same and copy is False:
+        raise ValueError(
+            "asarray: copy=False, but the dtype or device asked for needs a copy. Pass copy=None "
+            "to allow it."
+        )
+    return x.to(dtype=dtype or x.dtype, device=device or x.device, copy=bool(copy))
 
 
 def _stack(seq):
@@ -75,20 +99,42 @@ def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
         dtype = torch.int64 if ints else torch.float32
     if stop is None:
         start, stop = 0, start
-    return torch.arange(start, stop, step, dtype=native_dtype(dtype), device=native_device(device))
+    dtype, device = native_dtype(dtype), native_device(device)
+    if (stop - start) * step <= 0:  # an empty range, which torch refuses
+        return torch.empty(0, dtype=dtype, device=device)
+    out = torch.arange(start, stop, step, dtype=work_dtype(dtype), device=device)
+    return out if out.dtype is dtype or dtype is None else out.to(dtype)
 
 
 def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True):
-    dtype, device = native_dtype(dtype) or torch.float32, native_device(device)
+    dtype, device = native_dtype(dtype), native_device(device)
+    if dtype is None:  # complex bounds (the Array API allows them) give complex64
+        dtype = (
+            torch.complex64
+            if isinstance(start, complex) or isinstance(stop, complex)
+            else torch.float32
+        )
+    work = work_dtype(dtype)
+    if dtype.is_complex and not (isinstance(start, complex) or isinstance(stop, complex)):
+        start, stop = complex(start), complex(stop)
+    if not dtype.is_complex and (isinstance(start, complex) or isinstance(stop, complex)):
+        raise DtypeError(
+            f"complex bounds {start!r}, {stop!r} need a complex dtype, not {dtype}.",
+            function="linspace",
+            argument="dtype",
+            backend="torch",
+        )
     if endpoint:
-        return torch.linspace(start, stop, num, dtype=dtype, device=device)
-    return torch.linspace(start, stop, num + 1, dtype=dtype, device=device)[:-1]
+        out = torch.linspace(start, stop, num, dtype=work, device=device)
+    else:
+        out = torch.linspace(start, stop, num + 1, dtype=work, device=device)[:-1]
+    return out if out.dtype is dtype else out.to(dtype)
 
 
 def eye(n_rows, n_cols=None, /, *, k=0, dtype=None, device=None):
     dtype, device = native_dtype(dtype) or torch.float32, native_device(device)
     n_cols = n_rows if n_cols is None else n_cols
-    if k == 0:
+    if k == 0 and dtype not in WIDE_UNSIGNED:
         return torch.eye(n_rows, n_cols, dtype=dtype, device=device)
     rows = torch.arange(n_rows, device=device)[:, None]
     return (torch.arange(n_cols, device=device) - rows == k).to(dtype)
@@ -125,9 +171,13 @@ def meshgrid(*arrays, indexing="xy"):
     return list(torch.meshgrid(*arrays, indexing=indexing))
 
 
+_tril = unsigned_safe(torch.tril, "tril", "move", (0,))
+_triu = unsigned_safe(torch.triu, "triu", "move", (0,))
+
+
 def tril(x, /, *, k=0):
-    return torch.tril(x, k)
+    return _tril(x, k)
 
 
 def triu(x, /, *, k=0):
-    return torch.triu(x, k)
+    return _triu(x, k)
