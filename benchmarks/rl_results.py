@@ -1,17 +1,29 @@
 """ivy_rl results: learning on CartPole-v1 (PPO, A2C, TRPO on torch, jax and tensorflow), and
-PPO on Pendulum-v1 and Hopper-v5 against stable-baselines3's PPO with the same budget, in the
-same run: test scores and wall-clock steps per second.
+PPO on Pendulum-v1 and Hopper-v5 against stable-baselines3's PPO with the same settings and
+budget, in the same run: test scores and wall-clock steps per second.
+
+Scores: ivy_rl's per-epoch test scores (``test_episodes`` new episodes per epoch, for the
+curves), and, for every run of either library, the final policy's mean score over the same 10
+fixed episodes (seeds 1000-1009, deterministic actions), so that both libraries are judged on
+the same start states.
+
+Steps per second: environment steps over the seconds spent training, without the first epoch
+(compilation) and without test episodes (ivy_rl); steps over the seconds of ``model.learn``
+(stable-baselines3). The machine's load average is recorded with each run.
 
 stable-baselines3 is a benchmark-only peer: ``pip install stable-baselines3`` (it must leave
 torch at 2.13.0; check with ``pip install --dry-run``). Without it the peer rows are skipped.
+Where ivy_rl normalises observations (its default), stable-baselines3 runs in
+``VecNormalize(norm_obs=True, norm_reward=False, clip_obs=10)``, the same normalisation.
 
 Usage:
-    python benchmarks/rl_results.py                      # everything (about 30 min here)
+    python benchmarks/rl_results.py                      # everything (an hour here, loaded)
     python benchmarks/rl_results.py --only cartpole --frameworks jax
     python benchmarks/rl_results.py --steps 20000        # a quick look
+    python -m ivy_rl.plot runs/bench/PPO-CartPole-v1-* --out curves.png
 
-Each run writes its log to ``runs/bench/<name>`` (plot with ``python -m ivy_rl.plot``) and the
-table goes to stdout and ``runs/bench/results.md``.
+Each run writes its log to ``runs/bench/<name>``; the table goes to stdout and
+``runs/bench/results.md``, every result to ``runs/bench/results.json``.
 """
 
 from __future__ import annotations
@@ -20,6 +32,8 @@ import argparse
 import json
 import os
 import time
+
+import numpy as np
 
 CARTPOLE = {  # the RL zoo's PPO hyperparameters for CartPole (constant learning rate and clip)
     "PPO": dict(
@@ -50,7 +64,7 @@ CARTPOLE = {  # the RL zoo's PPO hyperparameters for CartPole (constant learning
         trace_decay=0.95,
     ),
 }
-PENDULUM = dict(
+PENDULUM = dict(  # the RL zoo's PPO settings for Pendulum (without gSDE)
     segment_size=1024,
     batch_size=64,
     epochs=10,
@@ -76,9 +90,28 @@ HOPPER = dict(
     hidden_sizes=(64, 64),
     normalize_returns=True,
 )
+FIXED_EPISODES = range(1000, 1010)
 
 
-def run_ivy(name, agent, env_id, framework, steps, workers, kwargs, root, test_episodes=5):
+def evaluate(act, env_id):
+    """Mean score of ``act(observation) -> action`` over the fixed episodes."""
+    import gymnasium as gym
+
+    env = gym.make(env_id)
+    scores = []
+    for seed in FIXED_EPISODES:
+        obs, _ = env.reset(seed=seed)
+        score, done = 0.0, False
+        while not done:
+            obs, reward, terminated, truncated, _ = env.step(act(obs))
+            score += float(reward)
+            done = terminated or truncated
+        scores.append(score)
+    env.close()
+    return float(np.mean(scores))
+
+
+def run_ivy(agent, env_id, framework, steps, workers, kwargs, root, seed, test_episodes):
     from ivy_rl.agents import make
     from ivy_rl.trainer import Trainer
 
@@ -86,79 +119,117 @@ def run_ivy(name, agent, env_id, framework, steps, workers, kwargs, root, test_e
         import torch
 
         torch.set_num_threads(1)
-    out = os.path.join(root, name)
-    start = time.perf_counter()
-    rows = Trainer(
+    name = f"{agent}-{env_id}-{framework}-{seed}"
+    load = os.getloadavg()[0]
+    trainer = Trainer(
         steps, epoch_steps=steps // 10, test_episodes=test_episodes, show_progress=False
-    ).run(make(agent, **kwargs), env_id, workers=workers, seed=0, f=framework, out=out)
-    seconds = time.perf_counter() - start
-    scores = [(r["train/steps"], r["test/episode_score/mean"]) for r in rows]
-    # steps per second without the test episodes and the first epoch's compilation
-    later = rows[1:] or rows
-    sps = (
-        sum(r["train/steps"] - p["train/steps"] for p, r in zip(rows, rows[1:]))
-        / max(sum(r["train/epoch_seconds"] for r in later), 1e-9)
-        if len(rows) > 1
-        else rows[0]["train/steps_per_second"]
     )
+    start = time.perf_counter()
+    rows = trainer.run(
+        make(agent, **kwargs),
+        env_id,
+        workers=workers,
+        seed=seed,
+        f=framework,
+        out=os.path.join(root, name),
+    )
+    seconds = time.perf_counter() - start
+    later = rows[1:]
+    trained = sum(r["train/steps"] - p["train/steps"] for p, r in zip(rows, rows[1:]))
+    busy = sum(r["train/epoch_seconds"] - r["test/seconds"] for r in later)
+    fixed = evaluate(lambda obs: trainer.agent.test_step(np.asarray(obs)[None])[0], env_id)
     return dict(
         name=name,
-        library=f"ivy_rl ({framework})",
+        library=f"ivy_rl ({framework}, fusion={trainer.agent.fusion})",
         agent=agent,
         env=env_id,
+        seed=seed,
         steps=steps,
         seconds=seconds,
-        steps_per_second=sps,
-        final_test=scores[-1][1],
-        best_test=max(s for _, s in scores),
-        curve=scores,
+        first_epoch_seconds=rows[0]["train/epoch_seconds"],
+        steps_per_second=trained / max(busy, 1e-9),
+        fixed_score=fixed,
+        curve=[(r["train/steps"], r["test/episode_score/mean"]) for r in rows],
+        load=(load + os.getloadavg()[0]) / 2,
     )
 
 
-def run_sb3(name, env_id, steps, workers, kwargs, test_episodes=10):
+def run_sb3(env_id, steps, workers, kwargs, seed, normalize):
     import torch
     from stable_baselines3 import PPO
     from stable_baselines3.common.env_util import make_vec_env
-    from stable_baselines3.common.evaluation import evaluate_policy
+    from stable_baselines3.common.vec_env import VecNormalize
 
     torch.set_num_threads(1)
-    env = make_vec_env(env_id, n_envs=workers, seed=0)
-    model = PPO("MlpPolicy", env, seed=0, device="cpu", verbose=0, **kwargs)
+    load = os.getloadavg()[0]
+    env = make_vec_env(env_id, n_envs=workers, seed=seed)
+    if normalize:
+        env = VecNormalize(env, norm_obs=True, norm_reward=False, clip_obs=10.0)
+    model = PPO("MlpPolicy", env, seed=seed, device="cpu", verbose=0, **kwargs)
     start = time.perf_counter()
     model.learn(steps)
     seconds = time.perf_counter() - start
-    score, _ = evaluate_policy(
-        model,
-        make_vec_env(env_id, n_envs=1, seed=1),
-        n_eval_episodes=test_episodes,
-        deterministic=True,
-    )
+    if normalize:
+        env.training = False
+
+    def act(obs):
+        obs = env.normalize_obs(obs[None])[0] if normalize else obs
+        return model.predict(obs, deterministic=True)[0]
+
     return dict(
-        name=name,
-        library="stable-baselines3 (torch)",
+        name=f"sb3-PPO-{env_id}-{seed}",
+        library="stable-baselines3 (torch, 1 thread)",
         agent="PPO",
         env=env_id,
+        seed=seed,
         steps=steps,
         seconds=seconds,
+        first_epoch_seconds=float("nan"),
         steps_per_second=steps / seconds,
-        final_test=float(score),
-        best_test=float("nan"),
+        fixed_score=evaluate(act, env_id),
         curve=[],
+        load=(load + os.getloadavg()[0]) / 2,
+    )
+
+
+def sb3_settings(config, workers):
+    """stable-baselines3's PPO arguments for an ivy_rl PPO config."""
+    return dict(
+        n_steps=config["segment_size"],
+        batch_size=config["batch_size"],
+        n_epochs=config["epochs"],
+        gamma=config["discount"],
+        gae_lambda=config["trace_decay"],
+        learning_rate=config["actor_lr"],
+        clip_range=0.2,
+        ent_coef=0.0,
+        max_grad_norm=config["gradient_clip"],
     )
 
 
 def table(results):
     lines = [
-        "| run | library | steps | final test score | best test score | first ≥ 475 | "
-        "seconds | steps/s |",
-        "|---|---|---|---|---|---|---|---|",
+        "| run | library | seed | steps | test score (last epoch) | best epoch | first epoch "
+        "≥ 475 | score on the 10 fixed episodes | seconds (first epoch) | steps/s | load |",
+        "|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in results:
-        first = next((s for s, v in r["curve"] if v >= 475), None)
+        curve = r["curve"]
+        first = next((s for s, v in curve if v >= 475), None)
+        last = f"{curve[-1][1]:.1f}" if curve else "–"
+        best = f"{max(v for _, v in curve):.1f}" if curve else "–"
+        reached = (
+            "–"
+            if not curve or "CartPole" not in r["env"]
+            else (f"{first:,}" if first is not None else "not reached")
+        )
+        first_epoch = (
+            "" if np.isnan(r["first_epoch_seconds"]) else f" ({r['first_epoch_seconds']:.1f})"
+        )
         lines.append(
-            f"| {r['agent']} {r['env']} | {r['library']} | {r['steps']:,} | {r['final_test']:.1f} | "
-            f"{r['best_test']:.1f} | {'' if first is None else f'{first:,}'} | "
-            f"{r['seconds']:.1f} | {r['steps_per_second']:,.0f} |"
+            f"| {r['agent']} {r['env']} | {r['library']} | {r['seed']} | {r['steps']:,} | {last} "
+            f"| {best} | {reached} | {r['fixed_score']:.1f} | {r['seconds']:.1f}{first_epoch} "
+            f"| {r['steps_per_second']:,.0f} | {r['load']:.1f} |"
         )
     return "\n".join(lines)
 
@@ -168,6 +239,7 @@ def main():
     p.add_argument("--only", nargs="+", default=["cartpole", "pendulum", "hopper"])
     p.add_argument("--frameworks", nargs="+", default=["torch", "jax", "tensorflow"])
     p.add_argument("--agents", nargs="+", default=["PPO", "A2C", "TRPO"])
+    p.add_argument("--seeds", nargs="+", type=int, default=[0])
     p.add_argument("--steps", type=int, default=None, help="override every budget")
     p.add_argument("--out", default="runs/bench")
     p.add_argument("--no-peers", action="store_true", help="skip stable-baselines3's runs")
@@ -187,84 +259,32 @@ def main():
     except ImportError:
         have_sb3 = False
         print("stable-baselines3 is not installed: its rows are skipped")
+    print(f"cores: {os.cpu_count()}, load average at the start: {os.getloadavg()}", flush=True)
+    tasks = []
     if "cartpole" in args.only:
-        steps = args.steps or 100_000
         for agent in args.agents:
+            tasks.append((agent, "CartPole-v1", CARTPOLE[agent], 8, 100_000, 5))
+    if "pendulum" in args.only:
+        tasks.append(("PPO", "Pendulum-v1", PENDULUM, 4, 100_000, 5))
+    if "hopper" in args.only:
+        tasks.append(("PPO", "Hopper-v5", HOPPER, 4, 100_000, 3))
+    for agent, env_id, config, workers, default_steps, test_episodes in tasks:
+        steps = args.steps or default_steps
+        for seed in args.seeds:
             for fw in args.frameworks:
                 record(
                     run_ivy(
-                        f"{agent}-CartPole-{fw}-0",
-                        agent,
-                        "CartPole-v1",
-                        fw,
-                        steps,
-                        8,
-                        CARTPOLE[agent],
-                        args.out,
+                        agent, env_id, fw, steps, workers, config, args.out, seed, test_episodes
                     )
                 )
-        if have_sb3:
-            record(
-                run_sb3(
-                    "sb3-PPO-CartPole",
-                    "CartPole-v1",
-                    steps,
-                    8,
-                    dict(
-                        n_steps=32,
-                        batch_size=256,
-                        gae_lambda=0.8,
-                        gamma=0.98,
-                        n_epochs=20,
-                        ent_coef=0.0,
-                        learning_rate=1e-3,
-                        clip_range=0.2,
-                    ),
+            if have_sb3 and agent == "PPO":
+                normalize = config.get("normalize_observations", True)
+                record(
+                    run_sb3(env_id, steps, workers, sb3_settings(config, workers), seed, normalize)
                 )
-            )
-    for key, env_id, config, workers, default_steps in (
-        ("pendulum", "Pendulum-v1", PENDULUM, 4, 100_000),
-        ("hopper", "Hopper-v5", HOPPER, 4, 100_000),
-    ):
-        if key not in args.only:
-            continue
-        steps = args.steps or default_steps
-        for fw in args.frameworks:
-            record(
-                run_ivy(
-                    f"PPO-{env_id}-{fw}-0",
-                    "PPO",
-                    env_id,
-                    fw,
-                    steps,
-                    workers,
-                    config,
-                    args.out,
-                    test_episodes=3,
-                )
-            )
-        if have_sb3:
-            record(
-                run_sb3(
-                    f"sb3-PPO-{env_id}",
-                    env_id,
-                    steps,
-                    workers,
-                    dict(
-                        n_steps=config["segment_size"],
-                        batch_size=config["batch_size"],
-                        n_epochs=config["epochs"],
-                        gamma=config["discount"],
-                        gae_lambda=config["trace_decay"],
-                        learning_rate=config["actor_lr"],
-                        clip_range=0.2,
-                        ent_coef=0.0,
-                    ),
-                    test_episodes=5,
-                )
-            )
     text = table(results)
     print(text)
+    print(f"load average at the end: {os.getloadavg()}")
     with open(os.path.join(args.out, "results.md"), "w") as fh:
         fh.write(text + "\n")
 

@@ -29,6 +29,7 @@ import numpy as np
 __all__ = ["TimeFeature", "make_env", "make_vector_env", "Workers", "check_environment_id"]
 
 VECTORIZATION_MODES = ("sync", "async", "ray")
+ASYNC_START_METHOD = "forkserver"  # how async workers start (multiprocessing's start method)
 
 
 class TimeFeature(gym.ObservationWrapper):
@@ -146,8 +147,9 @@ def make_vector_env(
     Args:
         env_id: a Gymnasium id (classic control, MuJoCo, ``ivy_gym/...``).
         workers: number of environments.
-        vectorization: ``'sync'`` (one process), ``'async'`` (one subprocess per environment)
-            or ``'ray'`` (Ray actors; the ``[distributed]`` extra).
+        vectorization: ``'sync'`` (one process), ``'async'`` (one subprocess per environment,
+            started by multiprocessing's ``forkserver``, never a fork of this process, which may
+            have framework threads running) or ``'ray'`` (Ray actors; the ``[distributed]`` extra).
         env_kwargs: keyword arguments of ``gymnasium.make``.
         time_feature: append the remaining time to the observations.
         ray_groups: with ``'ray'``, the number of actors (default: one per environment).
@@ -168,11 +170,16 @@ def make_vector_env(
         return RayVectorEnv(
             env_id, workers, groups=ray_groups, env_kwargs=env_kwargs, time_feature=time_feature
         )
+    vector_kwargs: dict[str, Any] = {"autoreset_mode": gym.vector.AutoresetMode.DISABLED}
+    if vectorization == "async":
+        # Subprocesses start from a fresh interpreter (forkserver) rather than a fork of this
+        # one: a fork of a process with jax, tensorflow or torch threads running can deadlock.
+        vector_kwargs["context"] = ASYNC_START_METHOD
     return gym.make_vec(
         env_id,
         num_envs=workers,
         vectorization_mode=vectorization,
-        vector_kwargs={"autoreset_mode": gym.vector.AutoresetMode.DISABLED},
+        vector_kwargs=vector_kwargs,
         wrappers=_wrappers(time_feature),
         **(env_kwargs or {}),
     )

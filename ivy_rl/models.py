@@ -49,6 +49,7 @@ __all__ = [
     "polyak_update",
     "actor_critic",
     "space_kind",
+    "check_observation_space",
 ]
 
 
@@ -119,14 +120,18 @@ def _default_init(weight_init: Callable | None, gain: float) -> Callable:
 # ----------------------------------------------------------------------------------------------
 
 
-class ObservationEncoder(ivy.Module):
-    """Flattens observations and normalises them with statistics passed at each call:
+class ObservationEncoder:
+    """Normalises observations with statistics passed at each call:
     ``clip((obs - mean) / std, -clip, clip)``; with ``stats=None`` they pass unchanged.
+
+    It has no variables, so it is a plain callable rather than an ``ivy.Module``: a module's
+    empty variable dict would be one more node in every nest of the model's variables (and an
+    empty dict in a nest splits the graph of ``torch.compile`` in torch 2.13).
 
     Args:
         observation_size: number of features of a flattened observation.
         clip: bound of the normalised values (None: no clipping).
-        dtype, device, f: as for ``ivy.Module``.
+        f: framework name or namespace of the arrays.
 
     Called as ``encoder(obs, stats)``: ``obs`` of shape ``[..., observation_size]``.
 
@@ -136,19 +141,20 @@ class ObservationEncoder(ivy.Module):
     """
 
     def __init__(
-        self, observation_size: int, *, clip: float | None = 10.0, dtype=None, device=None, f=None
+        self, observation_size: int, *, clip: float | None = 10.0, f: Framework = None
     ) -> None:
-        super().__init__(dtype=dtype, device=device, f=f)
+        self._f = f
         self.observation_size = int(observation_size)
         self.out_size = self.observation_size
         self.clip = clip
 
-    def _forward(self, v, obs, stats=None):
-        xp = self._f
+    def __call__(self, obs: Array, stats: Nest = None) -> Array:
         if stats is None:
             return obs
         out = (obs - stats["mean"]) / stats["std"]
-        return out if self.clip is None else xp.clip(out, -self.clip, self.clip)
+        if self.clip is None:
+            return out
+        return ivy.get_framework(obs, f=self._f).clip(out, -self.clip, self.clip)
 
 
 class MLPTorso(ivy.Module):
@@ -365,12 +371,12 @@ class Actor(ivy.Module):
         >>> actor(torch.zeros(1, 4), None).mode()
     """
 
-    def __init__(self, encoder: ivy.Module, torso: ivy.Module, head: ivy.Module) -> None:
+    def __init__(self, encoder: Callable, torso: ivy.Module, head: ivy.Module) -> None:
         super().__init__(dtype=torso.dtype, device=torso.device, f=torso.f)
         self.encoder, self.torso, self.head = encoder, torso, head
 
     def _forward(self, v, obs, obs_stats=None):
-        x = self.encoder._forward(v["encoder"], obs, obs_stats)
+        x = self.encoder(obs, obs_stats)
         return self.head._forward(v["head"], self.torso._forward(v["torso"], x))
 
 
@@ -386,13 +392,13 @@ class Critic(ivy.Module):
         >>> values = critic(obs, obs_stats, None, v=model.v["critic"])  # [batch]
     """
 
-    def __init__(self, encoder: ivy.Module, torso: ivy.Module, head: ivy.Module) -> None:
+    def __init__(self, encoder: Callable, torso: ivy.Module, head: ivy.Module) -> None:
         super().__init__(dtype=torso.dtype, device=torso.device, f=torso.f)
         self.encoder, self.torso, self.head = encoder, torso, head
 
     def normalized(self, v: Nest, obs: Array, obs_stats: Nest = None) -> Array:
         """The head's output (normalised values when return statistics are used)."""
-        x = self.encoder._forward(v["encoder"], obs, obs_stats)
+        x = self.encoder(obs, obs_stats)
         return self.head._forward(v["head"], self.torso._forward(v["torso"], x))
 
     def _forward(self, v, obs, obs_stats=None, return_stats=None):
@@ -492,6 +498,26 @@ def space_kind(space: Any, supported: Sequence[str] = SUPPORTED_SPACES, *, who: 
     return kind
 
 
+def check_observation_space(space: Any, *, who: str = "") -> None:
+    """Raise a TypeError unless ``space`` is a Box (of any shape; models flatten it), listing
+    what is supported.
+
+    Example:
+        >>> check_observation_space(gymnasium.spaces.Discrete(16), who="PPO")
+        TypeError: PPO does not support the observation space Discrete(16); ...
+    """
+    import gymnasium as gym
+
+    if not isinstance(space, gym.spaces.Box):
+        prefix = f"{who} " if who else ""
+        raise TypeError(
+            f"{prefix}does not support the observation space {space!r}; supported observation "
+            "spaces: Box (of any shape, flattened). Wrap the environment to give Box "
+            "observations (e.g. gymnasium.wrappers.FlattenObservation, or a one-hot of "
+            "Discrete states)"
+        )
+
+
 def actor_critic(
     observation_space: Any,
     action_space: Any,
@@ -532,6 +558,7 @@ def actor_critic(
         >>> model = actor_critic(env.observation_space, env.action_space, rng=rng, f="torch")
     """
     kind = space_kind(action_space, who="actor_critic")
+    check_observation_space(observation_space, who="actor_critic")
     build = {"dtype": dtype, "device": device, "f": f}
     obs_size = int(np.prod(observation_space.shape))
     default_head = "gaussian" if kind == "Box" else "categorical"
@@ -551,7 +578,7 @@ def actor_critic(
         return MLPTorso(obs_size, sizes, activation, weight_init=torso_init, **build)
 
     def encoder():
-        return ObservationEncoder(obs_size, clip=observation_clip, **build)
+        return ObservationEncoder(obs_size, clip=observation_clip, f=f)
 
     actor_torso = torso(actor_sizes)
     if head == "categorical":

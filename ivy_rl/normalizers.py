@@ -63,15 +63,28 @@ class MeanStd:
         """Fold the pending values into the mean and standard deviation."""
         if self.new_count == 0:
             return
-        total = self.count + self.new_count
-        w_old, w_new = self.count / total, self.new_count / total
-        self.mean = w_old * self.mean + w_new * self.new_sum / self.new_count
-        self.mean_sq = w_old * self.mean_sq + w_new * self.new_sum_sq / self.new_count
-        self.std = np.maximum(
-            np.sqrt(np.maximum(self.mean_sq - np.square(self.mean), 0.0)), self.epsilon
+        self.count, self.mean, self.mean_sq = _fold_moments(
+            self.count, self.mean, self.mean_sq, self.new_count, self.new_sum, self.new_sum_sq
         )
-        self.count = total
+        self.std = _standard_deviation(np, self.mean, self.mean_sq, self.epsilon)
         self._reset_pending()
+
+    def moments(self, dtype: Any = "float32") -> dict[str, np.ndarray]:
+        """``{'count', 'mean', 'mean_sq'}`` as numpy arrays of ``dtype``: the state that a
+        compiled function folds new values into (see :meth:`set_moments`)."""
+        return {
+            "count": np.asarray(self.count, dtype),
+            "mean": self.mean.astype(dtype),
+            "mean_sq": self.mean_sq.astype(dtype),
+        }
+
+    def set_moments(self, count: Any, mean: Any, mean_sq: Any) -> None:
+        """Take the count and moments computed elsewhere (e.g. :meth:`moments` folded inside a
+        compiled update); the standard deviation follows."""
+        self.count = int(np.rint(np.asarray(count, np.float64)))
+        self.mean = np.asarray(mean, np.float64).reshape(self.shape)
+        self.mean_sq = np.asarray(mean_sq, np.float64).reshape(self.shape)
+        self.std = _standard_deviation(np, self.mean, self.mean_sq, self.epsilon)
 
     def stats(self, dtype: Any = "float32") -> dict[str, np.ndarray]:
         """``{'mean', 'std'}`` as numpy arrays of ``dtype``."""
@@ -102,6 +115,23 @@ class MeanStd:
             if value.shape != self.shape:
                 raise ValueError(f"{key} has shape {value.shape}, expected {self.shape}")
             setattr(self, key, value)
+
+
+def _fold_moments(count, mean, mean_sq, new_count, new_sum, new_sum_sq):
+    """``(count, mean, mean_sq)`` after adding ``new_count`` values of sum ``new_sum`` and sum of
+    squares ``new_sum_sq``; plain arithmetic, so numpy values and arrays of any backend (inside
+    compiled functions too) work alike."""
+    total = count + new_count
+    w_old, w_new = count / total, new_count / total
+    mean = w_old * mean + w_new * (new_sum / new_count)
+    mean_sq = w_old * mean_sq + w_new * (new_sum_sq / new_count)
+    return total, mean, mean_sq
+
+
+def _standard_deviation(xp, mean, mean_sq, epsilon):
+    """``max(sqrt(max(mean_sq - mean², 0)), epsilon)`` on the backend namespace ``xp``."""
+    variance = xp.maximum(mean_sq - mean * mean, 0.0)
+    return xp.maximum(xp.sqrt(variance), epsilon)
 
 
 class ReturnNormalizer(MeanStd):

@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import sys
 from typing import Any
 
 import numpy as np
@@ -51,7 +52,13 @@ def play(
     from ivy_rl.environments import make_env
     from ivy_rl.trainer import latest_checkpoint
 
-    with open(os.path.join(run, "config.json")) as fh:
+    config_path = os.path.join(run, "config.json")
+    if not os.path.exists(config_path):
+        raise FileNotFoundError(
+            f"{run!r} is not a run folder: it has no config.json (python -m ivy_rl.train "
+            "--out <folder> writes one)"
+        )
+    with open(config_path) as fh:
         config = json.load(fh)
     checkpoint = latest_checkpoint(run)
     if checkpoint is None:
@@ -141,4 +148,8 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except (ValueError, TypeError, FileNotFoundError) as error:
+        print(f"error: {error}", file=sys.stderr)
+        raise SystemExit(2) from None

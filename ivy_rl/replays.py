@@ -1,12 +1,13 @@
-"""A segment replay for on-policy agents: the last ``size`` steps of every worker, their
-λ-returns and advantages, and mini-batches drawn from them.
+"""A segment replay for on-policy agents: the last ``size`` steps of every worker, and the
+orders of the mini-batches drawn from them.
 
-Buffers are numpy arrays ``[size, workers, ...]`` on the host; returns and advantages use
-:func:`ivy_rl.returns.lambda_returns` with partial-episode bootstrapping (bootstrapped at time
-limits, not at terminations).
+Buffers are numpy arrays ``[size, workers, ...]`` on the host. The agents compute λ-returns and
+advantages from them inside their compiled update (:mod:`ivy_rl.returns`, with partial-episode
+bootstrapping); the mini-batch orders come from the agent's numpy generator, so every backend
+sees the same mini-batches.
 
 Example:
-    >>> seg = Segment(size=4, discount=0.99, trace_decay=0.95)
+    >>> seg = Segment(size=4, batch_size=8, batch_iterations=2)
     >>> seg.store(observations=obs, actions=a, rewards=r, resets=d, terminations=t)
     >>> seg.ready()
     False
@@ -14,13 +15,9 @@ Example:
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
-
-import ivy
-from ivy_rl.returns import lambda_returns
 
 __all__ = ["Segment"]
 
@@ -30,8 +27,6 @@ class Segment:
 
     Args:
         size: steps per worker in a segment (the update happens when it is full).
-        discount: γ of the returns.
-        trace_decay: λ of the returns.
         batch_size: transitions per mini-batch (None: the whole segment).
         batch_iterations: passes over the segment (epochs) per update.
 
@@ -43,8 +38,6 @@ class Segment:
         self,
         size: int = 2048,
         *,
-        discount: float = 0.99,
-        trace_decay: float = 0.95,
         batch_size: int | None = None,
         batch_iterations: int = 10,
     ) -> None:
@@ -53,8 +46,6 @@ class Segment:
         if batch_size is not None and batch_size < 1:
             raise ValueError(f"Segment: batch_size must be >= 1 or None, got {batch_size}")
         self.size = int(size)
-        self.discount = float(discount)
-        self.trace_decay = float(trace_decay)
         self.batch_size = batch_size
         self.batch_iterations = int(batch_iterations)
         self.buffers: dict[str, np.ndarray] | None = None
@@ -67,7 +58,7 @@ class Segment:
     def store(self, **arrays: Any) -> None:
         """Store one step of every worker: arrays ``[workers, ...]`` by name."""
         if self.index >= self.size:
-            raise RuntimeError("Segment is full: call get_full() or clear() before storing more")
+            raise RuntimeError("Segment is full: learn from it and clear() it before storing more")
         if self.buffers is None:
             self.buffers = {
                 k: np.zeros((self.size,) + np.shape(v), np.asarray(v).dtype)
@@ -81,46 +72,29 @@ class Segment:
     def workers(self) -> int:
         return 0 if self.buffers is None else next(iter(self.buffers.values())).shape[1]
 
-    def compute_returns(self, values: np.ndarray, next_values: np.ndarray) -> None:
-        """Store ``values``, ``returns`` (λ-returns) and ``advantages`` (returns - values)
-        from the critic's ``values`` and ``next_values`` of shape ``[size, workers]``."""
-        b = self.buffers
-        values = np.asarray(values).reshape(b["rewards"].shape)
-        next_values = np.asarray(next_values).reshape(b["rewards"].shape)
-        returns = lambda_returns(
-            b["rewards"].astype(values.dtype),
-            next_values,
-            b["resets"],
-            b["terminations"],
-            discount=self.discount,
-            trace_decay=self.trace_decay,
-            f=ivy.numpy,
-        )
-        b["values"], b["next_values"], b["returns"] = values, next_values, returns
-        b["advantages"] = returns - values
+    def batch_orders(self, rng: np.random.Generator) -> np.ndarray:
+        """The mini-batches of all passes (epochs) of an update, as indices into the segment
+        flattened to ``[size * workers]`` (index ``t * workers + w``): an int32 array
+        ``[passes * batches_per_pass, batch_size]``. Each pass draws a permutation from ``rng``
+        and cuts it into full mini-batches (the remainder is left out); without mini-batches
+        (``batch_size`` None or at least the segment) each pass is one row ``0 .. N - 1`` and
+        nothing is drawn.
 
-    def get_full(self, *keys: str, normalize_advantages: bool = True) -> dict[str, np.ndarray]:
-        """The named buffers flattened to ``[size * workers, ...]``; ``advantages``
-        standardised unless ``normalize_advantages`` is False."""
-        out = {}
-        for key in keys:
-            value = self.buffers[key]
-            if key == "advantages" and normalize_advantages:
-                std = value.std()
-                value = (value - value.mean()) / (std if std > 0 else 1.0)
-            out[key] = value.reshape((-1,) + value.shape[2:])
-        return out
-
-    def batch_indices(self, rng: np.random.Generator) -> Iterator[np.ndarray | None]:
-        """Index arrays of the mini-batches of all passes (None: the whole segment)."""
+        Example:
+            >>> Segment(4, batch_size=3, batch_iterations=2).batch_orders(rng).shape  # 2 workers
+            (4, 3)
+        """
         total = self.size * self.workers
+        rows = []
         for _ in range(self.batch_iterations):
             if self.batch_size is None or self.batch_size >= total:
-                yield None
+                rows.append(np.arange(total))
                 continue
             order = rng.permutation(total)
-            for start in range(0, total - self.batch_size + 1, self.batch_size):
-                yield order[start : start + self.batch_size]
+            count = total // self.batch_size
+            rows.extend(order[: count * self.batch_size].reshape(count, self.batch_size))
+        width = total if self.batch_size is None else min(self.batch_size, total)
+        return np.asarray(rows, np.int32).reshape(len(rows), width)
 
     def clear(self) -> None:
         """Start a new segment."""

@@ -9,7 +9,9 @@ true when it ended in a terminal state. After a termination nothing is bootstrap
 reset that is not a termination (a time limit, or the end of the segment) the value of the last
 state ``next_values[t]`` is bootstrapped: partial-episode bootstrapping (Pardo et al., 2018).
 
-The recursions run backwards in time, one array operation per step, on any backend.
+The recursions run backwards in time with ``ivy.scan`` (one step per time step), on any
+backend, eagerly or inside a compiled function (jax: ``jax.lax.scan``; tensorflow graphs:
+``tf.while_loop``; torch: a loop that ``torch.compile`` unrolls).
 
 Example:
     >>> import numpy as np, ivy_rl
@@ -43,18 +45,26 @@ def _check(rewards, *others):
             )
 
 
+def _reverse_scan(xp, step, init, xs):
+    """``ivy.scan`` of ``step`` backwards in time over the leading axis of the arrays ``xs``."""
+    _, out = xp.scan(step, init, [xp.flip(a, axis=0) for a in xs])
+    return xp.flip(out, axis=0)
+
+
 def _lambda_returns(xp, rewards, next_values, resets, terminations, discount, trace_decay):
     resets = _flags(xp, resets, rewards)
     continues = 1.0 - _flags(xp, terminations, rewards)
-    steps = rewards.shape[0]
-    following = next_values[steps - 1]
-    out = [None] * steps
-    for t in range(steps - 1, -1, -1):
-        mixed = (1.0 - trace_decay) * next_values[t] + trace_decay * following
-        bootstrap = resets[t] * next_values[t] + (1.0 - resets[t]) * mixed
-        following = rewards[t] + discount * continues[t] * bootstrap
-        out[t] = following
-    return xp.stack(out, axis=0)
+
+    def step(following, x):
+        reward, next_value, reset, cont = x
+        mixed = (1.0 - trace_decay) * next_value + trace_decay * following
+        bootstrap = reset * next_value + (1.0 - reset) * mixed
+        current = reward + discount * cont * bootstrap
+        return current, current
+
+    # at the end of the segment G_T = V'_{T-1}: mixed = V'_{T-1} whatever λ
+    init = next_values[rewards.shape[0] - 1]
+    return _reverse_scan(xp, step, init, [rewards, next_values, resets, continues])
 
 
 def lambda_returns(
@@ -96,14 +106,15 @@ def lambda_returns(
 def _advantages(xp, rewards, values, next_values, resets, terminations, discount, trace_decay):
     cont = 1.0 - _flags(xp, resets, rewards)
     alive = 1.0 - _flags(xp, terminations, rewards)
-    steps = rewards.shape[0]
-    following = xp.zeros_like(rewards[0])
-    out = [None] * steps
-    for t in range(steps - 1, -1, -1):
-        delta = rewards[t] + discount * alive[t] * next_values[t] - values[t]
-        following = delta + discount * trace_decay * cont[t] * following
-        out[t] = following
-    return xp.stack(out, axis=0)
+
+    def step(following, x):
+        reward, value, next_value, carry_on, not_terminal = x
+        delta = reward + discount * not_terminal * next_value - value
+        current = delta + discount * trace_decay * carry_on * following
+        return current, current
+
+    init = xp.zeros_like(rewards[0])
+    return _reverse_scan(xp, step, init, [rewards, values, next_values, cont, alive])
 
 
 def generalized_advantages(

@@ -139,8 +139,10 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
 
 
 if __name__ == "__main__":
+    import ivy
+
     try:
         main()
-    except (ValueError, TypeError) as error:
+    except (ValueError, TypeError, FileNotFoundError, ivy.errors.IvyError) as error:
         print(f"error: {error}", file=sys.stderr)
         raise SystemExit(2) from None

@@ -190,7 +190,9 @@ class Trainer:
                 logger.progress(self.steps, epoch_steps, self.epoch_steps, self.max_steps)
             last = self.steps >= self.max_steps
             if epoch_steps >= self.epoch_steps or last:
+                test_start = time.monotonic()
                 self._test()
+                test_seconds = time.monotonic() - test_start
                 self.epochs += 1
                 now = time.monotonic()
                 self.elapsed = now - start
@@ -201,7 +203,9 @@ class Trainer:
                         "train/episodes": self.episodes,
                         "train/seconds": self.elapsed,
                         "train/epoch_seconds": now - epoch_start,
-                        "train/steps_per_second": epoch_steps / max(now - epoch_start, 1e-9),
+                        "train/steps_per_second": epoch_steps
+                        / max(now - epoch_start - test_seconds, 1e-9),
+                        "test/seconds": test_seconds,
                     }
                 )
                 epoch_start, epoch_steps = time.monotonic(), 0

@@ -1,8 +1,11 @@
-"""Argument checks and window geometry shared by every backend's convolutions and pools.
+"""Argument checks and window geometry of convolutions and pools, pure Python (no framework).
 
-Pure Python (no framework): each backend parses ``strides``, ``dilations`` and ``padding`` here so
-that the four backends accept the same arguments and raise the same errors. Layout is channel-last:
-``x`` is ``[N, W, C]``, ``[N, H, W, C]`` or ``[N, D, H, W, C]`` (more leading batch axes allowed).
+The core's compositions (``ivy/core/convolutions.py``, ``ivy/core/pooling.py``) parse ``strides``,
+``dilations`` and ``padding`` and resolve the padding here, once, so that every backend accepts
+the same arguments and raises the same errors; the backends' primitives (``conv_general``,
+``pool_general``) use the geometry helpers (``same_pads``, ``window_counts``) where their
+library needs them. Layout is channel-last: ``x`` is ``[N, W, C]``, ``[N, H, W, C]`` or
+``[N, D, H, W, C]`` (more leading batch axes allowed).
 """
 
 from __future__ import annotations
@@ -97,6 +100,17 @@ def explicit_pads(padding: str | Pads, sizes, windows, strides) -> Pads:
     return padding
 
 
+def resolve_pads(parsed: str | Pads, sizes, windows, strides, fn: str) -> str | Pads:
+    """The ``(low, high)`` pairs of a padding parsed by :func:`parse_padding`, with the output
+    checked non-empty; where a spatial size is unknown (None, in a tensorflow graph), the parsed
+    padding as it is ('SAME' and 'VALID' stay strings)."""
+    if None in sizes:
+        return parsed
+    pads = explicit_pads(parsed, sizes, windows, strides)
+    output_sizes(sizes, windows, strides, pads, fn)
+    return pads
+
+
 def output_sizes(sizes, windows, strides, pads, fn: str) -> tuple[int, ...]:
     """Spatial output sizes of a window sliding over the padded input; raises when empty."""
     out = tuple(
@@ -157,17 +171,18 @@ def check_pool_input(x_shape, nd: int, fn: str) -> None:
         )
 
 
-def pool_pads(padding, sizes, kernel, strides, fn: str) -> Pads:
-    """Explicit pads of a pool; explicit pads must be smaller than the window."""
+def pool_pads(padding, sizes, kernel, strides, fn: str) -> str | Pads:
+    """Explicit pads of a pool (see :func:`resolve_pads`); explicit pads must be smaller than
+    the window."""
     parsed = parse_padding(padding, len(kernel), fn)
-    pads = explicit_pads(parsed, sizes, kernel, strides)
-    if any(lo >= k or hi >= k for (lo, hi), k in zip(pads, kernel)):
+    if not isinstance(parsed, str) and any(
+        lo >= k or hi >= k for (lo, hi), k in zip(parsed, kernel)
+    ):
         raise ValueError(
-            f"{fn}: explicit padding {pads} must be smaller than the window {tuple(kernel)} on "
+            f"{fn}: explicit padding {parsed} must be smaller than the window {tuple(kernel)} on "
             f"each side (a window of padding only has no value)."
         )
-    output_sizes(sizes, kernel, strides, pads, fn)
-    return pads
+    return resolve_pads(parsed, sizes, kernel, strides, fn)
 
 
 def transpose_geometry(sizes, windows, strides, padding, output_shape, fn: str, channels=None):
@@ -229,6 +244,25 @@ def transpose_geometry(sizes, windows, strides, padding, output_shape, fn: str, 
     return out, tuple(lo for lo, _ in pads), full
 
 
+def transpose_crops(lows, out_sizes, full_sizes) -> tuple[Pads, tuple[int, ...]]:
+    """What a transposed convolution crops from its full result, and the zeros it appends.
+
+    The output is ``full[lo : lo + n]`` per axis, extended with zeros past the full result's
+    end (an ``output_shape`` larger than the full result, or a low crop beyond it).
+
+    Returns:
+        ``(crops, extend)``: ``(low, high)`` crops with ``low + high <= full`` per axis, and the
+        zeros to append after the cropped result.
+    """
+    crops, extend = [], []
+    for lo, n, full in zip(lows, out_sizes, full_sizes):
+        low = min(lo, full)
+        kept = max(min(n, full - lo), 0)
+        crops.append((low, full - low - kept))
+        extend.append(n - kept)
+    return tuple(crops), tuple(extend)
+
+
 def window_counts(sizes, kernel, strides, pads):
     """Number of real (unpadded) entries in each window of a pool, a numpy array of the
     output's spatial shape: the divisor of an average pool that does not count padding."""
@@ -240,3 +274,10 @@ def window_counts(sizes, kernel, strides, pads):
         per_axis = np.minimum(starts + k, n) - np.maximum(starts, 0)
         counts = np.multiply.outer(counts, per_axis)
     return counts
+
+
+def averages(reduction: str) -> bool:
+    """True for a mean pool (``reduction='mean'``), False for a max pool (``'max'``)."""
+    if reduction not in ("max", "mean"):
+        raise ValueError(f"pool_general: reduction must be 'max' or 'mean', got {reduction!r}.")
+    return reduction == "mean"

@@ -2,11 +2,17 @@
 
 ``loss, grads, *aux = ivy.execute_with_gradients(func, xs)`` evaluates ``func(xs)`` once and
 returns its loss, the gradients of the loss with respect to every leaf of the nest ``xs`` (same
-structure), and any further outputs of ``func``. Per backend: torch uses
-``torch.autograd.grad`` (nothing accumulates in ``.grad`` across calls), tensorflow a
-``GradientTape`` that watches the leaves (plain tensors or variables), jax
-``jax.value_and_grad(..., has_aux=True)``. numpy has no autodiff and raises
-:class:`ivy.errors.UnsupportedError`.
+structure), and any further outputs of ``func``. ``func`` is differentiated only through its
+argument: an array it captures from outside is a constant, even where it is the very object
+passed in ``xs``.
+
+The family is written once here, over two primitives that each backend implements:
+:func:`value_and_grad_native` (a function of a flat list of arrays returning ``(loss, aux)``) and
+:func:`jacobian_native`. The nests, the loss/aux split, the checks and the batch layout of
+Jacobians live here. Per backend: torch ``torch.autograd.grad`` on fresh leaf tensors (nothing
+accumulates in ``.grad`` across calls), tensorflow a ``GradientTape`` watching fresh tensors
+(``tf.identity`` of each leaf), jax ``jax.value_and_grad(..., has_aux=True)`` and
+``jax.jacrev``. numpy has no autodiff and raises :class:`ivy.errors.UnsupportedError`.
 
 Leaves must be floating-point arrays; gradients of leaves the loss does not use are zeros.
 ``value_and_grad``, ``grad`` and ``jacobian`` return functions, whose framework is resolved from
@@ -16,14 +22,17 @@ their call arguments (or from ``f`` / the global framework).
 from __future__ import annotations
 
 import functools
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any
 
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition, dispatch
+from ivy.nest import flatten_nest, unflatten_nest
 from ivy.typing import Array, Framework, Nest
 
 __all__ = [
+    "value_and_grad_native",
+    "jacobian_native",
     "execute_with_gradients",
     "execute_with_jacobian",
     "value_and_grad",
@@ -35,10 +44,93 @@ __all__ = [
 
 
 @dispatch("xs")
+def value_and_grad_native(
+    fn: Callable[[list[Array]], tuple[Array, Any]],
+    xs: Sequence[Array],
+    /,
+    *,
+    retain_grads: bool = False,
+    f: Framework = None,
+) -> tuple[Array, Any, list[Array]]:
+    """The backends' one gradient primitive, under :func:`execute_with_gradients`,
+    :func:`value_and_grad` and :func:`grad` (prefer those).
+
+    ``fn`` is differentiated only through its argument: arrays that ``fn`` captures from outside
+    are constants, also where they are the very objects given in ``xs`` (each backend hands
+    ``fn`` fresh arrays of the same values).
+
+    Args:
+        fn: ``fn(leaves) -> (loss, aux)``, with ``loss`` a scalar array.
+        xs: the arrays (a flat list) to differentiate with respect to.
+        retain_grads: as in :func:`execute_with_gradients`; with False the results are cut from
+            the graph.
+        f: framework name or namespace; by default inferred from ``xs``.
+
+    Returns:
+        ``(loss, aux, grads)``, ``grads`` a list like ``xs`` (zeros where ``loss`` does not
+        depend on an array).
+
+    Example:
+        >>> ivy.value_and_grad_native(lambda v: (ivy.sum(v[0] ** 2), ()), [jnp.ones(2)])[2]
+        [Array([2., 2.], dtype=float32)]
+    """
+
+
+@dispatch("x")
+def jacobian_native(
+    fn: Callable[[Array], tuple[Array, Any]],
+    x: Array,
+    /,
+    *,
+    retain_grads: bool = False,
+    f: Framework = None,
+) -> tuple[Array, Any]:
+    """The backends' Jacobian primitive, under :func:`execute_with_jacobian` and
+    :func:`jacobian` (prefer those). Like :func:`value_and_grad_native`, ``fn`` is differentiated
+    only through its argument.
+
+    Args:
+        fn: ``fn(x) -> (out, aux)``.
+        x: the array to differentiate with respect to.
+        retain_grads: keep the results differentiable.
+        f: framework name or namespace; by default inferred from ``x``.
+
+    Returns:
+        ``(jac, aux)``, ``jac`` of shape ``(*out.shape, *x.shape)``.
+
+    Example:
+        >>> ivy.jacobian_native(lambda x: (x**2, ()), jnp.arange(2.0))[0]
+        Array([[0., 0.],
+               [0., 2.]], dtype=float32)
+    """
+
+
+def _loss_and_aux(out: Any, name: str) -> tuple[Any, tuple]:
+    """(loss, aux) of a differentiated function's output: a tuple's first element is the loss,
+    which must be a scalar."""
+    if isinstance(out, tuple):
+        if not out:
+            raise ValueError(f"{name}: the function returned an empty tuple; return the loss.")
+        loss, aux = out[0], out[1:]
+    else:
+        loss, aux = out, ()
+    shape = tuple(getattr(loss, "shape", ()))
+    if shape:
+        raise ValueError(
+            f"{name}: the loss must be a scalar (shape ()), got shape {shape}; reduce it "
+            f"first, e.g. with ivy.mean or ivy.sum."
+        )
+    return loss, aux
+
+
+@composition
 def execute_with_gradients(
     func: Callable[[Nest], Any], xs: Nest, *, retain_grads: bool = False, f: Framework = None
 ) -> tuple[Any, ...]:
     """Evaluate ``func(xs)`` and differentiate its loss with respect to every leaf of ``xs``.
+
+    ``func`` is differentiated only through its argument: arrays it captures from outside are
+    constants, even where they are the very arrays passed in ``xs``.
 
     Args:
         func: ``func(xs)`` returns a scalar loss, or a tuple ``(loss, *aux)``.
@@ -56,9 +148,17 @@ def execute_with_gradients(
         >>> grads["w"]
         tensor([2., 2., 2.], dtype=torch.float64)
     """
+    xp = _fh.get_framework(xs, f=f)
+    leaves, spec = flatten_nest(xs)
+
+    def loss_and_aux(leaves):
+        return _loss_and_aux(func(unflatten_nest(spec, leaves)), "execute_with_gradients")
+
+    loss, aux, grads = xp.value_and_grad_native(loss_and_aux, leaves, retain_grads=retain_grads)
+    return (loss, unflatten_nest(spec, grads), *aux)
 
 
-@dispatch("x")
+@composition
 def execute_with_jacobian(
     func: Callable[[Array], Array],
     x: Array,
@@ -89,6 +189,28 @@ def execute_with_jacobian(
         >>> J.shape
         (5, 3, 3)
     """
+    xp = _fh.get_framework(x, f=f)
+    if not hasattr(x, "shape"):
+        x = xp.asarray(x)
+    rank = len(x.shape)
+    nb = max(rank - 1 if batch_dims is None else batch_dims, 0)
+    batch_axes = tuple(range(nb))
+
+    def summed(x):
+        y = func(x)
+        if tuple(y.shape[:nb]) != tuple(x.shape[:nb]):
+            raise ValueError(
+                f"execute_with_jacobian: with {nb} batch dims the output's leading shape "
+                f"{tuple(y.shape[:nb])} must equal the input's {tuple(x.shape[:nb])}."
+            )
+        # Batch elements are independent: the Jacobian of the sum over the batch holds the
+        # per-element Jacobians.
+        return (xp.sum(y, axis=batch_axes) if nb else y), y
+
+    jac, y = xp.jacobian_native(summed, x, retain_grads=retain_grads)
+    n_out = len(y.shape) - nb  # jac: (*out_shape, *batch, *in_shape) -> batch first
+    perm = (*range(n_out, n_out + nb), *range(n_out), *range(n_out + nb, n_out + rank))
+    return y, (xp.permute_dims(jac, perm) if perm != tuple(range(n_out + rank)) else jac)
 
 
 @dispatch

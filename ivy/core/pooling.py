@@ -9,22 +9,36 @@ Padding never counts: max pools pad with ``-inf``, and average pools divide each
 the number of real (unpadded) entries in it. That is tf's rule for 'SAME' (torch's
 ``count_include_pad=False``), applied to explicit padding too.
 
-Backends: torch ``F.max_pool*``/``F.avg_pool*`` (channel-first permutation), jax
-``lax.reduce_window``, tensorflow ``tf.nn.max_pool``/``avg_pool`` (float64 3-D pools, which tf's
-CPU lacks, run as a 2-D then a 1-D pool), numpy explicit sliding windows.
+Every pool is written once, as a composition: it checks the arguments, resolves the padding to
+explicit ``(low, high)`` pairs and folds extra leading batch axes into one, then calls the
+backends' one primitive, :func:`pool_general`. Backends: torch ``F.max_pool*``/``F.avg_pool*``
+(channel-first permutation), jax ``lax.reduce_window``, tensorflow ``tf.nn.max_pool``/``avg_pool``
+(float64 3-D pools, which tf's CPU lacks, run as a 2-D then a 1-D pool), numpy explicit sliding
+windows.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 
-from ivy.core._dispatch import dispatch
+from ivy import framework_handler as _fh
+from ivy.backends import _nn_args as A
+from ivy.core._dispatch import composition, dispatch
+from ivy.core.convolutions import _as_array, _fold_batch, _unfold_batch
 from ivy.typing import Array, Framework
 
-__all__ = ["max_pool1d", "max_pool2d", "max_pool3d", "avg_pool1d", "avg_pool2d", "avg_pool3d"]
+__all__ = [
+    "pool_general",
+    "max_pool1d",
+    "max_pool2d",
+    "max_pool3d",
+    "avg_pool1d",
+    "avg_pool2d",
+    "avg_pool3d",
+]
 
 
-@dispatch
+@composition
 def max_pool1d(
     x: Array,
     kernel: int | Sequence[int],
@@ -49,9 +63,10 @@ def max_pool1d(
         >>> ivy.max_pool1d(np.arange(5.).reshape(1, 5, 1), 2, 2, "SAME")[0, :, 0]
         array([1., 3., 4.])
     """
+    return _pool(_fh.get_framework(x, f=f), x, kernel, strides, padding, 1, "max_pool1d", "max")
 
 
-@dispatch
+@composition
 def max_pool2d(
     x: Array,
     kernel: int | Sequence[int],
@@ -76,9 +91,10 @@ def max_pool2d(
         >>> ivy.max_pool2d(np.ones((1, 4, 4, 3)), 2, 2, "VALID").shape
         (1, 2, 2, 3)
     """
+    return _pool(_fh.get_framework(x, f=f), x, kernel, strides, padding, 2, "max_pool2d", "max")
 
 
-@dispatch
+@composition
 def max_pool3d(
     x: Array,
     kernel: int | Sequence[int],
@@ -103,9 +119,10 @@ def max_pool3d(
         >>> ivy.max_pool3d(np.ones((1, 4, 4, 4, 3)), 2, 2, "VALID").shape
         (1, 2, 2, 2, 3)
     """
+    return _pool(_fh.get_framework(x, f=f), x, kernel, strides, padding, 3, "max_pool3d", "max")
 
 
-@dispatch
+@composition
 def avg_pool1d(
     x: Array,
     kernel: int | Sequence[int],
@@ -130,9 +147,10 @@ def avg_pool1d(
         >>> ivy.avg_pool1d(np.arange(5.).reshape(1, 5, 1), 2, 2, "SAME")[0, :, 0]
         array([0.5, 2.5, 4. ])
     """
+    return _pool(_fh.get_framework(x, f=f), x, kernel, strides, padding, 1, "avg_pool1d", "mean")
 
 
-@dispatch
+@composition
 def avg_pool2d(
     x: Array,
     kernel: int | Sequence[int],
@@ -157,9 +175,10 @@ def avg_pool2d(
         >>> ivy.avg_pool2d(np.ones((1, 5, 5, 3)), 2, 2, "SAME").shape
         (1, 3, 3, 3)
     """
+    return _pool(_fh.get_framework(x, f=f), x, kernel, strides, padding, 2, "avg_pool2d", "mean")
 
 
-@dispatch
+@composition
 def avg_pool3d(
     x: Array,
     kernel: int | Sequence[int],
@@ -184,3 +203,48 @@ def avg_pool3d(
         >>> ivy.avg_pool3d(np.ones((1, 4, 4, 4, 3)), 2, 2, "VALID").shape
         (1, 2, 2, 2, 3)
     """
+    return _pool(_fh.get_framework(x, f=f), x, kernel, strides, padding, 3, "avg_pool3d", "mean")
+
+
+@dispatch
+def pool_general(
+    x: Array,
+    kernel: tuple[int, ...],
+    strides: tuple[int, ...],
+    padding: str | tuple[tuple[int, int], ...],
+    /,
+    *,
+    reduction: str = "max",
+    f: Framework = None,
+) -> Array:
+    """The backends' one pool, under every function of this group (prefer those: they check
+    their arguments and resolve the padding; this takes them resolved, unchecked).
+
+    Args:
+        x: ``[N, *spatial, C]``, one batch axis, ``nd = len(kernel)`` spatial axes.
+        kernel: ``nd`` ints, the window.
+        strides: ``nd`` ints.
+        padding: ``nd`` ``(low, high)`` pairs, each smaller than the window; padding never
+            counts (a max ignores it, a mean divides by the real entries of its window).
+            ``'SAME'`` or ``'VALID'`` only where the spatial sizes are unknown before run time
+            (tensorflow graphs).
+        reduction: ``'max'`` or ``'mean'``.
+
+    Returns:
+        ``[N, *spatial_out, C]``.
+
+    Example:
+        >>> ivy.pool_general(np.arange(5.).reshape(1, 5, 1), (2,), (2,), ((0, 1),))[0, :, 0]
+        array([1., 3., 4.])
+    """
+
+
+def _pool(xp, x, kernel, strides, padding, nd, fn, reduction):
+    x = _as_array(xp, x)
+    shape = tuple(x.shape)
+    A.check_pool_input(shape, nd, fn)
+    k = A.as_tuple(kernel, nd, "kernel", fn)
+    s = A.as_tuple(strides, nd, "strides", fn)
+    pads = A.pool_pads(padding, shape[len(shape) - nd - 1 : -1], k, s, fn)
+    x, lead = _fold_batch(xp, x, nd)
+    return _unfold_batch(xp, xp.pool_general(x, k, s, pads, reduction=reduction), lead)

@@ -13,10 +13,22 @@ from typing import Any
 from ivy_rl.agents.a2c import A2C
 from ivy_rl.agents.agent import Agent
 from ivy_rl.agents.baselines import Constant, Uniform
+from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.agents.ppo import PPO
 from ivy_rl.agents.trpo import TRPO
 
-__all__ = ["Agent", "Uniform", "Constant", "A2C", "PPO", "TRPO", "AGENTS", "make"]
+__all__ = [
+    "Agent",
+    "Uniform",
+    "Constant",
+    "A2C",
+    "PPO",
+    "TRPO",
+    "AGENTS",
+    "make",
+    "compiled_scan_unrolls",
+    "FUSION_LEVELS",
+]
 
 AGENTS: dict[str, type[Agent]] = {
     "A2C": A2C,

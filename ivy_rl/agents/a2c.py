@@ -1,10 +1,22 @@
 """A2C: advantage actor-critic (also called vanilla policy gradient), the base of PPO and TRPO.
 
-Each update uses one segment of ``segment_size`` steps of every worker: the critic evaluates
-the observations and the true next observations, λ-returns and advantages follow with
-partial-episode bootstrapping, then the actor and the critic are trained by
-``ivy.compile_fn``-compiled iterations (one function per agent holding the losses, gradients
-and optimiser updates of both models).
+Each update uses one segment of ``segment_size`` steps of every worker. Its numbers form one
+function of arrays, :meth:`A2C._update_fn`, compiled with ``ivy.compile_fn`` as a whole
+(``fusion="update"``, what ``"auto"`` chooses where the compiler compiles loops as loops):
+
+1. the critic evaluates the observations and the true next observations;
+2. λ-returns and advantages follow by an ``ivy.scan`` backwards in time, with partial-episode
+   bootstrapping (bootstrapped at time limits, not at terminations); the advantages are
+   standardised and, with ``normalize_returns``, the returns' running moments are updated;
+3. the models are optimised: here one actor step on the whole segment, then ``ivy.scan`` over
+   the critic's mini-batches (PPO and TRPO change this part). The mini-batch orders are an input
+   drawn from the agent's numpy generator, so the compiled function draws nothing.
+
+With ``fusion="steps"`` the same code is compiled piece by piece instead: the critic's values
+as one function, each optimisation step as another, the loops (the returns' scan, the
+mini-batches) running on the host. Compilers that unroll ``ivy.scan`` (``torch.compile``) take
+minutes on a whole update; this level keeps each compiled function one step long. Both levels
+give the same numbers, as does ``compile=False`` (everything eager).
 
 Example:
     >>> agent = A2C(segment_size=128).initialize(env.observation_space, env.action_space,
@@ -13,18 +25,24 @@ Example:
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
 import ivy
+from ivy.nest import multi_map_nest
 from ivy_rl import updaters
 from ivy_rl.agents.agent import Agent
+from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.models import actor_critic
-from ivy_rl.normalizers import MeanStd, ReturnNormalizer
+from ivy_rl.normalizers import MeanStd, ReturnNormalizer, _fold_moments, _standard_deviation
 from ivy_rl.replays import Segment
+from ivy_rl.returns import _lambda_returns
 
 __all__ = ["A2C"]
+
+_TRANSITION_KEYS = ("observations", "next_observations", "rewards", "resets", "terminations")
 
 
 class A2C(Agent):
@@ -49,6 +67,12 @@ class A2C(Agent):
         normalize_observations: normalise observations by their running mean and std.
         normalize_returns: the critic predicts returns normalised by their running mean and std.
         normalize_advantages: standardise the advantages of each segment.
+        fusion: what one compiled function holds: ``'update'`` (the whole update: returns and
+            every optimisation step), ``'steps'`` (the critic's values, and each optimisation
+            step, as separate compiled functions; the loops on the host), or ``'auto'`` (default:
+            ``'update'`` where ``ivy.compile_fn`` compiles ``ivy.scan`` as a loop, ``'steps'``
+            where it unrolls it, as ``torch.compile`` does; see :func:`compiled_scan_unrolls`).
+            Same numbers either way.
 
     Example:
         >>> A2C(segment_size=64, actor_lr=1e-3)
@@ -73,9 +97,11 @@ class A2C(Agent):
         normalize_observations=True,
         normalize_returns=False,
         normalize_advantages=True,
+        fusion="auto",
     )
 
     _unused: tuple[str, ...] = ()
+    _stored_outputs: tuple[str, ...] = ()  # outputs of the acting function the update reads
 
     def __init__(self, **settings: Any) -> None:
         config = {}
@@ -90,6 +116,11 @@ class A2C(Agent):
                 f"{sorted(config)}"
             )
         config.update(settings)
+        if config["fusion"] not in FUSION_LEVELS:
+            raise ValueError(
+                f"{type(self).__name__}: unknown fusion {config['fusion']!r}; choose one of "
+                f"{', '.join(map(repr, FUSION_LEVELS))}"
+            )
         super().__init__(**config)
 
     # ------------------------------------------------------------------------------------------
@@ -99,6 +130,11 @@ class A2C(Agent):
     def _build(self) -> None:
         c = self.config
         xp = self.xp
+        if c["head"] == "deterministic":
+            raise ValueError(
+                f"{type(self).__name__} needs a stochastic policy head (log-probabilities); "
+                "choose 'gaussian' or 'squashed_gaussian'"
+            )
         self.model = actor_critic(
             self.observation_space,
             self.action_space,
@@ -109,14 +145,10 @@ class A2C(Agent):
             head=c["head"],
             log_std_init=c["log_std_init"],
             dtype=self.dtype,
+            device=self.device,
             f=xp,
         )
-        if c["head"] == "deterministic":
-            raise ValueError(
-                f"{type(self).__name__} needs a stochastic policy head (log-probabilities); "
-                "choose 'gaussian' or 'squashed_gaussian'"
-            )
-        self.v = self.model.v
+        self.v = self._placed(self.model.v)
         self.actor_optimizer = ivy.Adam(c["actor_lr"], f=xp)
         self.critic_optimizer = ivy.Adam(c["critic_lr"], f=xp)
         self.optimizer_states = {
@@ -127,11 +159,7 @@ class A2C(Agent):
         self.observation_normalizer = MeanStd((obs_size,)) if c["normalize_observations"] else None
         self.return_normalizer = ReturnNormalizer() if c["normalize_returns"] else None
         self.replay = Segment(
-            c["segment_size"],
-            discount=c["discount"],
-            trace_decay=c["trace_decay"],
-            batch_size=c["batch_size"],
-            batch_iterations=self._passes(),
+            c["segment_size"], batch_size=c["batch_size"], batch_iterations=self._passes()
         )
         self._noise_shape = (
             (int(self.action_space.n),)
@@ -143,30 +171,32 @@ class A2C(Agent):
         self._refresh_stats()
         self._act = self._compile(self._act_fn)
         self._mode = self._compile(self._mode_fn)
-        self._values = self._compile(self._values_fn)
-        self._build_learning()
+        self.fusion = c["fusion"]
+        if self.fusion == "auto":
+            unrolls = self.compiled and compiled_scan_unrolls(f=xp)
+            self.fusion = "steps" if unrolls else "update"
+        self._fused = self.fusion == "update"
+        self._compiled_steps: dict[str, Callable] = {}
+        self._update = self._compile(self._update_fn) if self._fused else self._update_fn
 
     def _passes(self) -> int:
         """Passes over a segment per update."""
         return self.config["critic_iterations"]
 
-    def _build_learning(self) -> None:
-        self._train_actor_critic = self._compile(self._actor_critic_iteration)
-        self._train_critic = self._compile(self._critic_iteration)
-
     def _refresh_stats(self) -> None:
-        """The normalisers' statistics as arrays of the framework, for the model's calls."""
-        xp = self.xp
-
-        def convert(norm):
-            if norm is None:
-                return None
-            return {k: xp.asarray(a) for k, a in norm.stats(self.dtype).items()}
-
+        """The observation statistics as arrays of the framework, for the models' calls."""
+        norm = self.observation_normalizer
         self.stats = {
-            "obs": convert(self.observation_normalizer),
-            "ret": convert(self.return_normalizer),
+            "obs": None
+            if norm is None
+            else {k: self._asarray(a) for k, a in norm.stats(self.dtype).items()}
         }
+
+    def _return_moments(self) -> dict[str, Any] | None:
+        norm = self.return_normalizer
+        if norm is None:
+            return None
+        return {k: self._asarray(a) for k, a in norm.moments(self.dtype).items()}
 
     # ------------------------------------------------------------------------------------------
     # Pure functions (compiled)
@@ -176,25 +206,145 @@ class A2C(Agent):
         dist = self.model.actor(observations, obs_stats, v=actor_v)
         raw = dist.sample_raw(noise)
         out = {"actions": raw, "log_probs": dist.log_prob_raw(raw), "unit": dist.raw_to_action(raw)}
-        out.update({f"dist_{k}": p for k, p in dist.params().items()})
+        if "dist" in self._stored_outputs:
+            out.update({f"dist_{k}": p for k, p in dist.params().items()})
         return out
 
     def _mode_fn(self, actor_v, obs_stats, observations):
         return self.model.actor(observations, obs_stats, v=actor_v).mode()
 
-    def _values_fn(self, critic_v, stats, observations):
-        return self.model.critic(observations, stats["obs"], stats["ret"], v=critic_v)
+    def _update_fn(self, v, states, obs_stats, return_moments, segment, orders):
+        """The whole update: ``(v, states, return_moments, logs)`` after learning from the
+        segment (arrays ``[time, workers, ...]``) with the mini-batches ``orders``."""
+        batch, return_moments, return_stats = self._prepare(
+            v["critic"], obs_stats, return_moments, segment
+        )
+        stats = {"obs": obs_stats, "ret": return_stats}
+        v, states, logs = self._optimize(v, states, stats, batch, orders)
+        return v, states, return_moments, logs
+
+    def _prepare(self, critic_v, obs_stats, return_moments, segment):
+        """Values, λ-returns and advantages of a segment, flattened to ``[time * workers]``
+        (index ``t * workers + w``), and the return statistics updated with the new returns.
+
+        Returns:
+            ``(batch, return_moments, return_stats)``; the batch holds constants: on tensorflow
+            ``execute_with_gradients`` differentiates every tensor computed from the watched
+            variables (by identity, even one captured in a closure), so values computed from the
+            critic's variables pass through ``stop_gradient`` to stay targets, as they are on
+            torch and jax.
+        """
+        xp, c = self.xp, self.config
+        rewards = segment["rewards"]
+        steps, workers = tuple(rewards.shape)
+        size = steps * workers
+        observations = xp.reshape(segment["observations"], (size, -1))
+        following = xp.reshape(segment["next_observations"], (size, -1))
+        return_stats = self._moment_stats(return_moments)
+        values = self._run_once(
+            "critic_values",
+            self._critic_values,
+            critic_v,
+            obs_stats,
+            return_stats,
+            xp.concat([observations, following], axis=0),
+        )
+        current = xp.reshape(values[:size], (steps, workers))
+        next_values = xp.reshape(values[size:], (steps, workers))
+        returns = _lambda_returns(
+            xp,
+            rewards,
+            next_values,
+            segment["resets"],
+            segment["terminations"],
+            c["discount"],
+            c["trace_decay"],
+        )
+        advantages = xp.reshape(returns - current, (size,))
+        returns = xp.reshape(returns, (size,))
+        if c["normalize_advantages"]:
+            centred = advantages - xp.mean(advantages)
+            advantages = xp.safe_divide(centred, xp.std(advantages))
+        if return_moments is not None:
+            count, mean, mean_sq = _fold_moments(
+                return_moments["count"],
+                return_moments["mean"],
+                return_moments["mean_sq"],
+                float(size),
+                xp.sum(returns),
+                xp.sum(xp.square(returns)),
+            )
+            return_moments = {"count": count, "mean": mean, "mean_sq": mean_sq}
+            return_stats = self._moment_stats(return_moments)
+        batch = {"observations": observations, "returns": returns, "advantages": advantages}
+        for key, value in segment.items():
+            if key not in _TRANSITION_KEYS:
+                batch[key] = xp.reshape(value, (size, *tuple(value.shape)[2:]))
+        return batch, return_moments, return_stats
+
+    def _critic_values(self, critic_v, obs_stats, return_stats, observations):
+        values = self.model.critic(observations, obs_stats, return_stats, v=critic_v)
+        return self.xp.stop_gradient(values)
+
+    def _moment_stats(self, moments):
+        if moments is None:
+            return None
+        eps = self.return_normalizer.epsilon
+        std = _standard_deviation(self.xp, moments["mean"], moments["mean_sq"], eps)
+        return {"mean": moments["mean"], "std": std}
+
+    def _optimize(self, v, states, stats, batch, orders):
+        """A2C: one actor step on the whole segment, then the critic's mini-batches."""
+        (actor_v, actor_state), actor_logs = self._run_once(
+            "actor_step", self._actor_step, (v["actor"], states["actor"]), stats, batch
+        )
+        (critic_v, critic_state), critic_logs = self._run_critic(v, states, stats, batch, orders)
+        logs = {f"actor/{k}": x for k, x in actor_logs.items()}
+        logs.update(critic_logs)
+        new_v = {"actor": actor_v, "critic": critic_v}
+        return new_v, {"actor": actor_state, "critic": critic_state}, logs
+
+    def _run_critic(self, v, states, stats, batch, orders):
+        carry, ys = self._run_loop(
+            "critic_step",
+            self._critic_step,
+            (v["critic"], states["critic"]),
+            orders,
+            stats,
+            batch,
+        )
+        return carry, {"critic/loss": self.xp.mean(ys["loss"])}
+
+    def _actor_step(self, carry, stats, batch):
+        actor_v, state = carry
+        actor_v, state, infos = self._minimize(
+            "actor", lambda w: self._actor_loss(w, stats, batch), actor_v, state
+        )
+        return (actor_v, state), infos
+
+    def _critic_step(self, carry, indices, stats, batch):
+        critic_v, state = carry
+        part = self._select(batch, indices, ("observations", "returns"))
+        critic_v, state, infos = self._minimize(
+            "critic", lambda w: self._critic_loss(w, stats, part), critic_v, state
+        )
+        return (critic_v, state), {"loss": infos["loss"]}
 
     def _minimize(self, name, loss_fn, v, state):
-        """Gradients of ``loss_fn`` (returning ``(loss, infos)``), clipped, and an Adam step."""
+        """Gradients of ``loss_fn`` (returning ``loss`` or ``(loss, infos)``), clipped, and an
+        Adam step."""
         xp = self.xp
         optimizer = self.actor_optimizer if name == "actor" else self.critic_optimizer
-        loss, grads, infos = xp.execute_with_gradients(loss_fn, v)
+        loss, grads, *aux = xp.execute_with_gradients(loss_fn, v)
         clip = self.config["gradient_clip"]
         if clip:
             grads = xp.clip_by_global_norm(grads, clip)[0]
         new_v, new_state = optimizer.step(v, grads, state)
-        return new_v, new_state, {"loss": loss, **infos}
+        return new_v, new_state, {"loss": loss, **(aux[0] if aux else {})}
+
+    def _masked(self, keep, new, old):
+        """``new`` where the scalar ``keep`` is true, else ``old``, leaf by leaf."""
+        return multi_map_nest(lambda a, b: self.xp.where(keep, a, b), new, old)
 
     def _critic_loss(self, critic_v, stats, batch):
         xp = self.xp
@@ -202,7 +352,7 @@ class A2C(Agent):
         if stats["ret"] is not None:
             targets = (targets - stats["ret"]["mean"]) / stats["ret"]["std"]
         predictions = self.model.critic.normalized(critic_v, batch["observations"], stats["obs"])
-        return updaters.value_loss(xp, predictions, targets), {}
+        return updaters.value_loss(xp, predictions, targets)
 
     def _actor_loss(self, actor_v, stats, batch):
         dist = self.model.actor(batch["observations"], stats["obs"], v=actor_v)
@@ -210,37 +360,37 @@ class A2C(Agent):
             self.xp, dist, batch["actions"], batch["advantages"], self.config["entropy_coeff"]
         )
 
-    def _select(self, batch, indices):
+    def _select(self, batch, indices, keys):
+        return {k: self.xp.take(batch[k], indices, axis=0) for k in keys}
+
+    # ------------------------------------------------------------------------------------------
+    # The fusion levels: inside the one compiled update, or step by step from the host
+    # ------------------------------------------------------------------------------------------
+
+    def _step_function(self, name: str, fn: Callable) -> Callable:
+        if name not in self._compiled_steps:
+            self._compiled_steps[name] = self._compile(fn)
+        return self._compiled_steps[name]
+
+    def _run_once(self, name, fn, carry, *consts):
+        """``fn(carry, *consts)``: inline in the fused update, else its own compiled function."""
+        if self._fused:
+            return fn(carry, *consts)
+        return self._step_function(name, fn)(carry, *consts)
+
+    def _run_loop(self, name, body, carry, xs, *consts):
+        """``ivy.scan`` of ``body(carry, x, *consts)`` over the rows of ``xs``: inside the fused
+        update, or as a host loop over ``body`` compiled on its own (``fusion='steps'``)."""
         xp = self.xp
-        return {k: xp.take(a, indices, axis=0) for k, a in batch.items()}
-
-    def _critic_iteration(self, v, states, stats, batch, indices):
-        part = self._select(batch, indices)
-        critic_v, critic_state, infos = self._minimize(
-            "critic",
-            lambda w: self._critic_loss(w, stats, part),
-            v["critic"],
-            states["critic"],
-        )
-        new_v = {"actor": v["actor"], "critic": critic_v}
-        new_states = {"actor": states["actor"], "critic": critic_state}
-        return new_v, new_states, {f"critic/{k}": x for k, x in infos.items()}
-
-    def _actor_critic_iteration(self, v, states, stats, batch, indices):
-        part = self._select(batch, indices)
-        actor_v, actor_state, actor_infos = self._minimize(
-            "actor", lambda w: self._actor_loss(w, stats, part), v["actor"], states["actor"]
-        )
-        critic_v, critic_state, critic_infos = self._minimize(
-            "critic",
-            lambda w: self._critic_loss(w, stats, part),
-            v["critic"],
-            states["critic"],
-        )
-        infos = {f"actor/{k}": x for k, x in actor_infos.items()}
-        infos.update({f"critic/{k}": x for k, x in critic_infos.items()})
-        new_v = {"actor": actor_v, "critic": critic_v}
-        return new_v, {"actor": actor_state, "critic": critic_state}, infos
+        steps = int(xs.shape[0])
+        if self._fused or steps == 0:
+            return xp.scan(lambda c, x: body(c, x, *consts), carry, xs)
+        step = self._step_function(name, body)
+        ys = []
+        for i in range(steps):
+            carry, y = step(carry, xs[i], *consts)
+            ys.append(y)
+        return carry, {k: xp.stack([y[k] for y in ys]) for k in ys[0]}
 
     # ------------------------------------------------------------------------------------------
     # Acting
@@ -257,21 +407,19 @@ class A2C(Agent):
         xp = self.xp
         obs = self._observations(observations)
         noise = self._noise(obs.shape[0])
-        out = self._act(self.v["actor"], self.stats["obs"], xp.asarray(obs), xp.asarray(noise))
+        out = self._act(
+            self.v["actor"], self.stats["obs"], self._asarray(obs), self._asarray(noise)
+        )
         out = {k: np.asarray(xp.to_numpy(a)) for k, a in out.items()}
-        self._pending = {
-            "observations": obs,
-            "actions": out["actions"],
-            "log_probs": out["log_probs"],
-            **{k: a for k, a in out.items() if k.startswith("dist_")},
-        }
-        return self._env_actions(out["unit"])
+        unit = out.pop("unit")
+        self._pending = {"observations": obs, **out}
+        return self._env_actions(unit)
 
     def test_step(self, observations: Any) -> np.ndarray:
         self._check_initialized()
         xp = self.xp
         obs = self._observations(observations)
-        mode = self._mode(self.v["actor"], self.stats["obs"], xp.asarray(obs))
+        mode = self._mode(self.v["actor"], self.stats["obs"], self._asarray(obs))
         return self._env_actions(np.asarray(xp.to_numpy(mode)))
 
     # ------------------------------------------------------------------------------------------
@@ -300,67 +448,53 @@ class A2C(Agent):
         self.updates += 1
         return logs
 
-    def _evaluate(self) -> None:
-        """Values of the segment's observations and next observations, then the returns."""
-        xp = self.xp
-        b = self.replay.buffers
-        size, workers = b["rewards"].shape
-        obs = np.concatenate(
-            [
-                b["observations"].reshape(size * workers, -1),
-                b["next_observations"].reshape(size * workers, -1),
-            ]
-        )
-        values = np.asarray(
-            xp.to_numpy(self._values(self.v["critic"], self.stats, xp.asarray(obs)))
-        )
-        values = values.astype(np.float64)
-        self.replay.compute_returns(values[: size * workers], values[size * workers :])
-        if self.return_normalizer is not None:
-            self.return_normalizer.record(b["returns"])
-            self.return_normalizer.update()
-            self._refresh_stats()
+    def _segment_keys(self) -> list[str]:
+        keys = [*_TRANSITION_KEYS, "actions"]
+        if "log_probs" in self._stored_outputs:
+            keys.append("log_probs")
+        if "dist" in self._stored_outputs:
+            keys += sorted(k for k in self.replay.buffers if k.startswith("dist_"))
+        return keys
 
-    def _device_batch(self, *keys: str) -> dict[str, Any]:
-        xp = self.xp
-        full = self.replay.get_full(*keys, normalize_advantages=self.config["normalize_advantages"])
+    def _segment(self) -> dict[str, Any]:
+        """The segment's buffers the update reads, as arrays of the framework: floats in the
+        model's dtype, integers as int32 (jax without 64-bit types has no int64)."""
         out = {}
-        for key, value in full.items():
+        for key in self._segment_keys():
+            value = self.replay.buffers[key]
             if value.dtype.kind == "f":
                 value = value.astype(self.np_dtype)
             elif value.dtype.kind in "iu":
-                value = value.astype(np.int32)  # jax without 64-bit types has no int64
-            out[key] = xp.asarray(value)
+                value = value.astype(np.int32)
+            out[key] = self._asarray(value)
         return out
 
-    def _all_indices(self) -> Any:
-        return self.xp.asarray(np.arange(self.replay.size * self.replay.workers, dtype=np.int32))
-
     def _learn(self) -> dict[str, float]:
-        self._evaluate()
-        batch = self._device_batch("observations", "actions", "advantages", "returns")
-        logs = _Logs()
-        v, states = self.v, self.optimizer_states
-        v, states, infos = self._train_actor_critic(
-            v, states, self.stats, batch, self._all_indices()
+        xp = self.xp
+        orders = self.replay.batch_orders(self.rng)
+        v, states, moments, logs = self._update(
+            self.v,
+            self.optimizer_states,
+            self.stats["obs"],
+            self._return_moments(),
+            self._segment(),
+            self._asarray(orders),
         )
-        logs.add(infos)
-        for indices in self.replay.batch_indices(self.rng):
-            idx = (
-                self._all_indices()
-                if indices is None
-                else self.xp.asarray(indices.astype(np.int32))
-            )
-            v, states, infos = self._train_critic(v, states, self.stats, batch, idx)
-            logs.add(infos)
         self.v, self.optimizer_states = v, states
-        self._after_learning()
-        return logs.means(self.xp)
-
-    def _after_learning(self) -> None:
+        if moments is not None:
+            self.return_normalizer.set_moments(
+                **{k: np.asarray(xp.to_numpy(a)) for k, a in moments.items()}
+            )
+        out = {k: float(np.asarray(xp.to_numpy(x))) for k, x in logs.items()}
+        out.update(self._iteration_counts(len(orders)))
         if self.observation_normalizer is not None:
             self.observation_normalizer.update()
         self._refresh_stats()
+        return out
+
+    def _iteration_counts(self, batches: int) -> dict[str, float]:
+        """Optimisation steps of an update known on the host (logged with the losses)."""
+        return {"actor/iterations": 1.0, "critic/iterations": float(batches)}
 
     # ------------------------------------------------------------------------------------------
     # Checkpoints
@@ -395,22 +529,3 @@ class A2C(Agent):
 
     def _load_meta(self, meta: dict[str, Any]) -> None:
         self.updates = int(meta.get("updates", 0))
-
-
-class _Logs:
-    """Per-iteration scalars of an update, kept on the device until the update ends."""
-
-    def __init__(self) -> None:
-        self.values: dict[str, list] = {}
-
-    def add(self, infos: dict[str, Any]) -> None:
-        for key, value in infos.items():
-            self.values.setdefault(key, []).append(value)
-
-    def means(self, xp: Any) -> dict[str, float]:
-        out = {}
-        for key, values in self.values.items():
-            out[key] = float(np.mean([np.asarray(xp.to_numpy(x)) for x in values]))
-            prefix = key.split("/")[0]
-            out.setdefault(f"{prefix}/iterations", float(len(values)))
-        return out

@@ -28,7 +28,7 @@ import numpy as np
 import ivy
 from ivy.stateful.checkpoint import flat_dict_to_nest, nest_to_flat_dict
 from ivy.typing import Framework, Nest
-from ivy_rl.models import space_kind
+from ivy_rl.models import check_observation_space, space_kind
 
 __all__ = ["Agent"]
 
@@ -65,6 +65,7 @@ class Agent:
         f: Framework = None,
         dtype: str = "float32",
         compile: bool = True,
+        device: str | None = None,
     ) -> Agent:
         """Build the agent's models, optimisers and replay for the spaces, on a framework.
 
@@ -77,6 +78,7 @@ class Agent:
             dtype: float dtype of the models (``'float32'`` or ``'float64'``).
             compile: compile the agent's functions with ``ivy.compile_fn`` (False: eager, for
                 debugging).
+            device: where the agent's arrays live (``'cpu'``, ``'gpu:0'``; default ``'cpu'``).
 
         Returns:
             The agent itself.
@@ -86,6 +88,8 @@ class Agent:
         """
         name = type(self).__name__
         self.action_kind = space_kind(action_space, self.supported_action_spaces, who=name)
+        if self.learns:
+            check_observation_space(observation_space, who=name)
         if f is None:
             f = ivy.current_framework() or "numpy"
         self.xp = ivy.get_framework(f=f)
@@ -101,6 +105,7 @@ class Agent:
         self.seed = int(seed)
         self.compiled = bool(compile)
         self.rng = np.random.default_rng(self.seed)
+        self.device = "cpu" if device is None else device
         if self.action_kind == "Box":
             low, high = action_space.low.astype(np.float64), action_space.high.astype(np.float64)
             bounded = bool(np.all(np.isfinite(low)) and np.all(np.isfinite(high)))
@@ -250,9 +255,23 @@ class Agent:
                     f"checkpoint array {path} of shape {np.shape(new)} does not fit "
                     f"{tuple(xp.shape(old))}"
                 )
-            return xp.asarray(new, dtype=xp.dtype(old))
+            return xp.asarray(new, dtype=xp.dtype(old), device=self.device)
 
         return rebuild(like, stored, "")
+
+    def _asarray(self, value: Any) -> Any:
+        """``value`` as an array of the framework on the agent's device.
+
+        Every array an agent makes is placed explicitly, so that every input of its compiled
+        functions is placed alike from the first call on: jax.jit compiles once per pattern of
+        explicitly placed (committed) and unplaced inputs, and the outputs of compiled
+        functions come back placed.
+        """
+        return self.xp.asarray(value, device=self.device)
+
+    def _placed(self, nest: Nest) -> Nest:
+        """The arrays of ``nest`` placed on the agent's device (see :meth:`_asarray`)."""
+        return ivy.nest.map_nest(self._asarray, nest)
 
     def __repr__(self) -> str:
         where = f", f={self.xp.backend}" if self.xp is not None else ""

@@ -1,5 +1,11 @@
 """PPO: proximal policy optimisation with the clipped surrogate and a KL early stop.
 
+The whole update is one compiled function by default (see :mod:`ivy_rl.agents.a2c`): the
+returns, then an ``ivy.scan`` over the mini-batches of every epoch, each step training the actor
+and the critic. The KL early stop is a mask carried through the scan: once a mini-batch's KL
+estimate exceeds ``kl_threshold``, the remaining actor steps leave the actor and its optimiser
+state unchanged (the critic goes on).
+
 Example:
     >>> agent = PPO(segment_size=32, batch_size=256, epochs=20).initialize(
     ...     env.observation_space, env.action_space, seed=0, f="jax")
@@ -10,9 +16,11 @@ from __future__ import annotations
 from typing import Any
 
 from ivy_rl import updaters
-from ivy_rl.agents.a2c import A2C, _Logs
+from ivy_rl.agents.a2c import A2C
 
 __all__ = ["PPO"]
+
+_ACTOR_LOGS = ("loss", "kl", "clip_fraction", "entropy")
 
 
 class PPO(A2C):
@@ -34,6 +42,7 @@ class PPO(A2C):
     """
 
     _unused = ("critic_iterations",)
+    _stored_outputs = ("log_probs",)
     _defaults: dict[str, Any] = dict(
         segment_size=2048,
         batch_size=64,
@@ -58,23 +67,44 @@ class PPO(A2C):
             self.config["entropy_coeff"],
         )
 
-    def _learn(self) -> dict[str, float]:
+    def _optimize(self, v, states, stats, batch, orders):
         xp = self.xp
-        self._evaluate()
-        batch = self._device_batch("observations", "actions", "advantages", "returns", "log_probs")
+        carry = (v, states, self._asarray(True))
+        (v, states, _), ys = self._run_loop("ppo_step", self._ppo_step, carry, orders, stats, batch)
+        # the actor's scalars are averaged over the steps it took
+        taken = ys["actor/taken"]
+        count = xp.sum(taken)
+        logs = {
+            f"actor/{k}": xp.sum(ys[f"actor/{k}"] * taken) / xp.maximum(count, 1.0)
+            for k in _ACTOR_LOGS
+        }
+        logs["actor/iterations"] = count
+        logs["critic/loss"] = xp.mean(ys["critic/loss"])
+        return v, states, logs
+
+    def _ppo_step(self, carry, indices, stats, batch):
+        """One mini-batch: an actor step (masked once the KL stop has fired) and a critic step."""
+        v, states, active = carry
+        keys = ("observations", "actions", "log_probs", "advantages", "returns")
+        part = self._select(batch, indices, keys)
+        actor_v, actor_state, actor_infos = self._minimize(
+            "actor", lambda w: self._actor_loss(w, stats, part), v["actor"], states["actor"]
+        )
         threshold = self.config["kl_threshold"]
-        logs = _Logs()
-        v, states = self.v, self.optimizer_states
-        train_actor = True
-        for indices in self.replay.batch_indices(self.rng):
-            idx = self._all_indices() if indices is None else xp.asarray(indices.astype("int32"))
-            if train_actor:
-                v, states, infos = self._train_actor_critic(v, states, self.stats, batch, idx)
-                if threshold is not None:
-                    train_actor = float(xp.to_numpy(infos["actor/kl"])) <= threshold
-            else:
-                v, states, infos = self._train_critic(v, states, self.stats, batch, idx)
-            logs.add(infos)
-        self.v, self.optimizer_states = v, states
-        self._after_learning()
-        return logs.means(xp)
+        if threshold is not None:
+            actor_v = self._masked(active, actor_v, v["actor"])
+            actor_state = self._masked(active, actor_state, states["actor"])
+        critic_v, critic_state, critic_infos = self._minimize(
+            "critic", lambda w: self._critic_loss(w, stats, part), v["critic"], states["critic"]
+        )
+        ys = {f"actor/{k}": actor_infos[k] for k in _ACTOR_LOGS}
+        ys["actor/taken"] = self.xp.astype(active, actor_infos["loss"].dtype)
+        ys["critic/loss"] = critic_infos["loss"]
+        if threshold is not None:  # the KL before this step's update decides the next steps
+            active = self.xp.logical_and(active, actor_infos["kl"] <= threshold)
+        new_v = {"actor": actor_v, "critic": critic_v}
+        new_states = {"actor": actor_state, "critic": critic_state}
+        return (new_v, new_states, active), ys
+
+    def _iteration_counts(self, batches: int) -> dict[str, float]:
+        return {"critic/iterations": float(batches)}  # the actor's count is computed

@@ -1,5 +1,9 @@
 """TRPO: trust region policy optimisation, a natural gradient step per segment.
 
+The whole update is one compiled function by default (see :mod:`ivy_rl.agents.a2c`): the
+returns, the trust-region step of the actor (conjugate gradient and line search, unrolled), then
+an ``ivy.scan`` over the critic's mini-batches.
+
 Example:
     >>> agent = TRPO(max_kl=0.01).initialize(env.observation_space, env.action_space, f="jax")
 """
@@ -9,7 +13,7 @@ from __future__ import annotations
 from typing import Any
 
 from ivy_rl import updaters
-from ivy_rl.agents.a2c import A2C, _Logs
+from ivy_rl.agents.a2c import A2C
 
 __all__ = ["TRPO"]
 
@@ -19,6 +23,10 @@ class TRPO(A2C):
     takes the natural gradient step of the importance-sampled surrogate within a KL trust
     region (conjugate gradient on Fisher-vector products, backtracking line search); the
     critic then regresses the λ-returns for ``critic_iterations`` passes.
+
+    The old policy of the KL is rebuilt from the distribution parameters stored when acting
+    (not recomputed from the actor's variables), so it is a constant of the step on every
+    backend.
 
     Args:
         max_kl: the trust region's radius δ (mean KL between the old and new policies).
@@ -32,6 +40,7 @@ class TRPO(A2C):
         >>> TRPO(max_kl=0.01, cg_steps=10, backtrack_steps=10)
     """
 
+    _stored_outputs = ("log_probs", "dist")
     _defaults: dict[str, Any] = dict(
         max_kl=0.01,
         cg_steps=10,
@@ -40,32 +49,39 @@ class TRPO(A2C):
         backtrack_coefficient=0.8,
     )
 
-    def _build_learning(self) -> None:
-        self._train_actor_critic = self._compile(self._trust_region_iteration)
-        self._train_critic = self._compile(self._critic_iteration)
+    def _optimize(self, v, states, stats, batch, orders):
+        actor_v, actor_logs = self._run_once(
+            "trust_region_step", self._trust_region_step, v["actor"], stats, batch
+        )
+        (critic_v, critic_state), critic_logs = self._run_critic(v, states, stats, batch, orders)
+        logs = {f"actor/{k}": x for k, x in actor_logs.items()}
+        logs.update(critic_logs)
+        new_v = {"actor": actor_v, "critic": critic_v}
+        return new_v, {"actor": states["actor"], "critic": critic_state}, logs
 
-    def _trust_region_iteration(self, v, states, stats, batch, indices):
+    def _trust_region_step(self, actor_v, stats, batch):
         xp = self.xp
         c = self.config
-        part = self._select(batch, indices)
-        obs = part["observations"]
-        old = self.model.actor(obs, stats["obs"], v=v["actor"])
-        old = old.like({k[len("dist_") :]: a for k, a in part.items() if k.startswith("dist_")})
+        obs = batch["observations"]
+        current = self.model.actor(obs, stats["obs"], v=actor_v)
+        old = current.like(
+            {k[len("dist_") :]: a for k, a in batch.items() if k.startswith("dist_")}
+        )
 
-        def surrogate(actor_v):
-            dist = self.model.actor(obs, stats["obs"], v=actor_v)
-            ratios = xp.exp(dist.log_prob_raw(part["actions"]) - part["log_probs"])
-            loss = -xp.mean(ratios * part["advantages"])
+        def surrogate(w):
+            dist = self.model.actor(obs, stats["obs"], v=w)
+            ratios = xp.exp(dist.log_prob_raw(batch["actions"]) - batch["log_probs"])
+            loss = -xp.mean(ratios * batch["advantages"])
             if c["entropy_coeff"]:
                 loss = loss - c["entropy_coeff"] * xp.mean(dist.entropy())
             return loss
 
-        def kl(actor_v):
-            return xp.mean(old.kl(self.model.actor(obs, stats["obs"], v=actor_v)))
+        def kl(w):
+            return xp.mean(old.kl(self.model.actor(obs, stats["obs"], v=w)))
 
-        actor_v, actor_infos = updaters.trust_region_step(
+        return updaters.trust_region_step(
             xp,
-            v["actor"],
+            actor_v,
             surrogate,
             kl,
             max_kl=c["max_kl"],
@@ -74,29 +90,3 @@ class TRPO(A2C):
             backtrack_steps=c["backtrack_steps"],
             backtrack_coefficient=c["backtrack_coefficient"],
         )
-        new_v, new_states, infos = self._critic_iteration(
-            {"actor": actor_v, "critic": v["critic"]}, states, stats, batch, indices
-        )
-        infos.update({f"actor/{k}": x for k, x in actor_infos.items()})
-        return new_v, new_states, infos
-
-    def _learn(self) -> dict[str, float]:
-        self._evaluate()
-        keys = ["observations", "actions", "advantages", "returns", "log_probs"]
-        keys += [k for k in self.replay.buffers if k.startswith("dist_")]
-        batch = self._device_batch(*keys)
-        logs = _Logs()
-        v, states = self.v, self.optimizer_states
-        v, states, infos = self._train_actor_critic(
-            v, states, self.stats, batch, self._all_indices()
-        )
-        logs.add({k: x for k, x in infos.items() if k.startswith("actor/")})
-        for indices in self.replay.batch_indices(self.rng):
-            idx = (
-                self._all_indices() if indices is None else self.xp.asarray(indices.astype("int32"))
-            )
-            v, states, infos = self._train_critic(v, states, self.stats, batch, idx)
-            logs.add(infos)
-        self.v, self.optimizer_states = v, states
-        self._after_learning()
-        return logs.means(self.xp)

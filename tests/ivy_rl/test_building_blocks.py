@@ -86,33 +86,54 @@ def test_mean_std_matches_numpy_over_several_updates():
         norm.record(np.ones((3, 2)))
 
 
-def test_segment_stores_returns_and_minibatches():
-    seg = replays.Segment(4, discount=0.9, trace_decay=0.5, batch_size=3, batch_iterations=2)
+def test_segment_stores_steps_and_draws_minibatch_orders():
+    seg = replays.Segment(4, batch_size=3, batch_iterations=2)
     for t in range(4):
+        assert not seg.ready()
         seg.store(
             observations=np.full((2, 1), t, np.float32),
             rewards=np.ones(2),
             resets=np.array([t == 1, False]),
-            terminations=np.array([t == 1, False]),
         )
-    assert seg.ready()
-    values, next_values = np.zeros((4, 2)), np.ones((4, 2))
-    seg.compute_returns(values, next_values)
-    expected = ivy_rl_lambda(
-        np.ones((4, 2)), next_values, seg.buffers["resets"], seg.buffers["terminations"]
+    assert seg.ready() and seg.workers == 2
+    np.testing.assert_array_equal(
+        seg.buffers["observations"][:, :, 0], [[0, 0], [1, 1], [2, 2], [3, 3]]
     )
-    np.testing.assert_allclose(seg.buffers["returns"], expected)
-    batch = seg.get_full("observations", "advantages")
-    assert batch["observations"].shape == (8, 1)
-    np.testing.assert_allclose(batch["advantages"].mean(), 0.0, atol=1e-12)
-    batches = list(seg.batch_indices(np.random.default_rng(0)))
-    assert len(batches) == 4 and all(len(b) == 3 for b in batches)  # 2 passes of 2 full batches
+    with pytest.raises(RuntimeError, match="full"):
+        seg.store(observations=np.zeros((2, 1)), rewards=np.ones(2), resets=np.zeros(2, bool))
+    # two passes over the 8 transitions, each a permutation cut into 2 full batches of 3
+    orders = seg.batch_orders(np.random.default_rng(0))
+    rng = np.random.default_rng(0)
+    expected = [p[:6].reshape(2, 3) for p in (rng.permutation(8), rng.permutation(8))]
+    np.testing.assert_array_equal(orders, np.concatenate(expected))
+    assert orders.dtype == np.int32
+    whole = replays.Segment(4, batch_size=None, batch_iterations=3)
+    for _ in range(4):
+        whole.store(rewards=np.ones(2))
+    np.testing.assert_array_equal(whole.batch_orders(rng), np.tile(np.arange(8), (3, 1)))
+    state = seg.state_dict()
+    other = replays.Segment(4)
+    other.load_state_dict(state)
+    np.testing.assert_array_equal(other.buffers["resets"], seg.buffers["resets"])
+    assert other.ready()
 
 
-def ivy_rl_lambda(r, nv, resets, terms):
-    import ivy_rl
-
-    return ivy_rl.lambda_returns(r, nv, resets, terms, discount=0.9, trace_decay=0.5)
+def test_return_moments_fold_as_the_host_normalizer_does():
+    data = RNG.normal(3.0, 2.0, size=(2, 40))
+    host = normalizers.ReturnNormalizer()
+    folded = normalizers.ReturnNormalizer()
+    for part in data:
+        host.record(part)
+        host.update()
+        m = folded.moments("float64")
+        count, mean, mean_sq = normalizers._fold_moments(
+            m["count"], m["mean"], m["mean_sq"], part.size, part.sum(), np.square(part).sum()
+        )
+        folded.set_moments(count, mean, mean_sq)
+    assert folded.count == host.count == 80
+    np.testing.assert_allclose(folded.mean, data.mean(), rtol=1e-12)
+    np.testing.assert_allclose(folded.std, data.std(), rtol=1e-10)
+    np.testing.assert_allclose(folded.std, host.std, rtol=1e-12)
 
 
 @pytest.mark.parametrize(

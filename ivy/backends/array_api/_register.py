@@ -19,8 +19,8 @@ _NEVER_BRIDGED = frozenset(
         "fori_loop",
         "while_loop",
         "cond",
-        "execute_with_gradients",
-        "execute_with_jacobian",
+        "value_and_grad_native",
+        "jacobian_native",
         "compile_native",
     }
 )

@@ -16,11 +16,11 @@ def _no_autodiff(name: str) -> UnsupportedError:
     )
 
 
-def execute_with_gradients(func, xs, *, retain_grads=False):
+def value_and_grad_native(fn, xs, /, *, retain_grads=False):
     raise _no_autodiff("execute_with_gradients")
 
 
-def execute_with_jacobian(func, x, *, batch_dims=None, retain_grads=False):
+def jacobian_native(fn, x, /, *, retain_grads=False):
     raise _no_autodiff("execute_with_jacobian")
 
 

@@ -1,17 +1,16 @@
-"""numpy backend: convolutions, channel-last, as explicit sliding windows.
+"""numpy backend: the one convolution, channel-last, as explicit sliding windows.
 
-Each one loops over the kernel's offsets (9 for a 3x3 kernel) and adds one matrix product of a
-strided view of the padded input per offset: numpy has no convolution of its own.
+It loops over the kernel's offsets (9 for a 3x3 kernel) and adds one matrix product of a strided
+view of the padded input per offset: numpy has no convolution of its own. A transposed
+convolution scatters the same products into its full result, which is then cropped.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from ivy.backends import _nn_args as A
 
-
-def _windows(offset, dilations, strides, out_sizes):
+def windows(offset, dilations, strides, out_sizes):
     """Index of the strided view of the padded input that kernel tap ``offset`` multiplies."""
     return (slice(None),) + tuple(
         slice(j * d, j * d + (o - 1) * s + 1, s)
@@ -19,100 +18,40 @@ def _windows(offset, dilations, strides, out_sizes):
     )
 
 
-def _flatten_batch(x, nd):
-    lead = x.shape[: x.ndim - nd - 1]
-    return x.reshape((-1,) + x.shape[x.ndim - nd - 1 :]), lead
+def _grouped(patch, w, groups):
+    """``patch`` ``[..., C_in]`` times the filter tap ``w`` ``[C_in / groups, C_out]``."""
+    if groups == 1:
+        return patch @ w
+    per_in, out = w.shape
+    if per_in == 1 and out == groups:  # depthwise, multiplier 1
+        return patch * w[0]
+    w = w.reshape(per_in, groups, out // groups).transpose(1, 0, 2)
+    patch = patch.reshape(*patch.shape[:-1], groups, per_in)
+    return np.einsum("...gi,gio->...go", patch, w).reshape(*patch.shape[:-2], out)
 
 
-def _conv(x, filters, strides, padding, dilations, nd, fn):
+def conv_general(x, filters, strides, padding, dilations, /, *, groups=1, transpose=False):
     x, filters = np.asarray(x), np.asarray(filters)
-    A.check_conv(x.shape, filters.shape, nd, fn)
+    nd = len(strides)
     kernel = filters.shape[:nd]
-    s = A.as_tuple(strides, nd, "strides", fn)
-    d = A.as_tuple(dilations, nd, "dilations", fn)
-    x, lead = _flatten_batch(x, nd)
-    windows = A.effective_windows(kernel, d)
-    pads = A.explicit_pads(A.parse_padding(padding, nd, fn), x.shape[1:-1], windows, s)
-    out_sizes = A.output_sizes(x.shape[1:-1], windows, s, pads, fn)
-    xp = np.pad(x, ((0, 0), *pads, (0, 0)))
-    out = np.zeros((x.shape[0], *out_sizes, filters.shape[-1]), np.result_type(x, filters))
-    for offset in np.ndindex(*kernel):
-        out += xp[_windows(offset, d, s, out_sizes)] @ filters[offset]
-    return out.reshape(lead + out.shape[1:])
-
-
-def _conv_transpose(x, filters, strides, padding, output_shape, dilations, nd, fn):
-    x, filters = np.asarray(x), np.asarray(filters)
-    A.check_conv(x.shape, filters.shape, nd, fn, transpose=True)
-    kernel = filters.shape[:nd]
-    s = A.as_tuple(strides, nd, "strides", fn)
-    d = A.as_tuple(dilations, nd, "dilations", fn)
-    x, lead = _flatten_batch(x, nd)
-    sizes = x.shape[1:-1]
-    out_sizes, lows, full_sizes = A.transpose_geometry(
-        sizes, A.effective_windows(kernel, d), s, padding, output_shape, fn, filters.shape[-2]
+    dtype = np.result_type(x, filters)
+    if transpose:
+        sizes = x.shape[1:-1]
+        full_sizes = tuple(
+            (n - 1) * s + d * (k - 1) + 1 for n, s, d, k in zip(sizes, strides, dilations, kernel)
+        )
+        full = np.zeros((x.shape[0], *full_sizes, filters.shape[-2]), dtype)
+        for offset in np.ndindex(*kernel):
+            full[windows(offset, dilations, strides, sizes)] += x @ filters[offset].T
+        crop = tuple(slice(lo, n - hi) for (lo, hi), n in zip(padding, full_sizes))
+        return full[(slice(None), *crop)]
+    padded = np.pad(x, ((0, 0), *padding, (0, 0)))
+    out_sizes = tuple(
+        (n - d * (k - 1) - 1) // s + 1
+        for n, d, k, s in zip(padded.shape[1:-1], dilations, kernel, strides)
     )
-    full = np.zeros((x.shape[0], *full_sizes, filters.shape[-2]), np.result_type(x, filters))
+    out = np.zeros((x.shape[0], *out_sizes, filters.shape[-1]), dtype)
     for offset in np.ndindex(*kernel):
-        full[_windows(offset, d, s, sizes)] += x @ filters[offset].T
-    return _crop_or_pad(full, lows, out_sizes).reshape(lead + (*out_sizes, full.shape[-1]))
-
-
-def _crop_or_pad(full, lows, out_sizes):
-    """``full[:, lo : lo + n, ..., :]`` per spatial axis, extended with zeros past its end."""
-    out = np.zeros((full.shape[0], *out_sizes, full.shape[-1]), full.dtype)
-    src, dst = [slice(None)], [slice(None)]
-    for lo, n, size in zip(lows, out_sizes, full.shape[1:-1]):
-        m = max(min(n, size - lo), 0)
-        src.append(slice(lo, lo + m))
-        dst.append(slice(0, m))
-    out[tuple(dst)] = full[tuple(src)]
+        patch = padded[windows(offset, dilations, strides, out_sizes)]
+        out += _grouped(patch, filters[offset], groups)
     return out
-
-
-def conv1d(x, filters, strides, padding, /, *, dilations=1):
-    return _conv(x, filters, strides, padding, dilations, 1, "conv1d")
-
-
-def conv2d(x, filters, strides, padding, /, *, dilations=1):
-    return _conv(x, filters, strides, padding, dilations, 2, "conv2d")
-
-
-def conv3d(x, filters, strides, padding, /, *, dilations=1):
-    return _conv(x, filters, strides, padding, dilations, 3, "conv3d")
-
-
-def conv1d_transpose(x, filters, strides, padding, /, *, output_shape=None, dilations=1):
-    return _conv_transpose(
-        x, filters, strides, padding, output_shape, dilations, 1, "conv1d_transpose"
-    )
-
-
-def conv2d_transpose(x, filters, strides, padding, /, *, output_shape=None, dilations=1):
-    return _conv_transpose(
-        x, filters, strides, padding, output_shape, dilations, 2, "conv2d_transpose"
-    )
-
-
-def conv3d_transpose(x, filters, strides, padding, /, *, output_shape=None, dilations=1):
-    return _conv_transpose(
-        x, filters, strides, padding, output_shape, dilations, 3, "conv3d_transpose"
-    )
-
-
-def depthwise_conv2d(x, filters, strides, padding, /, *, dilations=1):
-    fn = "depthwise_conv2d"
-    x, filters = np.asarray(x), np.asarray(filters)
-    A.check_depthwise(x.shape, filters.shape, fn)
-    kernel = filters.shape[:2]
-    s = A.as_tuple(strides, 2, "strides", fn)
-    d = A.as_tuple(dilations, 2, "dilations", fn)
-    x, lead = _flatten_batch(x, 2)
-    windows = A.effective_windows(kernel, d)
-    pads = A.explicit_pads(A.parse_padding(padding, 2, fn), x.shape[1:-1], windows, s)
-    out_sizes = A.output_sizes(x.shape[1:-1], windows, s, pads, fn)
-    xp = np.pad(x, ((0, 0), *pads, (0, 0)))
-    out = np.zeros((x.shape[0], *out_sizes, x.shape[-1]), np.result_type(x, filters))
-    for offset in np.ndindex(*kernel):
-        out += xp[_windows(offset, d, s, out_sizes)] * filters[offset]
-    return out.reshape(lead + out.shape[1:])

@@ -1,10 +1,13 @@
-"""tensorflow backend: convolutions, channel-last (tf's own layout), with ``tf.nn.conv1d``,
+"""tensorflow backend: the one convolution, channel-last (tf's own layout), with ``tf.nn.conv1d``,
 ``conv2d``, ``conv3d``, their transposes and ``depthwise_conv2d``.
 
 tf's CPU kernels reject some dilation settings (float64 dilated convolutions and their gradients,
 strides together with dilations in ``tf.nn.convolution``), so a dilated kernel is expanded with
-zeros between its taps and run undilated: the same result, on every dtype. Explicit padding is
-added with ``tf.pad``; transposed convolutions are computed in full ('VALID') and then cropped.
+zeros between its taps and run undilated: the same result, on every dtype. Padding that is
+neither tf's 'SAME' nor 'VALID' for the input's sizes is added with ``tf.pad``; transposed
+convolutions are computed in full ('VALID') and then cropped. tf's CPU has no grouped
+convolution: depthwise 2-D ones (one group per channel) run as ``tf.nn.depthwise_conv2d``, others
+as one convolution per group.
 """
 
 from __future__ import annotations
@@ -12,6 +15,7 @@ from __future__ import annotations
 import tensorflow as tf
 
 from ivy.backends import _nn_args as A
+from ivy.errors import UnsupportedError
 
 # The rank-specific functions: ``tf.nn.convolution`` builds 3-D ops whose gradient fails
 # (their ``data_format`` attribute is unset).
@@ -25,21 +29,6 @@ _CONV_TRANSPOSE = {
     2: lambda x, w, shape, s: tf.nn.conv2d_transpose(x, w, shape, s, "VALID"),
     3: lambda x, w, shape, s: tf.nn.conv3d_transpose(x, w, shape, (1, *s, 1), "VALID"),
 }
-
-
-def static_shape(x):
-    return tuple(x.shape)
-
-
-def flatten_batch(x, nd):
-    """``x`` with its leading axes folded into one, and a function that unfolds a result."""
-    rank = len(x.shape)
-    if rank == nd + 2:
-        return x, lambda y: y
-    shape = tf.shape(x)
-    lead = shape[: rank - nd - 1]
-    x = tf.reshape(x, tf.concat([[-1], shape[rank - nd - 1 :]], 0))
-    return x, lambda y: tf.reshape(y, tf.concat([lead, tf.shape(y)[1:]], 0))
 
 
 def dilate_kernel(filters, dilations):
@@ -61,6 +50,18 @@ def pad_spatial(x, pads, value=0):
     return tf.pad(x, [(0, 0), *pads, (0, 0)], constant_values=value)
 
 
+def native_padding(x, padding, windows, strides, value=0):
+    """``x``, padded where tf cannot, and tf's padding string ('SAME' or 'VALID') for the rest:
+    explicit pads that equal tf's 'SAME' (or no padding) go to tf's kernels as they are."""
+    if isinstance(padding, str):  # sizes unknown until run time (see conv_general)
+        return x, padding
+    if all(lo == 0 and hi == 0 for lo, hi in padding):
+        return x, "VALID"
+    if padding == A.same_pads(tuple(x.shape[1:-1]), windows, strides):
+        return x, "SAME"
+    return pad_spatial(x, padding, value), "VALID"
+
+
 def _convert(x, filters):
     x = tf.convert_to_tensor(x)
     filters = tf.convert_to_tensor(filters)
@@ -72,112 +73,40 @@ def _convert(x, filters):
     return x, filters
 
 
-def _apply_padding(x, padding, windows, strides, fn):
-    """``x`` padded as tf cannot, and the padding string to give tf ('SAME' or 'VALID')."""
-    nd = len(windows)
-    parsed = A.parse_padding(padding, nd, fn)
-    sizes = tuple(x.shape[1:-1])
-    if None not in sizes:  # static sizes (always, eagerly): check the output is not empty
-        A.output_sizes(
-            sizes, windows, strides, A.explicit_pads(parsed, sizes, windows, strides), fn
+def _crop(y, crops):
+    return y[(slice(None), *(slice(lo, n - hi) for (lo, hi), n in zip(crops, y.shape[1:-1])))]
+
+
+def conv_general(x, filters, strides, padding, dilations, /, *, groups=1, transpose=False):
+    x, filters = _convert(x, filters)
+    nd = len(strides)
+    kernel = dilate_kernel(filters, dilations)
+    windows = tuple(kernel.shape[:nd])
+    if transpose:
+        full_sizes = [(n - 1) * s + w for n, s, w in zip(x.shape[1:-1], strides, windows)]
+        batch = x.shape[0] if x.shape[0] is not None else tf.shape(x)[0]
+        full = _CONV_TRANSPOSE[nd](x, kernel, [batch, *full_sizes, filters.shape[-2]], strides)
+        return _crop(full, padding)
+    if groups == 1:
+        x, tf_padding = native_padding(x, padding, windows, strides)
+        return _CONV[nd](x, kernel, strides, tf_padding)
+    if nd != 2 or filters.shape[-2] != 1 or filters.shape[-1] != groups:
+        # tf's CPU has no grouped convolution: one convolution per group
+        xs, ws = tf.split(x, groups, axis=-1), tf.split(filters, groups, axis=-1)
+        return tf.concat(
+            [conv_general(a, w, strides, padding, dilations) for a, w in zip(xs, ws)], axis=-1
         )
-    if isinstance(parsed, str):
-        return x, parsed
-    return pad_spatial(x, parsed), "VALID"
-
-
-def _conv(x, filters, strides, padding, dilations, nd, fn):
-    x, filters = _convert(x, filters)
-    A.check_conv(static_shape(x), static_shape(filters), nd, fn)
-    kernel = tuple(filters.shape[:nd])
-    s = A.as_tuple(strides, nd, "strides", fn)
-    d = A.as_tuple(dilations, nd, "dilations", fn)
-    x, unflatten = flatten_batch(x, nd)
-    windows = A.effective_windows(kernel, d)
-    x, tf_padding = _apply_padding(x, padding, windows, s, fn)
-    y = _CONV[nd](x, dilate_kernel(filters, d), s, tf_padding)
-    return unflatten(y)
-
-
-def crop_or_pad(y, lows, out_sizes):
-    """``y[:, lo : lo + n, ..., :]`` per spatial axis, extended with zeros past its end."""
-    index, extend = [slice(None)], [(0, 0)]
-    for lo, n, size in zip(lows, out_sizes, y.shape[1:-1]):
-        m = max(min(n, size - lo), 0)
-        index.append(slice(lo, lo + m))
-        extend.append((0, n - m))
-    y = y[tuple(index)]
-    if any(e != (0, 0) for e in extend):
-        y = tf.pad(y, extend + [(0, 0)])
-    return y
-
-
-def _conv_transpose(x, filters, strides, padding, output_shape, dilations, nd, fn):
-    x, filters = _convert(x, filters)
-    A.check_conv(static_shape(x), static_shape(filters), nd, fn, transpose=True)
-    kernel = tuple(filters.shape[:nd])
-    s = A.as_tuple(strides, nd, "strides", fn)
-    d = A.as_tuple(dilations, nd, "dilations", fn)
-    x, unflatten = flatten_batch(x, nd)
-    sizes = tuple(x.shape[1:-1])
-    out_sizes, lows, full_sizes = A.transpose_geometry(
-        sizes, A.effective_windows(kernel, d), s, padding, output_shape, fn, filters.shape[-2]
-    )
-    batch = x.shape[0] if x.shape[0] is not None else tf.shape(x)[0]
-    full = _CONV_TRANSPOSE[nd](
-        x, dilate_kernel(filters, d), [batch, *full_sizes, filters.shape[-2]], s
-    )
-    return unflatten(crop_or_pad(full, lows, out_sizes))
-
-
-def conv1d(x, filters, strides, padding, /, *, dilations=1):
-    return _conv(x, filters, strides, padding, dilations, 1, "conv1d")
-
-
-def conv2d(x, filters, strides, padding, /, *, dilations=1):
-    return _conv(x, filters, strides, padding, dilations, 2, "conv2d")
-
-
-def conv3d(x, filters, strides, padding, /, *, dilations=1):
-    return _conv(x, filters, strides, padding, dilations, 3, "conv3d")
-
-
-def conv1d_transpose(x, filters, strides, padding, /, *, output_shape=None, dilations=1):
-    return _conv_transpose(
-        x, filters, strides, padding, output_shape, dilations, 1, "conv1d_transpose"
-    )
-
-
-def conv2d_transpose(x, filters, strides, padding, /, *, output_shape=None, dilations=1):
-    return _conv_transpose(
-        x, filters, strides, padding, output_shape, dilations, 2, "conv2d_transpose"
-    )
-
-
-def conv3d_transpose(x, filters, strides, padding, /, *, output_shape=None, dilations=1):
-    return _conv_transpose(
-        x, filters, strides, padding, output_shape, dilations, 3, "conv3d_transpose"
-    )
-
-
-def depthwise_conv2d(x, filters, strides, padding, /, *, dilations=1):
-    fn = "depthwise_conv2d"
-    x, filters = _convert(x, filters)
-    A.check_depthwise(static_shape(x), static_shape(filters), fn)
-    kernel = tuple(filters.shape[:2])
-    s = A.as_tuple(strides, 2, "strides", fn)
-    d = A.as_tuple(dilations, 2, "dilations", fn)
-    x, unflatten = flatten_batch(x, 2)
-    windows = A.effective_windows(kernel, d)
-    step = s
-    if s[0] != s[1]:  # tf's kernel takes equal strides only: stride 1, then subsample
-        sizes = tuple(x.shape[1:-1])
-        padding = A.explicit_pads(A.parse_padding(padding, 2, fn), sizes, windows, s)
+    step = strides
+    if strides[0] != strides[1]:  # tf's kernel takes equal strides only: stride 1, then subsample
         step = (1, 1)
-    x, tf_padding = _apply_padding(x, padding, windows, step, fn)
+        if padding == "SAME":  # unknown sizes: tf's 'SAME' of stride 1 is not that of strides
+            raise UnsupportedError(
+                "depthwise_conv2d on tensorflow: 'SAME' padding with unequal strides needs the "
+                "spatial sizes before run time; give the tf.function an input_signature with "
+                "known sizes, or equal strides."
+            )
+    x, tf_padding = native_padding(x, padding, windows, step)
     y = tf.nn.depthwise_conv2d(
-        x, dilate_kernel(filters, d)[..., None], strides=(1, *step, 1), padding=tf_padding
+        x, tf.reshape(kernel, (*windows, groups, 1)), strides=(1, *step, 1), padding=tf_padding
     )
-    if step != s:
-        y = y[:, :: s[0], :: s[1]]
-    return unflatten(y)
+    return y if step == strides else y[:, :: strides[0], :: strides[1]]

@@ -1,10 +1,11 @@
-"""tensorflow backend: max and average pools, channel-last, with ``tf.nn`` kernels.
+"""tensorflow backend: the one pool, channel-last, with ``tf.nn`` kernels.
 
-'SAME' average pools exclude the padding from the count (tf's own rule). Explicit padding is
-added with ``tf.pad`` (``-inf`` for max pools; zeros for average pools, whose sums are then divided
-by the number of real entries in each window). tf has no float64 3-D pool on the CPU; a 3-D pool
-of float64 runs as a 2-D pool over (H, W) followed by a 1-D pool over D (max and average over a
-box are separable, the count of real entries too).
+'SAME' average pools exclude the padding from the count (tf's own rule), so padding that equals
+tf's 'SAME' (or none) runs in tf's kernels as it is. Other padding is added with ``tf.pad``
+(``-inf`` for max pools; zeros for average pools, whose sums are then divided by the number of
+real entries in each window). tf has no float64 3-D pool on the CPU; a 3-D pool of float64 runs
+as a 2-D pool over (H, W) followed by a 1-D pool over D (max and average over a box are
+separable, the count of real entries too).
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ import math
 import tensorflow as tf
 
 from ivy.backends import _nn_args as A
-from ivy.backends.tensorflow.convolutions import flatten_batch, pad_spatial
+from ivy.backends.tensorflow.convolutions import native_padding
 
 
 def _native(x, k, s, padding, average):
@@ -30,47 +31,13 @@ def _native(x, k, s, padding, average):
     return op(x, k, s, padding)
 
 
-def _pool(x, kernel, strides, padding, nd, fn, average):
+def pool_general(x, kernel, strides, padding, /, *, reduction="max"):
     x = tf.convert_to_tensor(x)
-    A.check_pool_input(tuple(x.shape), nd, fn)
-    k = A.as_tuple(kernel, nd, "kernel", fn)
-    s = A.as_tuple(strides, nd, "strides", fn)
-    x, unflatten = flatten_batch(x, nd)
-    sizes = tuple(x.shape[1:-1])
-    parsed = A.parse_padding(padding, nd, fn)
-    if None in sizes and isinstance(parsed, str):
-        return unflatten(_native(x, k, s, parsed, average))
-    pads = A.pool_pads(padding, sizes, k, s, fn)
-    if isinstance(parsed, str):
-        y = _native(x, k, s, parsed, average)
-    elif average:
-        counts = A.window_counts(sizes, k, s, pads)[None, ..., None] / math.prod(k)
-        mean = _native(pad_spatial(x, pads), k, s, "VALID", True)  # padding counted
-        y = mean / tf.constant(counts, x.dtype)
-    else:
-        y = _native(pad_spatial(x, pads, float("-inf")), k, s, "VALID", False)
-    return unflatten(y)
-
-
-def max_pool1d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 1, "max_pool1d", False)
-
-
-def max_pool2d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 2, "max_pool2d", False)
-
-
-def max_pool3d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 3, "max_pool3d", False)
-
-
-def avg_pool1d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 1, "avg_pool1d", True)
-
-
-def avg_pool2d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 2, "avg_pool2d", True)
-
-
-def avg_pool3d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 3, "avg_pool3d", True)
+    average = A.averages(reduction)
+    fill = 0 if average else float("-inf")
+    padded, tf_padding = native_padding(x, padding, kernel, strides, fill)
+    y = _native(padded, kernel, strides, tf_padding, average)
+    if average and padded is not x:  # tf counted the padding: divide by the real entries
+        counts = A.window_counts(tuple(x.shape[1:-1]), kernel, strides, padding)
+        y = y / tf.constant(counts[None, ..., None] / math.prod(kernel), x.dtype)
+    return y

@@ -1,4 +1,4 @@
-"""torch backend: max and average pools, channel-last, with torch's own kernels.
+"""torch backend: the one pool, channel-last, with torch's own kernels.
 
 Padding torch cannot express natively (asymmetric, or wider than half the window) is added with
 ``F.pad`` first: ``-inf`` for max pools; for average pools zeros, and the sums are divided by the
@@ -19,49 +19,22 @@ _MAX = {1: F.max_pool1d, 2: F.max_pool2d, 3: F.max_pool3d}
 _AVG = {1: F.avg_pool1d, 2: F.avg_pool2d, 3: F.avg_pool3d}
 
 
-def _pool(x, kernel, strides, padding, nd, fn, average):
+def pool_general(x, kernel, strides, padding, /, *, reduction="max"):
     (x,) = tensors(x)
-    A.check_pool_input(x.shape, nd, fn)
-    k = A.as_tuple(kernel, nd, "kernel", fn)
-    s = A.as_tuple(strides, nd, "strides", fn)
-    sizes = tuple(x.shape[x.dim() - nd - 1 : -1])
-    pads = A.pool_pads(padding, sizes, k, s, fn)
-    xc, lead = channels_first(x, nd)
-    native = all(lo == hi and 2 * lo <= w for (lo, hi), w in zip(pads, k))
-    if native:
-        p = [lo for lo, _ in pads]
+    average = A.averages(reduction)
+    nd = len(kernel)
+    xc = channels_first(x, nd)
+    if all(lo == hi and 2 * lo <= k for (lo, hi), k in zip(padding, kernel)):
+        p = [lo for lo, _ in padding]
         if average:
-            y = _AVG[nd](xc, k, s, p, count_include_pad=False)
+            y = _AVG[nd](xc, kernel, strides, p, count_include_pad=False)
         else:
-            y = _MAX[nd](xc, k, s, p)
+            y = _MAX[nd](xc, kernel, strides, p)
     elif average:
-        counts = A.window_counts(sizes, k, s, pads) / math.prod(k)
-        mean = _AVG[nd](F.pad(xc, torch_pads(pads)), k, s)  # padding counted
+        sizes = tuple(x.shape[1:-1])
+        counts = A.window_counts(sizes, kernel, strides, padding) / math.prod(kernel)
+        mean = _AVG[nd](F.pad(xc, torch_pads(padding)), kernel, strides)  # padding counted
         y = mean / torch.as_tensor(counts, dtype=x.dtype, device=x.device)
     else:
-        y = _MAX[nd](F.pad(xc, torch_pads(pads), value=-float("inf")), k, s)
-    return channels_last(y, nd, lead)
-
-
-def max_pool1d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 1, "max_pool1d", False)
-
-
-def max_pool2d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 2, "max_pool2d", False)
-
-
-def max_pool3d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 3, "max_pool3d", False)
-
-
-def avg_pool1d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 1, "avg_pool1d", True)
-
-
-def avg_pool2d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 2, "avg_pool2d", True)
-
-
-def avg_pool3d(x, kernel, strides, padding, /):
-    return _pool(x, kernel, strides, padding, 3, "avg_pool3d", True)
+        y = _MAX[nd](F.pad(xc, torch_pads(padding), value=-float("inf")), kernel, strides)
+    return channels_last(y, nd)

@@ -7,29 +7,27 @@ Gradients are taken with each framework's own autodiff (``torch.autograd.grad``,
 ``tf.GradientTape``) of ``sum(fn(*inputs) * weights)``, and compared along random directions
 ``v`` with ``(L(inputs + h v) - L(inputs - h v)) / 2h``.
 
-Convolutions and pools (channel-last) against naive numpy float64 loops, on every backend.
-
-The references below loop over output positions and kernel taps, and compute 'SAME' padding from
-tf's documented rule; the tf backend passes 'SAME' to tf itself, so the rule is checked too.
+Convolutions (channel-last) against naive numpy float64 loops (``_nn_reference.py``), on every
+backend.
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 import ivy
-from tests.helpers import (
-    HYPOTHESIS,
-    check,
-    check_gradients,
-    native,
-    numpy_of,
-    tolerance,
+from tests.helpers import check, check_gradients, native, numpy_of, tolerance
+from tests.ivy.core._nn_reference import (
+    FLOATS,
+    GEOMETRY,
+    PADDINGS,
+    random_array,
+    ref_conv,
+    ref_conv_transpose,
+    ref_pads,
 )
 
 
@@ -83,70 +81,6 @@ def test_conv_and_pool_gradients(diff_backend, case):
     check_gradients(diff_backend, fn, [_random(s, i) for i, s in enumerate(shapes)])
 
 
-FLOATS = ("float32", "float64")
-
-
-def _random_nn_conv(shape, dtype, seed):
-    return np.random.default_rng(100 + seed).standard_normal(shape).astype(dtype)
-
-
-def _tuple(v, nd):
-    return (v,) * nd if isinstance(v, int) else tuple(v)
-
-
-def ref_pads(padding, sizes, windows, strides):
-    """(low, high) per axis; 'SAME' by tf's rule: out = ceil(n / s), the odd pad at the end."""
-    nd = len(sizes)
-    if padding == "VALID":
-        return [(0, 0)] * nd
-    if padding == "SAME":
-        pads = []
-        for n, w, s in zip(sizes, windows, strides):
-            total = max((math.ceil(n / s) - 1) * s + w - n, 0)
-            pads.append((total // 2, total - total // 2))
-        return pads
-    if isinstance(padding, int):
-        return [(padding, padding)] * nd
-    return [(p, p) if isinstance(p, int) else tuple(p) for p in padding]
-
-
-def ref_conv(x, w, strides, padding, dilations, depthwise=False):
-    """Cross-correlation of x [N, *S, C] with w [*K, C, O] (or [*K, C] depthwise), float64."""
-    x, w = x.astype(np.float64), w.astype(np.float64)
-    nd = x.ndim - 2
-    kernel = w.shape[:nd]
-    s, d = _tuple(strides, nd), _tuple(dilations, nd)
-    windows = [di * (k - 1) + 1 for k, di in zip(kernel, d)]
-    pads = ref_pads(padding, x.shape[1:-1], windows, s)
-    xp = np.pad(x, [(0, 0), *pads, (0, 0)])
-    out_sizes = [(xp.shape[1 + i] - windows[i]) // s[i] + 1 for i in range(nd)]
-    channels = x.shape[-1] if depthwise else w.shape[-1]
-    out = np.zeros((x.shape[0], *out_sizes, channels))
-    for o in np.ndindex(*out_sizes):
-        for tap in np.ndindex(*kernel):
-            at = tuple(oi * si + ti * di for oi, si, ti, di in zip(o, s, tap, d))
-            patch = xp[(slice(None), *at)]
-            out[(slice(None), *o)] += patch * w[tap] if depthwise else patch @ w[tap]
-    return out
-
-
-def ref_conv_transpose(x, w, strides, padding, dilations, out_sizes):
-    """Scatter definition: out[i * s + j * d - low] += x[i] @ w[j].T, with w [*K, O, C]."""
-    x, w = x.astype(np.float64), w.astype(np.float64)
-    nd = x.ndim - 2
-    kernel = w.shape[:nd]
-    s, d = _tuple(strides, nd), _tuple(dilations, nd)
-    windows = [di * (k - 1) + 1 for k, di in zip(kernel, d)]
-    lows = [lo for lo, _ in ref_pads(padding, out_sizes, windows, s)]
-    out = np.zeros((x.shape[0], *out_sizes, w.shape[-2]))
-    for i in np.ndindex(*x.shape[1:-1]):
-        for tap in np.ndindex(*kernel):
-            at = tuple(ii * si + ti * di - lo for ii, si, ti, di, lo in zip(i, s, tap, d, lows))
-            if all(0 <= a < n for a, n in zip(at, out_sizes)):
-                out[(slice(None), *at)] += x[(slice(None), *i)] @ w[tap].T
-    return out
-
-
 # (x shape, filter shape, strides, padding, dilations)
 CONV_CASES_nn_conv = {
     "conv1d": [
@@ -184,7 +118,7 @@ def _conv_case_ids():
 @pytest.mark.parametrize(("name", "case"), _conv_case_ids())
 def test_conv(backend, dtype, name, case):
     x_shape, w_shape, strides, padding, dilations = case
-    x, w = _random_nn_conv(x_shape, dtype, 1), _random_nn_conv(w_shape, dtype, 2)
+    x, w = random_array(x_shape, dtype, 1), random_array(w_shape, dtype, 2)
     nd = len(w_shape) - 2
     flat = x.reshape(-1, *x_shape[-nd - 1 :])
     expected = ref_conv(
@@ -198,7 +132,7 @@ def test_conv(backend, dtype, name, case):
 
 def test_conv_namespace_function_and_f(backend):
     """``ivy.<backend>.conv2d`` and ``ivy.conv2d(..., f=backend)`` on numpy input."""
-    x, w = _random_nn_conv((1, 4, 4, 2), "float64", 3), _random_nn_conv((2, 2, 2, 3), "float64", 4)
+    x, w = random_array((1, 4, 4, 2), "float64", 3), random_array((2, 2, 2, 3), "float64", 4)
     expected = ref_conv(x, w, 1, "SAME", 1)
     xp = getattr(ivy, backend)
     check(xp.conv2d(native(x, backend), native(w, backend), 1, "SAME"), expected, backend)
@@ -218,7 +152,7 @@ def test_conv_namespace_function_and_f(backend):
 )
 def test_depthwise_conv2d(backend, dtype, case):
     x_shape, w_shape, strides, padding, dilations = case
-    x, w = _random_nn_conv(x_shape, dtype, 5), _random_nn_conv(w_shape, dtype, 6)
+    x, w = random_array(x_shape, dtype, 5), random_array(w_shape, dtype, 6)
     expected = ref_conv(x, w, strides, padding, dilations, depthwise=True)
     out = ivy.depthwise_conv2d(
         native(x, backend), native(w, backend), strides, padding, dilations=dilations
@@ -261,7 +195,7 @@ def _transpose_case_ids():
 @pytest.mark.parametrize(("name", "case"), _transpose_case_ids())
 def test_conv_transpose(backend, dtype, name, case):
     x_shape, w_shape, strides, padding, dilations, output_shape, out_sizes = case
-    x, w = _random_nn_conv(x_shape, dtype, 7), _random_nn_conv(w_shape, dtype, 8)
+    x, w = random_array(x_shape, dtype, 7), random_array(w_shape, dtype, 8)
     expected = ref_conv_transpose(x, w, strides, padding, dilations, out_sizes)
     fn = getattr(ivy, name)
     out = fn(
@@ -277,10 +211,10 @@ def test_conv_transpose(backend, dtype, name, case):
 
 def test_conv_transpose_is_the_adjoint_of_conv(backend):
     """<conv(y, w), x> == <y, conv_transpose(x, w)>: the transpose is the input gradient."""
-    w = _random_nn_conv(
+    w = random_array(
         (3, 2, 3, 4), "float64", 9
     )  # conv: [fh, fw, in=3, out=4]; transpose: out=3, in=4
-    y = _random_nn_conv((2, 7, 6, 3), "float64", 10)
+    y = random_array((2, 7, 6, 3), "float64", 10)
     for strides, padding, dilations in [
         (2, "SAME", 1),
         ((1, 2), "VALID", (2, 1)),
@@ -291,7 +225,7 @@ def test_conv_transpose_is_the_adjoint_of_conv(backend):
                 native(y, backend), native(w, backend), strides, padding, dilations=dilations
             )
         )
-        x = _random_nn_conv(conv.shape, "float64", 11)
+        x = random_array(conv.shape, "float64", 11)
         back = ivy.conv2d_transpose(
             native(x, backend),
             native(w, backend),
@@ -303,26 +237,16 @@ def test_conv_transpose_is_the_adjoint_of_conv(backend):
         np.testing.assert_allclose(np.sum(conv * x), np.sum(y * numpy_of(back)), rtol=1e-12)
 
 
-# Fewer examples than the shared profile: jax compiles every new shape.
-GEOMETRY = settings(HYPOTHESIS, max_examples=15)
-
-
-_PADDINGS = st.one_of(
-    st.sampled_from(["SAME", "VALID"]),
-    st.tuples(st.integers(0, 2), st.integers(0, 2)).map(lambda p: [p]),
-)
-
-
 @GEOMETRY
 @given(
     n=st.integers(1, 7),
     k=st.integers(1, 3),
     s=st.integers(1, 3),
     d=st.integers(1, 2),
-    padding=_PADDINGS,
+    padding=PADDINGS,
 )
 def test_conv1d_geometry(backend, n, k, s, d, padding):
-    x, w = _random_nn_conv((1, n, 2), "float64", 13), _random_nn_conv((k, 2, 2), "float64", 14)
+    x, w = random_array((1, n, 2), "float64", 13), random_array((k, 2, 2), "float64", 14)
     pads = ref_pads(padding, (n,), (d * (k - 1) + 1,), (s,))
     if n + sum(pads[0]) < d * (k - 1) + 1:
         with pytest.raises(ValueError, match="larger than the padded input"):
@@ -375,3 +299,18 @@ def test_conv_errors(backend):
         ivy.conv2d_transpose(
             x, native(np.ones((3, 3, 4, 2)), backend), 2, "SAME", output_shape=(10,)
         )
+
+
+@pytest.mark.parametrize("dtype", FLOATS)
+@pytest.mark.parametrize("groups", [2, 3])
+def test_conv_general_with_feature_groups(backend, dtype, groups):
+    """The backends' one convolution, called with resolved arguments: grouped channels (the
+    public functions use one group, or one per channel)."""
+    x = random_array((2, 6, 5, 6), dtype, 15)
+    w = random_array((3, 2, 6 // groups, 3 * groups), dtype, 16)
+    pads = ((1, 1), (0, 1))
+    expected = ref_conv(x, w, (2, 1), pads, (1, 2), groups=groups)
+    out = ivy.conv_general(
+        native(x, backend), native(w, backend), (2, 1), pads, (1, 2), groups=groups
+    )
+    check(out, expected.astype(dtype), backend, **tolerance(dtype, 10))

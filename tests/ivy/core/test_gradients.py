@@ -245,6 +245,39 @@ def test_retain_grads_gives_second_order_gradients(diff_backend):
     np.testing.assert_allclose(numpy_of(g), [6.0, 12.0, -3.0], **F64)
 
 
+@pytest.mark.parametrize("retain_grads", [False, True])
+def test_captured_arrays_are_constants(diff_backend, retain_grads):
+    """``func`` is differentiated only through its argument: an array it captures is a constant,
+    also where it is the very object passed as a leaf (a variable too)."""
+    xp = getattr(ivy, diff_backend)
+    w = ivy.variable(native(np.array([0.5, -1.0]), diff_backend))
+    _, g = ivy.execute_with_gradients(
+        lambda v: xp.sum(v["w"] * w), {"w": w}, retain_grads=retain_grads
+    )
+    np.testing.assert_allclose(numpy_of(g["w"]), [0.5, -1.0], **F64)
+    _, jac = ivy.execute_with_jacobian(lambda q: q * w, w, batch_dims=0, retain_grads=retain_grads)
+    np.testing.assert_allclose(numpy_of(jac), np.diag([0.5, -1.0]), **F64)
+
+
+def test_hessian_vector_product_of_a_kl_with_a_captured_side(diff_backend):
+    """The case that found the quirk: KL(N(v, 1) || N(w, 1)) = sum((v - w)^2) / 2 with ``v``
+    captured and ``w`` the argument has Hessian I in ``w``, also at ``w = v``."""
+    xp = getattr(ivy, diff_backend)
+    v = {"loc": native(np.array([0.5, -1.0]), diff_backend)}
+    u = native(np.array([2.0, 3.0]), diff_backend)
+
+    def kl(w):
+        return xp.sum((v["loc"] - w["loc"]) ** 2) / 2.0
+
+    def directional_gradient(w):
+        g = ivy.execute_with_gradients(kl, w, retain_grads=True)[1]
+        return xp.sum(g["loc"] * u)
+
+    value, hvp = ivy.execute_with_gradients(directional_gradient, v)
+    np.testing.assert_allclose(numpy_of(value), 0.0, **F64)
+    np.testing.assert_allclose(numpy_of(hvp["loc"]), [2.0, 3.0], **F64)
+
+
 def test_loss_must_be_a_scalar(diff_backend):
     x = native(np.ones(3), diff_backend)
     with pytest.raises(ValueError, match="scalar"):

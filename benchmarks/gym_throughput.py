@@ -1,0 +1,204 @@
+"""ivy_gym's throughput against Gymnasium's vectorised CartPole and gymnax, in one run.
+
+1. CartPole steps per second, random actions, autoreset, batch 1, 64, 1024 and 16384:
+
+   gymnasium vector    ``gymnasium.make_vec("CartPole-v1", vectorization_mode=
+                       "vector_entry_point")``: Gymnasium's own numpy CartPoleVectorEnv, stepped in a
+                       Python loop with pre-drawn actions
+   ivy numpy facade    the same loop on ``gymnasium.make_vec("ivy_gym/CartPole-v1", ...,
+                       framework="numpy")`` (ivy_gym's native VectorEnv)
+   ivy <backend> scan  ``ivy_gym.rollout(..., autoreset=True)`` over 100 steps of pre-drawn
+                       actions: eager on numpy; compiled (``ivy.compile_fn``) on jax, tensorflow
+                       and torch (torch.compile unrolls the loop: ~1 min to compile per size)
+   gymnax jax          ``jax.jit`` of a ``lax.scan`` over 100 steps of ``vmap(env.step)`` with
+                       random actions (gymnax steps reset themselves), the usual gymnax recipe
+
+2. Forward and backward: the gradient of the return of 200 steps of 64 Pendulums with respect to
+   the actions, eager and compiled, per backend (torch compiled is left out: torch.compile of 200
+   unrolled steps with their backward takes several minutes).
+
+The variants of each batch size take turns (interleaved repeats, ``benchmarks/_timing.py``) and the
+median is reported; ratios are against Gymnasium (numpy) and gymnax (jax), from the same run.
+
+gymnax is a benchmark-only peer. Installed alone it would replace Gymnasium 1.4 with 1.3, so:
+``pip install --no-deps gymnax && pip install flax chex seaborn`` (which leave numpy, jax, torch,
+tensorflow and gymnasium as they are). Without it the gymnax rows are skipped.
+
+Usage: python benchmarks/gym_throughput.py [--backends numpy,jax,tensorflow,torch]
+       [--batches 1,64,1024,16384] [--steps 100] [--repeats 5] [--no-torch-compile]
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import timeit
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+import ivy
+import ivy_gym
+
+sys.path.insert(0, str(Path(__file__).parent))
+from _timing import interleaved_samples, median  # noqa: E402
+
+warnings.filterwarnings("ignore")
+
+
+def _block(out):
+    for leaf in ivy.nest.nest_leaves(out):
+        if hasattr(leaf, "block_until_ready"):
+            leaf.block_until_ready()
+        elif hasattr(leaf, "numpy"):
+            np.asarray(leaf.detach() if hasattr(leaf, "detach") else leaf)
+    return out
+
+
+def gymnasium_vector(env_id, n, steps, **kwargs):
+    """A Python loop of ``steps`` vector steps with pre-drawn actions."""
+    import gymnasium
+
+    envs = gymnasium.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **kwargs)
+    envs.reset(seed=0)
+    actions = np.random.default_rng(0).integers(0, 2, size=(steps, n))
+
+    def run():
+        for a in actions:
+            out = envs.step(a)
+        return out[0]
+
+    return run
+
+
+def ivy_scan(backend, n, steps, compile):
+    env = ivy_gym.CartPole()
+    state = env.reset((n,), f=backend)
+    signs = np.where(np.random.default_rng(0).uniform(size=(steps, n, 1)) > 0.5, 1.0, -1.0)
+    actions = ivy.asarray(signs.astype(np.float32), f=backend)
+
+    def run(state, actions):
+        traj = ivy_gym.rollout(env, state, actions, autoreset=True)
+        return traj.final_state, ivy.sum(traj.rewards)
+
+    if compile:
+        run = ivy.compile_fn(run, f=backend)
+    return lambda: run(state, actions)
+
+
+def gymnax_scan(n, steps):
+    try:
+        import gymnax
+        import jax
+    except ImportError:
+        return None
+    env, params = gymnax.make("CartPole-v1")
+    vstep = jax.vmap(env.step, in_axes=(0, 0, 0, None))
+    _, state = jax.vmap(env.reset, in_axes=(0, None))(
+        jax.random.split(jax.random.key(0), n), params
+    )
+
+    @jax.jit
+    def run(key, state):
+        def body(carry, _):
+            key, state = carry
+            key, k_act, k_step = jax.random.split(key, 3)
+            actions = jax.random.randint(k_act, (n,), 0, 2)
+            out = vstep(jax.random.split(k_step, n), state, actions, params)
+            state, reward = out[1], out[2]  # (obs, state, reward, terminated, truncated, info)
+            return (key, state), reward
+
+        (_, state), rewards = jax.lax.scan(body, (key, state), None, length=steps)
+        return state, rewards.sum()
+
+    key = jax.random.key(1)
+    return lambda: run(key, state)
+
+
+def pendulum_gradient(backend, compile, steps=200, batch=64):
+    env = ivy_gym.Pendulum()
+    state = env.reset((batch,), f=backend)
+    actions = ivy.asarray(np.zeros((steps, batch, 1), np.float32), f=backend)
+
+    def value_and_grad(actions):
+        def loss(actions):
+            return -ivy.mean(ivy.sum(ivy_gym.rollout(env, state, actions).rewards, axis=0))
+
+        return ivy.execute_with_gradients(loss, actions)
+
+    if compile:
+        value_and_grad = ivy.compile_fn(value_and_grad, f=backend)
+    return lambda: value_and_grad(actions)
+
+
+def _interleaved(variants, repeats):
+    """Median seconds per call of each variant, the variants taking turns (shared drift)."""
+    timers = {}
+    for _ in range(2):  # warm up (and compile) all, twice: torch.compile guards on ivy's cache
+        for fn in variants.values():  # of array types, which the other variants fill
+            _block(fn())
+    for name, fn in variants.items():
+        timers[name] = timeit.Timer(lambda fn=fn: _block(fn()))
+    samples = interleaved_samples(timers, 1, repeats)
+    return {name: median(values) for name, values in samples.items()}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--backends", default="numpy,jax,tensorflow,torch")
+    parser.add_argument("--batches", default="1,64,1024,16384")
+    parser.add_argument("--steps", type=int, default=100)
+    parser.add_argument("--repeats", type=int, default=7)
+    parser.add_argument("--no-torch-compile", action="store_true")
+    args = parser.parse_args()
+    backends = args.backends.split(",")
+    batches = [int(b) for b in args.batches.split(",")]
+    steps = args.steps
+
+    rows: dict[str, list[float]] = {}
+    for n in batches:
+        variants = {"gymnasium vector (numpy)": gymnasium_vector("CartPole-v1", n, steps)}
+        if "numpy" in backends:
+            variants["ivy numpy facade"] = gymnasium_vector(
+                "ivy_gym/CartPole-v1", n, steps, framework="numpy"
+            )
+            variants["ivy numpy scan (eager)"] = ivy_scan("numpy", n, steps, False)
+        for backend in ("jax", "tensorflow", "torch"):
+            if backend in backends and not (backend == "torch" and args.no_torch_compile):
+                variants[f"ivy {backend} scan (compiled)"] = ivy_scan(backend, n, steps, True)
+        if "jax" in backends:
+            gymnax = gymnax_scan(n, steps)
+            if gymnax is not None:
+                variants["gymnax jax (jit+vmap+scan)"] = gymnax
+        for name, seconds in _interleaved(variants, args.repeats).items():
+            rows.setdefault(name, []).append(n * steps / seconds)
+
+    print(f"CartPole steps per second (millions), random actions, autoreset, {steps}-step runs")
+    print(f"{'variant':<32}" + "".join(f"{'N=' + str(n):>10}" for n in batches))
+    for name, values in rows.items():
+        print(f"{name:<32}" + "".join(f"{v / 1e6:10.3f}" for v in values))
+    base = rows["gymnasium vector (numpy)"]
+    for name in ("ivy numpy facade", "ivy numpy scan (eager)"):
+        if name in rows:
+            ratios = "".join(f"{a / b:10.2f}" for a, b in zip(rows[name], base))
+            print(f"{name + ' / gymnasium':<32}{ratios}")
+    if "gymnax jax (jit+vmap+scan)" in rows and "ivy jax scan (compiled)" in rows:
+        ours, theirs = rows["ivy jax scan (compiled)"], rows["gymnax jax (jit+vmap+scan)"]
+        print(f"{'ivy jax / gymnax':<32}" + "".join(f"{a / b:10.2f}" for a, b in zip(ours, theirs)))
+
+    print("\nForward + backward through 200 steps of 64 Pendulums (ms per gradient)")
+    print(f"{'backend':<12}{'eager':>10}{'compiled':>10}")
+    for backend in backends:
+        if backend == "numpy":
+            continue
+        variants = {"eager": pendulum_gradient(backend, False)}
+        if backend != "torch":
+            variants["compiled"] = pendulum_gradient(backend, True)
+        times = _interleaved(variants, args.repeats)
+        compiled = f"{times['compiled'] * 1e3:10.2f}" if "compiled" in times else f"{'-':>10}"
+        print(f"{backend:<12}{times['eager'] * 1e3:10.2f}{compiled}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,321 @@
+"""Gymnasium facades over the batched cores: a Gymnasium ``Env`` and a native ``VectorEnv``.
+
+The facades own what the cores leave out: numpy conversion, seeding (Gymnasium's
+``np_random``), validation of the actions, time limits (the vector environment's) and autoreset.
+The core owns the physics, run on any backend:
+
+    env = gymnasium.make("ivy_gym/Pendulum-v1", framework="torch", dtype="float64")
+    envs = gymnasium.make_vec("ivy_gym/CartPole-v1", num_envs=1024,
+                              vectorization_mode="vector_entry_point", framework="jax")
+
+Observations are numpy arrays of the chosen dtype; ``env.unwrapped.state`` reads and writes
+the state as a float64 numpy array in the core's layout (Gymnasium's, for the faithful tasks).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import gymnasium
+import numpy as np
+from gymnasium import spaces
+from gymnasium.vector import AutoresetMode, VectorEnv
+from gymnasium.vector.utils import batch_space
+
+import ivy
+from ivy.typing import Dtype, Framework
+from ivy_gym.base import Env
+
+__all__ = ["GymnasiumEnv", "GymnasiumVectorEnv"]
+
+_FLOATS = ("float32", "float64")
+
+
+def _dtype_name(dtype: Dtype) -> str:
+    name = np.dtype(str(dtype).replace("torch.", "")).name
+    if name not in _FLOATS:
+        raise ValueError(f"ivy_gym: dtype must be 'float32' or 'float64', got {dtype!r}.")
+    return name
+
+
+def _box(low: np.ndarray, high: np.ndarray, dtype: str) -> spaces.Box:
+    return spaces.Box(low.astype(dtype), high.astype(dtype), dtype=np.dtype(dtype))
+
+
+class _Facade:
+    """What the single and the vector facades share: the core, its backend and the spaces."""
+
+    def _setup(self, core: Env, framework: Framework, dtype: Dtype, discrete: bool) -> None:
+        if not isinstance(core, Env):
+            raise TypeError(f"ivy_gym facade: expected an ivy_gym.Env, got {type(core)!r}.")
+        self.core = core
+        self.xp = ivy.get_framework(f=framework)
+        self.framework = self.xp.backend
+        self.dtype = _dtype_name(dtype)
+        self.discrete = bool(discrete)
+        low, high = core.action_bounds()
+        if self.discrete:
+            if core.action_dim != 1:
+                raise ValueError("ivy_gym facade: discrete=True needs a 1-D action.")
+            self._single_action_space = spaces.Discrete(2)
+        else:
+            self._single_action_space = _box(low, high, self.dtype)
+        self._single_observation_space = _box(*core.observation_bounds(), self.dtype)
+        self._action_low, self._action_high = low, high
+        self._step = core.step
+        reset_low, reset_high = core.reset_bounds()
+        self._random = reset_low != reset_high
+        self._reset_box = reset_low, reset_high, reset_low[self._random], reset_high[self._random]
+
+    def _draw_states(self, rng: np.random.Generator, count: int | None) -> np.ndarray:
+        """Initial states drawn with Gymnasium's generator: the random components of the reset
+        box in one call (as Gymnasium's own environments draw them)."""
+        low, high, random_low, random_high = self._reset_box
+        batch = () if count is None else (count,)
+        if self._random.all():
+            return rng.uniform(low, high, size=(*batch, len(low)))
+        states = np.empty((*batch, len(low)))
+        states[...] = low
+        states[..., self._random] = rng.uniform(random_low, random_high, (*batch, len(random_low)))
+        return states
+
+    def _to_backend(self, states: np.ndarray):
+        x = self.xp.asarray(np.asarray(states, np.float64), dtype=self.dtype)
+        return self.core._initial(self.xp, x)
+
+    def _numpy(self, x) -> np.ndarray:
+        return np.asarray(ivy.to_numpy(x), dtype=self.dtype)
+
+    def _checked_actions(self, action, batch: tuple[int, ...]) -> np.ndarray:
+        """The action(s) as float64 core actions ``(*batch, action_dim)``, or a clear error."""
+        a = np.asarray(action)
+        if self.discrete:
+            if a.shape != batch or a.dtype.kind not in "iu":
+                raise ValueError(
+                    f"{self._name}: expected integer action(s) of shape {batch} in {{0, 1}}, got "
+                    f"{action!r} (shape {a.shape}, dtype {a.dtype})."
+                )
+            if ((a != 0) & (a != 1)).any():
+                raise ValueError(
+                    f"{self._name}: actions must be 0 (push left) or 1 (push right), got "
+                    f"{action!r}."
+                )
+            return (2.0 * a - 1.0)[..., None]
+        want = (*batch, self.core.action_dim)
+        if a.shape != want:
+            raise ValueError(
+                f"{self._name}: expected action(s) of shape {want}, got shape {a.shape}."
+            )
+        inside = (a >= self._action_low) & (a <= self._action_high)  # NaN is outside
+        if not inside.all():
+            raise ValueError(
+                f"{self._name}: action(s) outside the action space [{self._action_low}, "
+                f"{self._action_high}]: {a[~inside]}. Clip or rescale the action (e.g. tanh)."
+            )
+        return a
+
+    def _frame(self, state_row) -> np.ndarray:
+        return self.core.render(state_row)
+
+    @property
+    def _name(self) -> str:
+        return f"ivy_gym {type(self.core).__name__} ({self.framework})"
+
+
+class GymnasiumEnv(_Facade, gymnasium.Env):
+    """A Gymnasium ``Env`` over one state of an ivy_gym core, on any backend.
+
+    Args:
+        core: the environment's core (an :class:`ivy_gym.Env`).
+        framework: the backend that runs the physics.
+        dtype: ``'float32'`` or ``'float64'``: the core's dtype and the observations'.
+        render_mode: None or ``'rgb_array'``.
+        discrete: Gymnasium's CartPole actions {0, 1} (push left/right) instead of the core's
+            continuous action.
+
+    Example:
+        >>> env = GymnasiumEnv(ivy_gym.Pendulum(), framework="jax", dtype="float64")
+        >>> obs, info = env.reset(seed=0)
+        >>> obs, reward, terminated, truncated, info = env.step(np.array([0.5]))
+    """
+
+    def __init__(
+        self,
+        core: Env,
+        *,
+        framework: Framework = "numpy",
+        dtype: Dtype = "float32",
+        render_mode: str | None = None,
+        discrete: bool = False,
+    ) -> None:
+        self._setup(core, framework, dtype, discrete)
+        self.metadata = {"render_modes": ["rgb_array"], "render_fps": core.render_fps}
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError(
+                f"ivy_gym: render_mode must be None or 'rgb_array', got {render_mode!r}."
+            )
+        self.render_mode = render_mode
+        self.action_space = self._single_action_space
+        self.observation_space = self._single_observation_space
+        self._state = None
+
+    @property
+    def state(self) -> np.ndarray | None:
+        """The core's state as a float64 numpy array ``(state_dim,)`` (None before reset)."""
+        return None if self._state is None else np.asarray(ivy.to_numpy(self._state), np.float64)
+
+    @state.setter
+    def state(self, value) -> None:
+        value = np.asarray(value, dtype=np.float64)
+        if value.shape != (self.core.state_dim,):
+            raise ValueError(
+                f"{self._name}: the state has shape ({self.core.state_dim},) "
+                f"{self.core.state_names}; got shape {value.shape}."
+            )
+        self._state = self.xp.asarray(value, dtype=self.dtype)
+
+    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
+        super().reset(seed=seed)
+        self._state = self._to_backend(self._draw_states(self.np_random, None))
+        return self._numpy(self.core.observe(self._state)), {}
+
+    def step(self, action):
+        if self._state is None:
+            raise RuntimeError(f"{self._name}: call reset() before step().")
+        a = self._checked_actions(action, ())
+        state, obs, reward, terminated = self._step(
+            self._state, self.xp.asarray(a, dtype=self.dtype)
+        )
+        self._state = state
+        return (
+            self._numpy(obs),
+            float(ivy.to_numpy(reward)),
+            bool(ivy.to_numpy(terminated)),
+            False,
+            {},
+        )
+
+    def render(self):
+        if self.render_mode != "rgb_array":
+            gymnasium.logger.warn(
+                "ivy_gym: render() needs render_mode='rgb_array' (e.g. gymnasium.make(id, "
+                "render_mode='rgb_array')); returning None."
+            )
+            return None
+        if self._state is None:
+            raise RuntimeError(f"{self._name}: call reset() before render().")
+        return self._frame(self._state)
+
+
+class GymnasiumVectorEnv(_Facade, VectorEnv):
+    """A native Gymnasium ``VectorEnv``: ``num_envs`` copies of an ivy_gym core stepped by one
+    batched array call, with Gymnasium's next-step autoreset and a time limit.
+
+    At the step after an environment terminated or was truncated it restarts instead: its
+    action is ignored, the observation is a fresh initial one, the reward 0 and both flags
+    False (``metadata["autoreset_mode"]`` is ``AutoresetMode.NEXT_STEP``, as Gymnasium's own
+    vectorised CartPole).
+
+    Args:
+        core: the environment's core.
+        num_envs: number of copies.
+        framework, dtype, render_mode, discrete: as for :class:`GymnasiumEnv`.
+        max_episode_steps: time limit per episode (None: none).
+        compile: run the batched step through ``ivy.compile_fn``; by default on jax and
+            tensorflow, whose compilers start in a second (torch.compile takes ~20 s).
+
+    Example:
+        >>> envs = GymnasiumVectorEnv(ivy_gym.CartPole(), 1024, framework="jax", discrete=True)
+        >>> obs, info = envs.reset(seed=0)
+        >>> obs, rewards, terminated, truncated, info = envs.step(envs.action_space.sample())
+    """
+
+    def __init__(
+        self,
+        core: Env,
+        num_envs: int = 1,
+        *,
+        framework: Framework = "numpy",
+        dtype: Dtype = "float32",
+        max_episode_steps: int | None = None,
+        render_mode: str | None = None,
+        discrete: bool = False,
+        compile: bool | None = None,
+    ) -> None:
+        self._setup(core, framework, dtype, discrete)
+        if int(num_envs) < 1:
+            raise ValueError(f"ivy_gym: num_envs must be at least 1, got {num_envs}.")
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError(
+                f"ivy_gym: render_mode must be None or 'rgb_array', got {render_mode!r}."
+            )
+        self.metadata = {
+            "render_modes": ["rgb_array"],
+            "render_fps": core.render_fps,
+            "autoreset_mode": AutoresetMode.NEXT_STEP,
+        }
+        self.num_envs = int(num_envs)
+        self.render_mode = render_mode
+        self.max_episode_steps = max_episode_steps
+        self.single_action_space = self._single_action_space
+        self.single_observation_space = self._single_observation_space
+        self.action_space = batch_space(self.single_action_space, self.num_envs)
+        self.observation_space = batch_space(self.single_observation_space, self.num_envs)
+        if compile is None:
+            compile = self.framework in ("jax", "tensorflow")
+        if compile:
+            self._step = ivy.compile_fn(core.step, f=self.xp)
+        self._state = None
+        self._steps = np.zeros(self.num_envs, np.int64)
+        self._prev_done = np.zeros(self.num_envs, bool)
+
+    @property
+    def state(self) -> np.ndarray | None:
+        """The cores' states as a float64 numpy array ``(num_envs, state_dim)``."""
+        return None if self._state is None else np.asarray(ivy.to_numpy(self._state), np.float64)
+
+    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
+        super().reset(seed=seed)
+        self._state = self._to_backend(self._draw_states(self.np_random, self.num_envs))
+        self._steps[:] = 0
+        self._prev_done[:] = False
+        return self._numpy(self.core.observe(self._state)), {}
+
+    def step(self, actions):
+        if self._state is None:
+            raise RuntimeError(f"{self._name}: call reset() before step().")
+        a = self._checked_actions(actions, (self.num_envs,))
+        state, obs, reward, terminated = self._step(
+            self._state, self.xp.asarray(a, dtype=self.dtype)
+        )
+        obs, reward = self._numpy(obs), self._numpy(reward)
+        terminated = np.asarray(ivy.to_numpy(terminated), bool)
+        self._steps += 1
+        if self.max_episode_steps is None:
+            truncated = np.zeros(self.num_envs, bool)
+        else:
+            truncated = self._steps >= self.max_episode_steps
+        restart = self._prev_done
+        if restart.any():
+            fresh = self._to_backend(self._draw_states(self.np_random, int(restart.sum())))
+            state_np = np.array(ivy.to_numpy(state))  # a writable copy, in the state's dtype
+            state_np[restart] = ivy.to_numpy(fresh)
+            state = self.xp.asarray(state_np)
+            obs[restart] = self._numpy(self.core.observe(fresh))
+            reward[restart] = 0.0
+            terminated[restart] = False
+            truncated[restart] = False
+            self._steps[restart] = 0
+        self._state = state
+        self._prev_done = terminated | truncated
+        return obs, reward, terminated, truncated, {}
+
+    def render(self):
+        if self.render_mode != "rgb_array":
+            gymnasium.logger.warn(
+                "ivy_gym: render() needs render_mode='rgb_array'; returning None."
+            )
+            return None
+        if self._state is None:
+            raise RuntimeError(f"{self._name}: call reset() before render().")
+        return [self._frame(row) for row in self.state]

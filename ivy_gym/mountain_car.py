@@ -1,0 +1,231 @@
+"""Mountain car: Gymnasium's MountainCarContinuous-v0, and the original ivy_gym's shaped task.
+
+A car on the track of height ``sin(3 x)`` must climb to the flag at ``x = 0.45``; its engine
+is too weak to drive straight up, so it must swing back and forth.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import partial
+
+import numpy as np
+
+from ivy_gym.base import Env, scalar_action, unstack_last
+from ivy_gym.rendering import reward_color
+
+__all__ = [
+    "MountainCarContinuous",
+    "MountainCarShaped",
+    "MountainCarParams",
+    "MountainCarShapedParams",
+]
+
+
+@dataclass(frozen=True)
+class MountainCarParams:
+    """Gymnasium's MountainCarContinuous-v0 constants."""
+
+    min_action: float = -1.0
+    max_action: float = 1.0
+    min_position: float = -1.2
+    max_position: float = 0.6
+    max_speed: float = 0.07
+    goal_position: float = 0.45
+    goal_velocity: float = 0.0
+    power: float = 0.0015
+
+
+@dataclass(frozen=True)
+class MountainCarShapedParams:
+    """The original ivy_gym mountain car's constants."""
+
+    g: float = 9.8
+    dt: float = 0.02
+    torque_scale: float = 3.0
+    goal_position: float = 0.45
+
+
+def _height(x):
+    return np.sin(3 * x) * 0.45 + 0.55
+
+
+class _MountainCarBase(Env):
+    state_names = ("position", "velocity")
+    observation_names = ("position", "velocity")
+
+    def action_bounds(self):
+        return np.array([-1.0]), np.array([1.0])
+
+    def _observe(self, xp, p, state):
+        return state
+
+    def _view(self, s):
+        return (-1.2, 0.6, -0.2, 1.6)
+
+    def _draw_scene(self, canvas, position, goal, color):
+        xs = np.linspace(-1.2, 0.6, 100)
+        canvas.polyline(np.stack([xs, _height(xs)], -1), 0.01, (0, 0, 0))
+        base = np.array([position, _height(position)])
+        angle = math.atan(3 * 0.45 * math.cos(3 * position))
+        along = np.array([math.cos(angle), math.sin(angle)])
+        up = np.array([-along[1], along[0]])
+        w, h, clearance = 0.12, 0.06, 0.03
+        corners = [
+            base + up * clearance + along * sx * w / 2 + up * sy * h
+            for sx, sy in [(-1, 0), (1, 0), (1, 1), (-1, 1)]
+        ]
+        canvas.polygon(corners, color)
+        for sx in (-1, 1):
+            canvas.disc(base + up * clearance + along * sx * w / 4, 0.02, (128, 128, 128))
+        flag = np.array([goal, _height(goal)])
+        canvas.line(flag, flag + (0, 0.15), 0.006, (0, 0, 0))
+        canvas.polygon([flag + (0, 0.15), flag + (0, 0.12), flag + (0.07, 0.135)], (204, 204, 0))
+
+
+class MountainCarContinuous(_MountainCarBase):
+    """Gymnasium's MountainCarContinuous-v0, step for step.
+
+    State ``[position, velocity]`` (Gymnasium's layout), observation the same. With the force
+    ``clip(action, min_action, max_action)``:
+
+        velocity += force * power - 0.0025 * cos(3 * position)
+        velocity  = clip(velocity, -max_speed, max_speed)
+        position += velocity;  position = clip(position, min_position, max_position)
+        velocity  = 0 if position == min_position and velocity < 0   (the wall)
+
+    Terminated when ``position >= goal_position`` and ``velocity >= goal_velocity``. Reward:
+    100 at termination, minus ``0.1 * action**2`` (of the action as given). Initial state:
+    position uniform in [-0.6, -0.4], velocity 0. Time limit (registered task): 999 steps.
+
+    Gymnasium keeps this task's state in float32 between steps, and numpy's scalar types then
+    decide the precision of each operation (``3 * position`` is float32; a clipped action or a
+    clipped speed, Python floats, make the velocity or position update float32; the rest is
+    float64). With ``float32_state=True`` (the default) a float64 core rounds at the same
+    places, so that it follows Gymnasium exactly (float64 actions; a float32 core computes in
+    float32 throughout).
+    ``smooth=True`` drops the speed clip, the position clip and the wall (the track continues),
+    so that the dynamics are smooth; set ``float32_state=False`` too for exact float64
+    gradients.
+
+    Args:
+        smooth: drop the clips and the wall.
+        float32_state: round the state to float32 after each step, as Gymnasium does.
+        **params: fields of :class:`MountainCarParams`.
+
+    Example:
+        >>> env = ivy_gym.MountainCarContinuous()
+        >>> s = env.reset((32,), f="tensorflow")
+        >>> s, obs, reward, terminated = env.step(s, tf.ones((32, 1)))
+    """
+
+    Params = MountainCarParams
+    can_terminate = True
+    max_episode_steps = 999
+
+    def __init__(self, *, smooth: bool = False, float32_state: bool = True, **params) -> None:
+        self.smooth = bool(smooth)
+        self.float32_state = bool(float32_state)
+        super().__init__(**params)
+
+    def __repr__(self) -> str:
+        return (
+            f"MountainCarContinuous(smooth={self.smooth}, float32_state={self.float32_state}, "
+            f"{self.params})"
+        )
+
+    def reset_bounds(self):
+        return np.array([-0.6, 0.0]), np.array([-0.4, 0.0])
+
+    def action_bounds(self):
+        return np.array([self.params.min_action]), np.array([self.params.max_action])
+
+    def observation_bounds(self):
+        p = self.params
+        if self.smooth:
+            return np.full(2, -np.inf), np.full(2, np.inf)
+        return np.array([p.min_position, -p.max_speed]), np.array([p.max_position, p.max_speed])
+
+    def _round(self, xp, x):
+        if not self.float32_state or x.dtype == xp.float32:
+            return x
+        return xp.astype(xp.astype(x, "float32"), x.dtype)
+
+    def _initial(self, xp, state):
+        return self._round(xp, state)
+
+    def _step(self, xp, p, state, action):
+        position, velocity = unstack_last(xp, state)
+        a = scalar_action(xp, action)
+        force = xp.clip(a, p.min_action, p.max_action)
+        increment = force * p.power - 0.0025 * xp.cos(self._round(xp, 3 * position))
+        if self.float32_state and state.dtype != xp.float32:
+            return self._gymnasium_rounding(xp, p, position, velocity, a, increment)
+        velocity = velocity + increment
+        if not self.smooth:
+            velocity = xp.clip(velocity, -p.max_speed, p.max_speed)
+        position = position + velocity
+        return self._finish(xp, p, position, velocity, a)
+
+    def _gymnasium_rounding(self, xp, p, position, velocity, a, increment):
+        """The step as Gymnasium computes it on its float32 state, with numpy's scalar types:
+        the velocity and position updates run in float64, except that a clipped action (a
+        Python float) makes the velocity update float32, and a clipped speed (a Python float)
+        makes the position update float32."""
+        r = partial(self._round, xp)
+        clipped_action = xp.logical_or(a < p.min_action, a > p.max_action)
+        velocity = xp.where(clipped_action, r(velocity + r(increment)), velocity + increment)
+        if not self.smooth:
+            clipped_speed = xp.logical_or(velocity > p.max_speed, velocity < -p.max_speed)
+            velocity = xp.clip(velocity, -p.max_speed, p.max_speed)
+            velocity = xp.where(clipped_speed, r(velocity), velocity)
+        return self._finish(xp, p, position + velocity, velocity, a)
+
+    def _finish(self, xp, p, position, velocity, a):
+        """The position clip, the wall, termination, reward and the stored state."""
+        if not self.smooth:
+            position = xp.clip(position, p.min_position, p.max_position)
+            at_wall = xp.logical_and(position == p.min_position, velocity < 0)
+            velocity = xp.where(at_wall, xp.zeros_like(velocity), velocity)
+        terminated = xp.logical_and(position >= p.goal_position, velocity >= p.goal_velocity)
+        reward = xp.where(terminated, xp.full_like(a, 100.0), xp.zeros_like(a)) - (a * a) * 0.1
+        state = self._round(xp, xp.stack([position, velocity], axis=-1))
+        return state, state, reward, terminated
+
+    def _draw(self, canvas, s):
+        self._draw_scene(canvas, s[0], self.params.goal_position, (0, 0, 0))
+
+
+class MountainCarShaped(_MountainCarBase):
+    """The original ivy_gym's mountain car: a smooth reward for nearing the flag.
+
+    ``acc = torque_scale * action - g * cos(3 x)``, semi-implicit Euler with ``dt`` (velocity
+    first), no speed limit and no walls; the action in [-1, 1] is not clipped by the core.
+    Reward, of the new state, smooth and in [0, 1]: ``exp(-5 (x - goal_position)**2)``.
+    Initial state: ``x`` uniform in [-0.9, -0.2], velocity 0. Never terminates; time limit
+    (registered task): 500 steps.
+
+    Example:
+        >>> env = ivy_gym.MountainCarShaped()
+        >>> traj = ivy_gym.rollout(env, env.reset((8,), f="torch"), torch.zeros(100, 8, 1))
+    """
+
+    Params = MountainCarShapedParams
+    max_episode_steps = 500
+
+    def reset_bounds(self):
+        return np.array([-0.9, 0.0]), np.array([-0.2, 0.0])
+
+    def _step(self, xp, p, state, action):
+        x, v = unstack_last(xp, state)
+        acc = p.torque_scale * scalar_action(xp, action) - p.g * xp.cos(3 * x)
+        v = v + p.dt * acc
+        x = x + p.dt * v
+        d = x - p.goal_position
+        state = xp.stack([x, v], axis=-1)
+        return state, state, xp.exp(-5.0 * (d * d)), xp.zeros_like(x) > 0
+
+    def _draw(self, canvas, s):
+        reward = math.exp(-5 * (s[0] - self.params.goal_position) ** 2)
+        self._draw_scene(canvas, s[0], self.params.goal_position, reward_color(reward))

@@ -1,0 +1,452 @@
+"""Optimisation through differentiable rollouts, written once for torch, jax and tensorflow.
+
+- :func:`optimise_actions`: an open-loop action sequence (``tanh`` of logits, scaled to the
+  action space) optimised with Adam for the return of one rollout (or of a batch of rollouts).
+- :func:`optimise_policy`: the parameters of a policy (e.g. ``ivy.MLP``) optimised with Adam for
+  the mean return of rollouts from a fresh batch of initial states at every iteration.
+- :func:`gradient_norms`: the norm of the gradient of the return against the horizon, the
+  diagnostic of the known failure of long horizons (gradients that explode or vanish).
+
+Both optimisers take ``discount``, ``window`` (truncated gradients: the state is cut from the
+graph every ``window`` steps, as in short-horizon actor-critic methods) and ``max_grad_norm``,
+run each iteration as one compiled function (``ivy.compile_fn``; by default on jax and
+tensorflow, eagerly on torch, whose compiler unrolls the loop and takes minutes for a
+100-step rollout with its gradients), and return the history: the return and the gradient's norm
+at every iteration.
+
+Example:
+    >>> result = ivy_gym.optimise_actions(ivy_gym.PendulumSmooth(), 100, 200, f="jax")
+    >>> result.returns[0], result.returns[-1]
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import time
+from collections.abc import Callable, Sequence
+
+import numpy as np
+
+import ivy
+from ivy.errors import UnsupportedError
+from ivy.typing import Array, Dtype, Framework, Nest
+from ivy_gym.base import Env
+from ivy_gym.rollouts import discounted_return, rollout
+
+__all__ = [
+    "OptimisationResult",
+    "squash_actions",
+    "optimise_actions",
+    "optimise_policy",
+    "mean_return",
+    "gradient_norms",
+]
+
+
+@dataclasses.dataclass
+class OptimisationResult:
+    """What an optimisation returns.
+
+    Attributes:
+        variables: the optimised variables (the logits of the actions, or the policy's nest).
+        returns: ``(iterations,)`` numpy: the mean (undiscounted) return of the rollouts of each
+            iteration, before its update.
+        grad_norms: ``(iterations,)`` numpy: the global norm of each iteration's gradient
+            (before clipping).
+        final_return: the mean return after the last update.
+        seconds: wall time of all iterations; ``first_seconds`` of the first one (it compiles).
+        actions: the optimised actions ``(T, *B, action_dim)`` (:func:`optimise_actions`).
+        initial_state: the initial states of the action sequence (:func:`optimise_actions`).
+    """
+
+    variables: Nest
+    returns: np.ndarray
+    grad_norms: np.ndarray
+    final_return: float
+    seconds: float
+    first_seconds: float
+    actions: Array | None = None
+    initial_state: Array | None = None
+
+
+def squash_actions(logits: Array, env: Env, *, f: Framework = None) -> Array:
+    """Actions in the action space from unbounded logits: ``mid + half_width * tanh(logits)``.
+
+    Args:
+        logits: ``(..., action_dim)``.
+        env: the environment whose action bounds apply.
+        f: framework name or namespace; by default inferred from ``logits``.
+
+    Returns:
+        Actions of the shape and dtype of ``logits``.
+
+    Example:
+        >>> ivy_gym.squash_actions(np.zeros((3, 1)), ivy_gym.Pendulum())
+        array([[0.], [0.], [0.]])
+    """
+    xp = ivy.get_framework(logits, f=f)
+    mid = xp.asarray(env._boxes["action_mid"], dtype=logits.dtype)
+    half = xp.asarray(env._boxes["action_half"], dtype=logits.dtype)
+    return mid + half * xp.tanh(logits)
+
+
+def _global_norm(xp, grads) -> Array:
+    leaves = ivy.nest.nest_leaves(grads)
+    return xp.sqrt(sum(xp.sum(g * g) for g in leaves))
+
+
+def _differentiable(f: Framework, name: str):
+    xp = ivy.get_framework(f=f)
+    if xp.backend == "numpy":
+        raise UnsupportedError(
+            f"ivy_gym.{name} needs gradients, which the numpy backend does not have; pass "
+            f"f='torch', 'jax' or 'tensorflow'."
+        )
+    return xp
+
+
+def _run(xp, step, carry, iterations, compile, callback=None, to_user=lambda v: v):
+    """Call ``carry = step(*carry)`` ``iterations`` times (compiled if asked), or until
+    ``callback(iteration, variables)`` returns True; returns the final carry, the returns, the
+    gradient norms and the timings."""
+    fn = ivy.compile_fn(step, f=xp) if compile else step
+    returns, norms = [], []
+    start = time.perf_counter()
+    first = 0.0
+    for i in range(iterations):
+        ret, norm, *carry = fn(*carry)
+        returns.append(ret)
+        norms.append(norm)
+        if i == 0:
+            first = time.perf_counter() - start
+        if callback is not None and callback(i, to_user(carry[0])):
+            break
+    returns = np.array([float(ivy.to_numpy(r)) for r in returns])
+    norms = np.array([float(ivy.to_numpy(n)) for n in norms])
+    return carry, returns, norms, time.perf_counter() - start, first
+
+
+def _update(xp, opt, loss_fn, v, opt_state, max_grad_norm):
+    loss, grads, mean_ret = ivy.execute_with_gradients(loss_fn, v)
+    if max_grad_norm is None:
+        norm = _global_norm(xp, grads)
+    else:
+        grads, norm = xp.clip_by_global_norm(grads, max_grad_norm)
+    v, opt_state = opt.step(v, grads, opt_state)
+    return mean_ret, norm, v, opt_state
+
+
+def optimise_actions(
+    env: Env,
+    horizon: int,
+    iterations: int,
+    *,
+    initial_state: Array | None = None,
+    batch_shape: Sequence[int] = (),
+    lr: float = 0.1,
+    discount: float = 1.0,
+    window: int | None = None,
+    max_grad_norm: float | None = None,
+    init_scale: float = 1.0,
+    initial_logits: Array | None = None,
+    seed: int | None = None,
+    dtype: Dtype = "float32",
+    compile: bool | None = None,
+    callback: Callable[[int, Array], bool | None] | None = None,
+    f: Framework = None,
+) -> OptimisationResult:
+    """Optimise an open-loop action sequence through a differentiable rollout (Adam).
+
+    The actions are ``squash_actions(logits)``; the loss is minus the mean discounted return of
+    the rollouts from ``initial_state``.
+
+    Args:
+        env: the environment.
+        horizon: number of steps ``T``.
+        iterations: number of Adam updates.
+        initial_state: ``(*B, state_dim)``; by default ``env.reset(batch_shape)``.
+        batch_shape: the batch of initial states to draw when ``initial_state`` is None.
+        lr: Adam's learning rate.
+        discount: discount factor of the return.
+        window: cut gradients every ``window`` steps (a divisor of ``horizon``), or None.
+        max_grad_norm: clip the gradient's global norm, or None.
+        init_scale: initial logits are uniform in ``[-init_scale, init_scale]``.
+        initial_logits: the initial logits ``(T, *B, action_dim)`` instead (any backend's array
+            or numpy), e.g. the same on every backend.
+        seed: ``ivy.seed`` for the backend first (None: leave the generator as it is).
+        dtype: dtype of the states and actions.
+        compile: run each iteration compiled; by default on jax and tensorflow.
+        callback: ``callback(iteration, actions)`` after each update (the actions after it);
+            returning True stops the optimisation (e.g. once the task is solved).
+        f: framework (torch, jax or tensorflow); by default the global framework or that of
+            ``initial_state``.
+
+    Returns:
+        An :class:`OptimisationResult` with ``actions`` ``(T, *B, action_dim)``.
+
+    Example:
+        >>> r = ivy_gym.optimise_actions(ivy_gym.CartPoleSwingUp(), 100, 300, f="jax")
+        >>> frames = ivy_gym.render_trajectory(env, ivy_gym.rollout(env, r.initial_state,
+        ...                                                          r.actions).states)
+    """
+    if initial_state is not None and f is None:
+        f = ivy.get_framework(initial_state)
+    xp = _differentiable(f, "optimise_actions")
+    if seed is not None:
+        ivy.seed(seed, f=xp)
+    if initial_state is None:
+        initial_state = env.reset(tuple(batch_shape), dtype=dtype, f=xp)
+    dtype = initial_state.dtype
+    batch = tuple(initial_state.shape[:-1])
+    shape = (horizon, *batch, env.action_dim)
+    if initial_logits is None:
+        logits = xp.random_uniform(-init_scale, init_scale, shape, dtype=dtype)
+    else:
+        logits = xp.asarray(ivy.to_numpy(initial_logits), dtype=dtype)
+        if tuple(logits.shape) != shape:
+            raise ValueError(
+                f"optimise_actions: initial_logits must have shape {shape}, got "
+                f"{tuple(logits.shape)}."
+            )
+    opt = ivy.Adam(lr, f=xp)
+
+    def loss_fn(logits):
+        traj = rollout(env, initial_state, squash_actions(logits, env, f=xp), window=window, f=xp)
+        ret = discounted_return(traj.rewards, discount, f=xp)
+        return -xp.mean(ret), xp.mean(xp.sum(traj.rewards, axis=0))
+
+    def step(logits, opt_state):
+        return _update(xp, opt, loss_fn, logits, opt_state, max_grad_norm)
+
+    if compile is None:
+        compile = xp.backend != "torch"
+    carry = (logits, opt.init(logits))
+    (logits, _), returns, norms, seconds, first = _run(
+        xp, step, carry, iterations, compile, callback, lambda v: squash_actions(v, env, f=xp)
+    )
+    actions = squash_actions(logits, env, f=xp)
+    final = rollout(env, initial_state, actions, f=xp)
+    final_return = float(ivy.to_numpy(xp.mean(xp.sum(final.rewards, axis=0))))
+    return OptimisationResult(
+        logits, returns, norms, final_return, seconds, first, actions, initial_state
+    )
+
+
+def optimise_policy(
+    env: Env,
+    policy: Callable[[Array, Nest], Array],
+    horizon: int,
+    iterations: int,
+    *,
+    v: Nest = None,
+    batch_size: int = 64,
+    lr: float = 1e-3,
+    discount: float = 1.0,
+    window: int | None = None,
+    max_grad_norm: float | None = None,
+    autoreset: bool = False,
+    seed: int | None = None,
+    dtype: Dtype = "float32",
+    compile: bool | None = None,
+    callback: Callable[[int, Nest], bool | None] | None = None,
+    f: Framework = None,
+) -> OptimisationResult:
+    """Optimise a policy's parameters through differentiable rollouts (Adam): at every
+    iteration, a fresh batch of ``batch_size`` initial states, ``horizon`` steps of
+    ``policy(obs, v)``, and minus the mean discounted return as the loss.
+
+    Args:
+        env: the environment.
+        policy: ``policy(obs, v) -> action`` in the action space (an ``ivy.Module`` such as
+            ``ivy.MLP(env.observation_dim, (64, 64), env.action_dim,
+            output_activation="tanh")`` is called as ``policy(obs, v=v)``).
+        horizon: steps per rollout.
+        iterations: number of Adam updates.
+        v: the initial parameters; by default ``policy.v`` (for a module).
+        batch_size: initial states per iteration.
+        lr, discount, window, max_grad_norm: as for :func:`optimise_actions`.
+        autoreset: restart environments that terminate within the horizon.
+        seed: ``ivy.seed`` for the backend first (None: leave the generator as it is).
+        dtype: dtype of the states.
+        compile: run each iteration compiled; by default on jax and tensorflow.
+        callback: ``callback(iteration, v)`` after each update; True stops the optimisation.
+        f: framework; by default that of ``v``.
+
+    Returns:
+        An :class:`OptimisationResult` whose ``variables`` are the optimised parameters.
+
+    Example:
+        >>> env = ivy_gym.PendulumSmooth()
+        >>> mlp = ivy.MLP(3, (64, 64), 1, activation="tanh", output_activation="tanh", f="jax")
+        >>> result = ivy_gym.optimise_policy(env, mlp, 100, 500)
+        >>> mlp.v = result.variables
+    """
+    if v is None:
+        v = getattr(policy, "v", None)
+        if v is None:
+            raise ValueError("optimise_policy: give v= (the policy's parameters).")
+    if f is None:
+        f = ivy.get_framework(v)
+    xp = _differentiable(f, "optimise_policy")
+    if seed is not None:
+        ivy.seed(seed, f=xp)
+    opt = ivy.Adam(lr, f=xp)
+
+    def loss_fn(v):
+        state = env.reset((batch_size,), dtype=dtype, f=xp)
+        traj = rollout(
+            env,
+            state,
+            policy=policy,
+            v=v,
+            horizon=horizon,
+            autoreset=autoreset,
+            window=window,
+            f=xp,
+        )
+        ret = discounted_return(traj.rewards, discount, f=xp)
+        return -xp.mean(ret), xp.mean(xp.sum(traj.rewards, axis=0))
+
+    def step(v, opt_state):
+        return _update(xp, opt, loss_fn, v, opt_state, max_grad_norm)
+
+    if compile is None:
+        compile = xp.backend != "torch"
+    (v, _), returns, norms, seconds, first = _run(
+        xp, step, (v, opt.init(v)), iterations, compile, callback
+    )
+    final_return = mean_return(env, horizon, policy=policy, v=v, batch_size=batch_size, f=xp)
+    return OptimisationResult(v, returns, norms, final_return, seconds, first)
+
+
+def mean_return(
+    env: Env,
+    horizon: int,
+    *,
+    policy: Callable[[Array, Nest], Array] | None = None,
+    v: Nest = None,
+    batch_size: int = 64,
+    autoreset: bool = False,
+    dtype: Dtype = "float32",
+    compile: bool | None = None,
+    f: Framework = None,
+) -> float:
+    """The mean return of ``batch_size`` rollouts of ``horizon`` steps from fresh initial states,
+    under ``policy(obs, v)``, or under uniformly random actions when ``policy`` is None.
+
+    Args:
+        env: the environment.
+        horizon: steps per rollout.
+        policy, v: the policy and its parameters, or None for random actions.
+        batch_size: number of rollouts.
+        autoreset: restart environments that terminate within the horizon.
+        dtype: dtype of the states.
+        compile: run the rollouts compiled; by default on jax and tensorflow (an eager jax
+            rollout compiles each of its operations at its first call).
+        f: framework; by default that of ``v`` or the global framework.
+
+    Returns:
+        The mean undiscounted return, a float.
+
+    Example:
+        >>> ivy_gym.mean_return(ivy_gym.PendulumSmooth(), 100, f="torch")  # a random policy
+    """
+    xp = ivy.get_framework(v, f=f) if v is not None else ivy.get_framework(f=f)
+    if compile is None:
+        compile = xp.backend in ("jax", "tensorflow")
+
+    def run(v):
+        state = env.reset((batch_size,), dtype=dtype, f=xp)
+        if policy is None:
+            u = xp.random_uniform(shape=(horizon, batch_size, env.action_dim), dtype=dtype)
+            low = xp.asarray(env._boxes["action_low"], dtype=dtype)
+            actions = low + xp.asarray(env._boxes["action_width"], dtype=dtype) * u
+            traj = rollout(env, state, actions, autoreset=autoreset, f=xp)
+        else:
+            traj = rollout(
+                env, state, policy=policy, v=v, horizon=horizon, autoreset=autoreset, f=xp
+            )
+        return xp.mean(xp.sum(traj.rewards, axis=0))
+
+    if compile:
+        run = ivy.compile_fn(run, f=xp)
+    return float(ivy.to_numpy(run(v)))
+
+
+def gradient_norms(
+    env: Env,
+    horizons: Sequence[int],
+    *,
+    policy: Callable[[Array, Nest], Array] | None = None,
+    v: Nest = None,
+    batch_size: int = 16,
+    discount: float = 1.0,
+    window: int | None = None,
+    dtype: Dtype = "float32",
+    compile: bool | None = None,
+    f: Framework = None,
+) -> dict[str, np.ndarray]:
+    """The norm of the gradient of the mean return against the horizon.
+
+    With ``policy``, the gradient is taken with respect to its parameters ``v`` (the rollouts
+    follow the policy); without, with respect to an open-loop action sequence of zero logits
+    (zero-centred actions). The same batch of initial states serves every horizon. Long horizons
+    of chaotic dynamics give gradients whose norm grows exponentially with the horizon (or
+    vanishes): this measures it.
+
+    Args:
+        env: the environment.
+        horizons: the horizons to measure, e.g. ``[10, 20, 50, 100, 200]``.
+        policy, v: the policy and its parameters (or None for open-loop actions).
+        batch_size: initial states.
+        discount, window: as for :func:`rollout` and :func:`optimise_actions`.
+        dtype: dtype of the states.
+        compile: compile each horizon's gradient; by default on jax and tensorflow.
+        f: framework (torch, jax or tensorflow).
+
+    Returns:
+        ``{"horizon": (H,), "grad_norm": (H,), "return": (H,)}`` numpy arrays (the return is the
+        mean undiscounted return at that horizon).
+
+    Example:
+        >>> d = ivy_gym.gradient_norms(ivy_gym.CartPoleSwingUp(), [10, 50, 100], f="jax")
+    """
+    if v is not None and f is None:
+        f = ivy.get_framework(v)
+    xp = _differentiable(f, "gradient_norms")
+    if compile is None:
+        compile = xp.backend != "torch"
+    state = env.reset((batch_size,), dtype=dtype, f=xp)
+    norms, rets = [], []
+    for horizon in horizons:
+        use_window = window if window is not None and window < horizon else None
+
+        def loss_fn(variables, horizon=horizon, use_window=use_window):
+            if policy is None:
+                actions = squash_actions(variables, env, f=xp)
+                traj = rollout(env, state, actions, window=use_window, f=xp)
+            else:
+                traj = rollout(
+                    env, state, policy=policy, v=variables, horizon=horizon, window=use_window, f=xp
+                )
+            ret = discounted_return(traj.rewards, discount, f=xp)
+            return -xp.mean(ret), xp.mean(xp.sum(traj.rewards, axis=0))
+
+        def measure(variables, loss_fn=loss_fn):
+            _, grads, ret = ivy.execute_with_gradients(loss_fn, variables)
+            return _global_norm(xp, grads), ret
+
+        if policy is None:
+            variables = xp.zeros((horizon, batch_size, env.action_dim), dtype=dtype)
+        else:
+            variables = v
+        if compile:
+            measure = ivy.compile_fn(measure, f=xp)
+        norm, ret = measure(variables)
+        norms.append(float(ivy.to_numpy(norm)))
+        rets.append(float(ivy.to_numpy(ret)))
+    return {
+        "horizon": np.asarray(horizons),
+        "grad_norm": np.asarray(norms),
+        "return": np.asarray(rets),
+    }

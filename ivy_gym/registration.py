@@ -1,0 +1,106 @@
+"""Gymnasium ids of the ivy_gym tasks, registered on ``import ivy_gym``.
+
+``gymnasium.make("ivy_gym/Pendulum-v1", framework="torch", dtype="float64")`` builds a
+:class:`~ivy_gym.facades.GymnasiumEnv`; ``gymnasium.make("ivy_gym:ivy_gym/Pendulum-v1")`` imports
+ivy_gym first, so it works without the import. ``gymnasium.make_vec(id, num_envs=N,
+vectorization_mode="vector_entry_point", framework=...)`` builds a native
+:class:`~ivy_gym.facades.GymnasiumVectorEnv`. Further keyword arguments go to the core
+(physical parameters, ``smooth=True``, ``num_joints=3``...).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import gymnasium
+
+from ivy.typing import Dtype, Framework
+from ivy_gym.cartpole import CartPole, CartPoleSwingUp
+from ivy_gym.facades import GymnasiumEnv, GymnasiumVectorEnv
+from ivy_gym.mountain_car import MountainCarContinuous, MountainCarShaped
+from ivy_gym.pendulum import Pendulum, PendulumSmooth
+from ivy_gym.reacher import Reacher
+from ivy_gym.swimmer import Swimmer
+
+__all__ = ["TASKS", "make_env", "make_vector_env", "register_envs"]
+
+#: Gymnasium id (without the ``ivy_gym/`` namespace) -> (core class, discrete actions,
+#: reward threshold).
+TASKS: dict[str, tuple[type, bool, float | None]] = {
+    "CartPole-v1": (CartPole, True, 475.0),
+    "CartPoleSwingUp-v0": (CartPoleSwingUp, False, None),
+    "Pendulum-v1": (Pendulum, False, None),
+    "PendulumSmooth-v0": (PendulumSmooth, False, None),
+    "MountainCarContinuous-v0": (MountainCarContinuous, False, 90.0),
+    "MountainCarShaped-v0": (MountainCarShaped, False, None),
+    "Reacher-v0": (Reacher, False, None),
+    "Swimmer-v0": (Swimmer, False, None),
+}
+
+
+def make_env(
+    task: str,
+    *,
+    framework: Framework = "numpy",
+    dtype: Dtype = "float32",
+    render_mode: str | None = None,
+    **core_kwargs: Any,
+) -> GymnasiumEnv:
+    """The Gymnasium entry point of ``ivy_gym/<task>``.
+
+    Example:
+        >>> env = make_env("Pendulum-v1", framework="jax", g=9.81)
+    """
+    cls, discrete, _ = TASKS[task]
+    return GymnasiumEnv(
+        cls(**core_kwargs),
+        framework=framework,
+        dtype=dtype,
+        render_mode=render_mode,
+        discrete=discrete,
+    )
+
+
+def make_vector_env(
+    task: str,
+    num_envs: int = 1,
+    *,
+    framework: Framework = "numpy",
+    dtype: Dtype = "float32",
+    render_mode: str | None = None,
+    max_episode_steps: int | None = None,
+    compile: bool | None = None,
+    **core_kwargs: Any,
+) -> GymnasiumVectorEnv:
+    """The Gymnasium vector entry point of ``ivy_gym/<task>``.
+
+    Example:
+        >>> envs = make_vector_env("CartPole-v1", 64, framework="torch", max_episode_steps=500)
+    """
+    cls, discrete, _ = TASKS[task]
+    return GymnasiumVectorEnv(
+        cls(**core_kwargs),
+        num_envs,
+        framework=framework,
+        dtype=dtype,
+        max_episode_steps=max_episode_steps,
+        render_mode=render_mode,
+        discrete=discrete,
+        compile=compile,
+    )
+
+
+def register_envs() -> None:
+    """Register every ``ivy_gym/<task>`` id with Gymnasium (done by ``import ivy_gym``)."""
+    for task, (cls, _, threshold) in TASKS.items():
+        env_id = f"ivy_gym/{task}"
+        if env_id in gymnasium.registry:
+            continue
+        gymnasium.register(
+            id=env_id,
+            entry_point="ivy_gym.registration:make_env",
+            vector_entry_point="ivy_gym.registration:make_vector_env",
+            max_episode_steps=cls.max_episode_steps,
+            reward_threshold=threshold,
+            kwargs={"task": task},
+        )

@@ -1,0 +1,212 @@
+"""The Gymnasium facades: registration, ``check_env`` on every task and backend, seeding, the
+state in Gymnasium's layout, clear errors for bad actions, and the native vector environment
+with Gymnasium's next-step autoreset."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import gymnasium
+import numpy as np
+import pytest
+from gymnasium.utils.env_checker import check_env
+from gymnasium.vector import AutoresetMode
+
+import ivy_gym
+from tests.helpers import native, numpy_of
+
+pytestmark = pytest.mark.filterwarnings(
+    "ignore:.*Box (observation|action) space.*:UserWarning",
+    "ignore:.*symmetric and normalized space.*:UserWarning",
+    "ignore:.*os.fork.*:RuntimeWarning",
+)
+
+IDS = sorted(ivy_gym.TASKS)
+
+
+@pytest.mark.parametrize("task", IDS)
+def test_check_env_passes(task, backend):
+    env = gymnasium.make(f"ivy_gym/{task}", framework=backend, render_mode="rgb_array")
+    check_env(env.unwrapped)
+    frame = env.unwrapped.render()
+    assert frame.shape == (400, 400, 3) and frame.dtype == np.uint8
+    assert env.spec.max_episode_steps == ivy_gym.TASKS[task][0].max_episode_steps
+
+
+def test_make_without_importing_and_no_framework_imported():
+    code = (
+        "import sys, gymnasium\n"
+        "env = gymnasium.make('ivy_gym:ivy_gym/Pendulum-v1')\n"
+        "obs, _ = env.reset(seed=0)\n"
+        "env.step(env.action_space.sample())\n"
+        "print(sorted(m for m in ('torch', 'jax', 'tensorflow') if m in sys.modules))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]", out.stderr
+
+
+@pytest.mark.parametrize("dtype", ["float32", "float64"])
+def test_reset_seed_reproduces_observations(dtype):
+    env = gymnasium.make("ivy_gym/Swimmer-v0", framework="torch", dtype=dtype)
+    first = [env.reset(seed=5)[0] for _ in range(2)]
+    other = env.reset(seed=6)[0]
+    np.testing.assert_array_equal(first[0], first[1])
+    assert not np.array_equal(first[0], other)
+    assert first[0].dtype == np.dtype(dtype) and env.observation_space.dtype == np.dtype(dtype)
+    steps = []
+    for _ in range(2):
+        env.reset(seed=5)
+        steps.append([env.step(np.array([0.5, -0.5]))[0] for _ in range(3)])
+    np.testing.assert_array_equal(np.array(steps[0]), np.array(steps[1]))
+
+
+def test_state_reads_and_writes_the_core_state(backend):
+    env = gymnasium.make("ivy_gym/Pendulum-v1", framework=backend, dtype="float64").unwrapped
+    env.reset(seed=0)
+    env.state = np.array([0.5, -1.0])
+    assert env.state.dtype == np.float64
+    np.testing.assert_array_equal(env.state, [0.5, -1.0])
+    obs, reward, *_ = env.step(np.array([1.0]))
+    core = ivy_gym.Pendulum()
+    state, expected, r, _ = core.step(np.array([0.5, -1.0]), np.array([1.0]))
+    np.testing.assert_allclose(obs, expected, rtol=1e-14)
+    np.testing.assert_allclose(env.state, state, rtol=1e-14)
+    assert reward == pytest.approx(float(r), rel=1e-14)
+    with pytest.raises(ValueError, match="shape"):
+        env.state = np.zeros(3)
+
+
+@pytest.mark.parametrize(
+    "task,action,message",
+    [
+        ("Pendulum-v1", np.array([2.5]), "outside the action space"),
+        ("Pendulum-v1", np.array([np.nan]), "outside the action space"),
+        ("Pendulum-v1", np.array([0.5, 0.5]), "shape"),
+        ("Pendulum-v1", 0.5, "shape"),
+        ("Reacher-v0", np.array([0.5]), "shape"),
+        ("MountainCarContinuous-v0", np.array([-1.01]), "outside the action space"),
+        ("CartPole-v1", 2, "0 \\(push left\\) or 1"),
+        ("CartPole-v1", 0.5, "integer"),
+        ("CartPole-v1", np.array([1]), "integer"),
+    ],
+)
+def test_bad_actions_get_clear_errors(task, action, message):
+    env = gymnasium.make(f"ivy_gym/{task}").unwrapped
+    env.reset(seed=0)
+    with pytest.raises(ValueError, match=message):
+        env.step(action)
+
+
+def test_step_before_reset_and_bad_options():
+    env = gymnasium.make("ivy_gym/Pendulum-v1").unwrapped
+    with pytest.raises(RuntimeError, match="reset"):
+        env.step(np.array([0.0]))
+    with pytest.raises(ValueError, match="float32"):
+        gymnasium.make("ivy_gym/Pendulum-v1", dtype="int32")
+    with pytest.raises(ValueError, match="render_mode"):
+        gymnasium.make("ivy_gym/Pendulum-v1", render_mode="human")
+
+
+def test_core_keyword_arguments_reach_the_core():
+    env = gymnasium.make("ivy_gym/Reacher-v0", num_joints=3, dt=0.1).unwrapped
+    assert env.core.num_joints == 3 and env.core.params.dt == 0.1
+    assert env.action_space.shape == (3,) and env.observation_space.shape == (11,)
+    pendulum = gymnasium.make("ivy_gym/Pendulum-v1", g=9.81, smooth=True).unwrapped
+    assert pendulum.core.params.g == 9.81 and pendulum.core.smooth
+
+
+# ----------------------------------------------------------------------------------------------
+# The vector environment
+# ----------------------------------------------------------------------------------------------
+
+
+def _vec(task, n, backend="numpy", **kwargs):
+    return gymnasium.make_vec(
+        f"ivy_gym/{task}",
+        num_envs=n,
+        vectorization_mode="vector_entry_point",
+        framework=backend,
+        **kwargs,
+    )
+
+
+def test_vector_env_autoresets_at_the_next_step(backend):
+    envs = _vec("CartPole-v1", 3, backend)
+    assert envs.metadata["autoreset_mode"] == AutoresetMode.NEXT_STEP
+    assert isinstance(envs, ivy_gym.GymnasiumVectorEnv)
+    obs, _ = envs.reset(seed=1)
+    assert obs.shape == (3, 4) and envs.observation_space.contains(obs)
+    done_before = np.zeros(3, bool)
+    for _ in range(60):
+        obs, reward, terminated, truncated, _ = envs.step(np.ones(3, np.int64))
+        restarted = done_before
+        np.testing.assert_array_equal(reward[restarted], 0.0)
+        assert not terminated[restarted].any() and not truncated[restarted].any()
+        assert np.all(np.abs(obs[restarted]) <= 0.05)  # a fresh initial observation
+        np.testing.assert_array_equal(reward[~restarted], 1.0)
+        if restarted.any():
+            break
+        done_before = terminated | truncated
+    else:
+        pytest.fail("no environment terminated")
+
+
+def test_vector_env_truncates_at_the_time_limit():
+    envs = _vec("Pendulum-v1", 2, max_episode_steps=4)
+    envs.reset(seed=0)
+    flags = [envs.step(np.zeros((2, 1), np.float32))[3] for _ in range(6)]
+    np.testing.assert_array_equal(np.array(flags)[:, 0], [False, False, False, True, False, False])
+
+
+def test_vector_env_steps_every_copy_in_one_call():
+    calls = []
+
+    class Counted(ivy_gym.PendulumSmooth):
+        def _step(self, xp, p, state, action):
+            calls.append(tuple(state.shape))
+            return super()._step(xp, p, state, action)
+
+    envs = ivy_gym.GymnasiumVectorEnv(Counted(), 64, framework="numpy")
+    envs.reset(seed=0)
+    for _ in range(5):
+        envs.step(envs.action_space.sample())
+    assert calls == [(64, 2)] * 5
+
+
+def test_vector_env_reset_seed_and_errors():
+    envs = _vec("Reacher-v0", 4, backend="torch", dtype="float64")
+    a = envs.reset(seed=3)[0]
+    b = envs.reset(seed=3)[0]
+    np.testing.assert_array_equal(a, b)
+    assert len({tuple(row) for row in a}) == 4  # every copy draws its own state
+    with pytest.raises(ValueError, match="shape"):
+        envs.step(np.zeros((3, 2)))
+    with pytest.raises(ValueError, match="outside"):
+        envs.step(np.full((4, 2), 1.5))
+    frames = _vec("Reacher-v0", 2, render_mode="rgb_array")
+    frames.reset(seed=0)
+    assert [f.shape for f in frames.render()] == [(400, 400, 3)] * 2
+
+
+def test_vector_env_compiled_step_equals_eager(graph_backend):
+    eager = _vec("CartPoleSwingUp-v0", 8, graph_backend, dtype="float64", compile=False)
+    compiled = _vec("CartPoleSwingUp-v0", 8, graph_backend, dtype="float64", compile=True)
+    actions = np.random.default_rng(0).uniform(-1, 1, size=(5, 8, 1))
+    outs = []
+    for envs in (eager, compiled):
+        envs.reset(seed=4)
+        outs.append([envs.step(a)[:2] for a in actions])
+    for (o1, r1), (o2, r2) in zip(*outs):
+        np.testing.assert_allclose(o1, o2, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(r1, r2, rtol=1e-12, atol=1e-12)
+
+
+def test_vector_env_matches_the_core(backend):
+    envs = _vec("MountainCarShaped-v0", 3, backend, dtype="float64")
+    envs.reset(seed=0)
+    start = envs.unwrapped.state.copy()
+    actions = np.random.default_rng(1).uniform(-1, 1, size=(4, 3, 1))
+    obs = [envs.step(a)[0] for a in actions]
+    traj = ivy_gym.rollout(ivy_gym.MountainCarShaped(), native(start, backend), actions)
+    np.testing.assert_allclose(np.array(obs), numpy_of(traj.observations), rtol=1e-13)

@@ -1,0 +1,126 @@
+"""Optimisation through rollouts, on small budgets: open-loop actions and policies improve their
+return on torch, jax and tensorflow; the options (windows, discount, clipping) run; the
+diagnostics have the right shapes; numpy refuses clearly."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import ivy
+import ivy_gym
+from ivy.errors import UnsupportedError
+from tests.helpers import native, numpy_of
+
+pytestmark = pytest.mark.filterwarnings("ignore:`torch.jit.script_method`:DeprecationWarning")
+
+
+def test_optimise_actions_improves_the_return(diff_backend):
+    env = ivy_gym.PendulumSmooth()
+    state = native(np.array([[2.5, 0.0], [-2.0, 0.5]]), diff_backend)
+    result = ivy_gym.optimise_actions(env, 30, 25, initial_state=state, lr=0.2, seed=0)
+    assert numpy_of(result.actions).shape == (30, 2, 1)
+    assert np.all(np.abs(numpy_of(result.actions)) <= 1.0)
+    assert result.returns.shape == (25,) and result.grad_norms.shape == (25,)
+    assert np.all(np.isfinite(result.grad_norms)) and np.all(result.grad_norms > 0)
+    assert result.final_return > result.returns[0] + 1.0
+    # the final actions, replayed, give the final return
+    traj = ivy_gym.rollout(env, state, result.actions)
+    assert float(numpy_of(ivy.mean(ivy.sum(traj.rewards, axis=0)))) == pytest.approx(
+        result.final_return, rel=1e-5
+    )
+
+
+def _quick_backend(request):
+    """torch if selected (it runs eagerly by default: no compilation), else another
+    differentiable backend."""
+    for backend in ("torch", "jax", "tensorflow"):
+        if backend in request.config.ivy_backends:
+            return backend
+    pytest.skip("needs a differentiable backend")
+
+
+def test_optimise_actions_options_run_and_seed_repeats(request):
+    backend = _quick_backend(request)
+    env = ivy_gym.CartPoleSwingUp()
+    options = dict(batch_shape=(3,), discount=0.95, window=5, max_grad_norm=1.0, dtype="float64")
+    result = ivy_gym.optimise_actions(env, 20, 5, f=backend, seed=1, **options)
+    assert numpy_of(result.initial_state).shape == (3, 4)
+    assert numpy_of(result.actions).dtype == np.float64
+    again = ivy_gym.optimise_actions(env, 20, 5, f=backend, seed=1, **options)
+    np.testing.assert_allclose(again.returns, result.returns, rtol=1e-10)
+
+
+def test_callback_sees_the_actions_and_can_stop(request):
+    backend = _quick_backend(request)
+    env = ivy_gym.Pendulum()
+    seen = []
+
+    def callback(iteration, actions):
+        seen.append((iteration, numpy_of(actions).shape, float(np.abs(numpy_of(actions)).max())))
+        return iteration == 2
+
+    result = ivy_gym.optimise_actions(env, 10, 50, f=backend, callback=callback, seed=0)
+    assert [s[0] for s in seen] == [0, 1, 2] and result.returns.shape == (3,)
+    assert all(shape == (10, 1) and largest <= 2.0 for _, shape, largest in seen)
+
+
+def test_optimise_policy_improves_the_mean_return(request):
+    backend = _quick_backend(request)
+    env = ivy_gym.CartPoleSwingUp()
+    ivy.seed(0)
+    mlp = ivy.MLP(5, (8,), 1, activation="tanh", output_activation="tanh", f=backend)
+
+    def evaluate(v):
+        ivy.seed(1)  # the same initial states before and after
+        return ivy_gym.mean_return(env, 20, policy=mlp, v=v, batch_size=64)
+
+    before = evaluate(mlp.v)
+    result = ivy_gym.optimise_policy(env, mlp, 20, 30, batch_size=16, lr=0.03, seed=0)
+    assert evaluate(result.variables) > before + 0.3  # of at most 20, seeded
+    assert ivy.nest.nest_structure(result.variables) == ivy.nest.nest_structure(mlp.v)
+
+
+def test_optimise_policy_on_every_differentiable_backend(diff_backend):
+    env = ivy_gym.CartPoleSwingUp()
+    ivy.seed(0)
+    mlp = ivy.MLP(5, (8,), 1, activation="tanh", output_activation="tanh", f=diff_backend)
+    result = ivy_gym.optimise_policy(env, mlp, 10, 3, batch_size=4)
+    assert result.returns.shape == (3,) and np.all(np.isfinite(result.grad_norms))
+    changed = [
+        not np.allclose(numpy_of(a), numpy_of(b))
+        for a, b in zip(ivy.nest.nest_leaves(result.variables), ivy.nest.nest_leaves(mlp.v))
+    ]
+    assert all(changed)
+
+
+def test_gradient_norms_per_horizon(diff_backend):
+    env = ivy_gym.CartPoleSwingUp()
+    ivy.seed(1)
+    open_loop = ivy_gym.gradient_norms(env, [5, 10], batch_size=4, f=diff_backend)
+    assert open_loop["horizon"].tolist() == [5, 10]
+    assert np.all(open_loop["grad_norm"] > 0) and np.all(np.isfinite(open_loop["grad_norm"]))
+    w = native(np.random.default_rng(0).normal(size=(5, 1)), diff_backend)
+
+    def policy(obs, v):
+        return ivy.tanh(ivy.matmul(obs, v))
+
+    closed = ivy_gym.gradient_norms(
+        env, [10], policy=policy, v=w, batch_size=4, window=5, dtype="float64"
+    )
+    assert closed["grad_norm"].shape == (1,) and closed["return"].shape == (1,)
+
+
+def test_numpy_refuses_to_optimise():
+    with pytest.raises(UnsupportedError, match="torch"):
+        ivy_gym.optimise_actions(ivy_gym.PendulumSmooth(), 10, 2, f="numpy")
+    with pytest.raises(UnsupportedError):
+        ivy_gym.gradient_norms(ivy_gym.PendulumSmooth(), [5], f="numpy")
+
+
+def test_squash_actions_maps_to_the_action_box(backend):
+    env = ivy_gym.Pendulum()  # [-2, 2]
+    logits = native(np.array([[-50.0], [0.0], [0.5], [50.0]]), backend)
+    np.testing.assert_allclose(
+        numpy_of(ivy_gym.squash_actions(logits, env)), [[-2.0], [0.0], [2 * np.tanh(0.5)], [2.0]]
+    )
