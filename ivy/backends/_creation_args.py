@@ -21,3 +21,19 @@ def linspace_dtype(start, stop, dtype, backend: str) -> str | None:
             backend=backend,
         )
     return None
+
+
+def check_fill_value(fill_value, dtype_name: str, backend: str) -> None:
+    """A Python int ``fill_value`` outside the range of the integer dtype ``dtype_name`` raises
+    OverflowError (as numpy does), never wraps around."""
+    if type(fill_value) is not int or not dtype_name.startswith(("int", "uint")):
+        return
+    import numpy as np
+
+    info = np.iinfo(dtype_name)
+    if not info.min <= fill_value <= info.max:
+        raise OverflowError(
+            f"ivy.full ({backend} backend), argument 'fill_value': Python integer "
+            f"{fill_value} is out of bounds for {dtype_name} ({info.min} to {info.max}); use a "
+            "wider dtype."
+        )

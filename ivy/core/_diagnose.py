@@ -27,6 +27,7 @@ from typing import Any
 
 from ivy.errors import (
     AxisError,
+    DtypeError,
     IndexOutOfBoundsError,
     InvalidArgumentError,
     InvalidValueError,
@@ -43,7 +44,9 @@ _NO_AXIS_CHECK = frozenset({"tensordot", "fftn", "ifftn", "rfftn", "irfftn"})  #
 
 # Functions that broadcast all their array arguments together.
 _BROADCASTING_GROUPS = frozenset({"elementwise"})
-_BROADCASTING = frozenset({"where", "clip", "isclose", "allclose", "safe_divide", "safe_atan2"})
+_BROADCASTING = frozenset(
+    {"where", "clip", "isclose", "allclose", "safe_divide", "safe_atan2", "broadcast_arrays"}
+)
 
 _KERNEL_MESSAGES = (
     re.compile(r"not implemented for '(\w+)'"),  # torch
@@ -90,7 +93,17 @@ def explain(ns: Any, name: str, err: Exception, args: tuple, kwargs: dict) -> Ex
         return err
     try:
         bound = _bind(name, args, kwargs)
-        for check in (_unsupported_dtype, _axes, _squeeze, _broadcast, _indices):
+        checks = (
+            _refused_dtype,
+            _empty_reduction,
+            _unsupported_dtype,
+            _axes,
+            _squeeze,
+            _broadcast,
+            _shapes,
+            _indices,
+        )
+        for check in checks:
             try:
                 found = check(ns, name, bound, err)
             except InvalidArgumentError as typed:  # a check that raises what it finds
@@ -122,6 +135,88 @@ def _dtype_of(ns: Any, value: Any) -> str | None:
 
 def _arrays(bound: dict[str, Any]) -> list[tuple[str, Any]]:
     return [(k, v) for k, v in bound.items() if _is_array(v)]
+
+
+def _refused_dtype(ns: Any, name: str, bound: dict, err: Exception) -> Exception | None:
+    """A dtype that the function takes on no backend (``_dtype_rules.REFUSED_KINDS``)."""
+    from ivy.core._dtype_rules import refused_kind
+
+    arrays = _arrays(bound)
+    names = [_dtype_of(ns, v) for _, v in arrays]
+    if not names or None in names:
+        return None
+    scalars = [v for v in bound.values() if type(v) in (bool, int, float, complex)]
+    kind = refused_kind(name, names, scalars)
+    if kind is None:
+        return None
+    described = ", ".join(f"{k} of dtype {n}" for (k, _), n in zip(arrays, names))
+    return DtypeError(
+        f"takes no {kind} input (got {described}). Cast first (ivy.astype).",
+        function=name,
+        argument=", ".join(k for k, _ in arrays),
+        backend=ns.backend,
+    )
+
+
+_REDUCTIONS_OF_NONEMPTY = frozenset({"max", "min", "argmax", "argmin"})
+
+
+def _empty_reduction(ns: Any, name: str, bound: dict, err: Exception) -> Exception | None:
+    """max, min, argmax, argmin over an empty axis (they have no identity)."""
+    if name not in _REDUCTIONS_OF_NONEMPTY or not _is_array(bound.get("x")):
+        return None
+    shape = tuple(bound["x"].shape)
+    axis = bound.get("axis")
+    axes = range(len(shape)) if axis is None else _axis_values(axis) or []
+    if any(-len(shape) <= a < len(shape) and shape[a] == 0 for a in axes):
+        return InvalidValueError(
+            f"reduces an empty axis (shape {shape}), which has no {name} value.",
+            function=name,
+            argument="x",
+            backend=ns.backend,
+        )
+    return None
+
+
+def _size(shape: Sequence[int]) -> int:
+    out = 1
+    for n in shape:
+        out *= n
+    return out
+
+
+def _shapes(ns: Any, name: str, bound: dict, err: Exception) -> Exception | None:
+    """reshape to a shape of another size; matmul and tensordot of axes of different sizes."""
+    if name == "reshape" and _is_array(bound.get("x")):
+        shape = bound.get("shape")
+        shape = (shape,) if isinstance(shape, int) else tuple(shape)
+        size = _size(bound["x"].shape)
+        known = _size(n for n in shape if n != -1)
+        if (-1 not in shape and known != size) or (-1 in shape and (known == 0 or size % known)):
+            return ShapeError(
+                f"cannot reshape an array of shape {tuple(bound['x'].shape)} (size {size}) "
+                f"to {shape}.",
+                function=name,
+                argument="shape",
+                backend=ns.backend,
+            )
+    if name in ("matmul", "tensordot", "vecdot") and _is_array(bound.get("x1")):
+        a, b = tuple(bound["x1"].shape), tuple(bound.get("x2").shape)
+        if name == "matmul" and a and b:
+            inner = (a[-1], b[-2] if len(b) > 1 else b[0])
+        elif name == "tensordot" and isinstance(bound.get("axes", 2), int):
+            k = bound.get("axes", 2)
+            inner = (a[len(a) - k :], b[:k])
+        else:
+            return None
+        if inner[0] != inner[1]:
+            return ShapeError(
+                f"the contracted axes differ in size: x1 of shape {a}, x2 of shape {b}.",
+                function=name,
+                argument="x1, x2",
+                backend=ns.backend,
+            )
+    return None
 
 
 def _unsupported_dtype(ns: Any, name: str, bound: dict, err: Exception) -> Exception | None:
@@ -224,6 +319,8 @@ def _broadcast(ns: Any, name: str, bound: dict, err: Exception) -> Exception | N
     if name not in _BROADCASTING and ivy.function_info(name).group not in _BROADCASTING_GROUPS:
         return None
     arrays = _arrays(bound)
+    if isinstance(bound.get("arrays"), (list, tuple)):
+        arrays += [(f"arrays[{i}]", v) for i, v in enumerate(bound["arrays"]) if _is_array(v)]
     if len(arrays) < 2:
         return None
     shapes = [tuple(v.shape) for _, v in arrays]

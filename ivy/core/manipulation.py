@@ -146,7 +146,10 @@ def broadcast_arrays(*arrays: Array, f: Framework = None) -> list[Array]:
     ns = _fh.get_framework(*arrays, f=f)
     if f is not None:
         arrays = _fh.to_namespace(ns, arrays)
-    return ns.broadcast_arrays(*arrays)
+    try:
+        return ns.broadcast_arrays(*arrays)
+    except Exception as err:  # noqa: BLE001 - raised again, typed (ivy/core/_diagnose.py)
+        return _fh._recover(ns, "broadcast_arrays", err, tuple(arrays), {})
 
 
 @dispatch

@@ -14,7 +14,7 @@ from ivy.backends.array_api._unbound import backend_ns, xp
 NATIVE = {
     name: name
     for name in (
-        "abs acos acosh asin asinh atan atan2 atanh bitwise_and bitwise_invert "
+        "abs acos acosh asin asinh atan atanh bitwise_and bitwise_invert "
         "bitwise_left_shift bitwise_or bitwise_right_shift bitwise_xor ceil conj copysign cos "
         "cosh divide equal exp expm1 floor greater greater_equal hypot imag isfinite "
         "isinf isnan less less_equal log log10 log1p log2 logaddexp logical_and logical_not "
@@ -28,6 +28,21 @@ SCALAR_OPERANDS = {
     name: name
     for name in "add subtract multiply floor_divide remainder pow maximum minimum".split()
 }
+
+
+def atan2(x1, x2, /):
+    """The native's; complex input is refused (jax's would answer)."""
+    out = xp.atan2(x1, x2)
+    if getattr(out.dtype, "kind", None) == "c":
+        from ivy.errors import DtypeError
+
+        raise DtypeError(
+            "takes no complex floating input. Cast first (ivy.astype).",
+            function="atan2",
+            argument="x1, x2",
+            backend=backend_ns.backend,
+        )
+    return out
 
 
 def reciprocal(x, /):

@@ -6,7 +6,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ivy.backends._creation_args import linspace_dtype
+from ivy.backends._creation_args import check_fill_value, linspace_dtype
 from ivy.backends.jax._helpers import (
     check_x64_of,
     default_dtype_of_value,
@@ -70,6 +70,7 @@ def empty(shape, *, dtype=None, device=None):
 
 def full(shape, fill_value, *, dtype=None, device=None):
     dt = native_dtype(dtype) or default_dtype_of_value(fill_value)
+    check_fill_value(fill_value, jnp.dtype(dt).name, "jax")
     return jnp.full(shape, fill_value, dt, device=native_device(device))
 
 

@@ -10,7 +10,17 @@ from ivy.backends.numpy._helpers import NATIVE_DTYPES, check_device, dtype_name,
 from ivy.core import _dtype_rules as rules
 
 can_cast = np.can_cast
-result_type = np.result_type
+_PYTHON_SCALARS = (bool, int, float, complex)
+
+
+def result_type(*arrays_and_dtypes):
+    """numpy's, but Python scalars promote by ivy's rules (a float next to an integer array
+    gives float32, not float64)."""
+    scalars = [v for v in arrays_and_dtypes if type(v) in _PYTHON_SCALARS]
+    if not scalars:
+        return np.result_type(*arrays_and_dtypes)
+    names = [_name(v) for v in arrays_and_dtypes if type(v) not in _PYTHON_SCALARS]
+    return np.dtype(NATIVE_DTYPES[rules.result_type(names, scalars)])
 
 
 def astype(x, dtype, /, *, copy=True, device=None):

@@ -128,7 +128,24 @@ def full_like(x, /, fill_value, *, dtype=None, device=None):
         return tf.fill(tf.shape(x), tensor_of(fill_value, native_dtype(dtype) or x.dtype))
 
 
-meshgrid = tf.meshgrid  # a list, as the Array API (2023.12) says
+def meshgrid(*arrays, indexing="xy"):
+    """A list, as the Array API (2023.12) says; arrays of several dtypes (which tf refuses)
+    each keep their dtype."""
+    arrays = [tensor(a) for a in arrays]
+    if len({a.dtype for a in arrays}) <= 1:
+        return tf.meshgrid(*arrays, indexing=indexing)
+    n = len(arrays)
+    sizes = [tf.size(a) for a in arrays]
+    order = list(range(n))
+    if indexing == "xy" and n > 1:
+        order[0], order[1] = 1, 0
+    shape = [sizes[order[k]] for k in range(n)]
+    out = []
+    for i, a in enumerate(arrays):
+        view = [1] * n
+        view[order.index(i)] = -1
+        out.append(tf.broadcast_to(tf.reshape(a, view), shape))
+    return out
 
 
 def from_dlpack(x, /, *, device=None, copy=None):

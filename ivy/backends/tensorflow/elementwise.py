@@ -46,13 +46,19 @@ log = tf.math.log
 log1p = tf.math.log1p
 positive = tf.identity
 real = tf.math.real
-round = tf.math.round
 sin = tf.math.sin
 sinh = tf.math.sinh
 sqrt = tf.math.sqrt
 square = tf.math.square
 tan = tf.math.tan
 tanh = tf.math.tanh
+
+
+def round(x, /):  # noqa: A001 - the Array API name
+    """tf's (halves to even); complex numbers round each part (tf has no kernel for them)."""
+    if getattr(x, "dtype", None) in (tf.complex64, tf.complex128):
+        return tf.complex(tf.math.round(tf.math.real(x)), tf.math.round(tf.math.imag(x)))
+    return tf.math.round(x)
 
 
 def _log_base(x, base: float):
@@ -159,8 +165,9 @@ def _as_bools(*values) -> list:
     return out
 
 
-def _binary(native, name: str, fallback=promote):
-    """ivy function ``name`` calling tf's ``native``; ``fallback`` converts refused inputs."""
+def _binary(native, name: str, fallback=promote, bools: bool = False):
+    """ivy function ``name`` calling tf's ``native``; ``fallback`` converts refused inputs;
+    with ``bools``, booleans (which tf has no kernel for) compute exactly through int8."""
 
     def fn(x1, x2, /):
         # Fast path: tensors, Python floats and bools, and ints that fit every dtype (but not
@@ -172,7 +179,11 @@ def _binary(native, name: str, fallback=promote):
                 return native(x1, x2)
             except REFUSED:
                 pass
-        return native(*fallback(x1, x2))
+        args = fallback(x1, x2)
+        if bools and args[0].dtype is tf.bool:
+            out = native(*(tf.cast(v, tf.int8) for v in args))
+            return out if out.dtype is tf.bool else tf.cast(out, tf.bool)
+        return native(*args)
 
     fn.__name__ = fn.__qualname__ = name
     fn.__doc__ = (
@@ -181,18 +192,18 @@ def _binary(native, name: str, fallback=promote):
     return fn
 
 
-add = _binary(tf.math.add, "add")
-atan2 = _binary(tf.math.atan2, "atan2", lambda *v: _floating(*promote(*v)))
+add = _binary(tf.math.add, "add", bools=True)
+atan2 = _binary(tf.math.atan2, "atan2", lambda *v: _real_operands(*v))
 _divide = _binary(tf.math.divide, "divide")
 equal = _binary(tf.math.equal, "equal")
 floor_divide = _binary(tf.math.floordiv, "floor_divide")
-greater = _binary(tf.math.greater, "greater")
-greater_equal = _binary(tf.math.greater_equal, "greater_equal")
-less = _binary(tf.math.less, "less")
-less_equal = _binary(tf.math.less_equal, "less_equal")
-maximum = _binary(tf.math.maximum, "maximum")
-minimum = _binary(tf.math.minimum, "minimum")
-multiply = _binary(tf.math.multiply, "multiply")
+greater = _binary(tf.math.greater, "greater", bools=True)
+greater_equal = _binary(tf.math.greater_equal, "greater_equal", bools=True)
+less = _binary(tf.math.less, "less", bools=True)
+less_equal = _binary(tf.math.less_equal, "less_equal", bools=True)
+maximum = _binary(tf.math.maximum, "maximum", bools=True)
+minimum = _binary(tf.math.minimum, "minimum", bools=True)
+multiply = _binary(tf.math.multiply, "multiply", bools=True)
 not_equal = _binary(tf.math.not_equal, "not_equal")
 
 
@@ -230,7 +241,7 @@ def divide(x1, x2, /):
     for v in (x1, x2):
         if isinstance(v, TENSOR_TYPES) and (v.dtype.is_floating or v.dtype.is_complex):
             return _divide(x1, x2)
-    return _divide(*_floating(*promote(x1, x2)))
+    return _divide(*_real_operands(x1, x2))
 
 
 def logical_not(x, /):
@@ -327,9 +338,7 @@ def signbit(x, /):
 
 def copysign(x1, x2, /):
     """The magnitude of ``x1`` with the sign bit of ``x2`` (-0.0 and -nan count as negative)."""
-    a, b = promote(x1, x2)
-    if a.dtype not in _BITS:
-        a, b = tf.cast(a, tf.float32), tf.cast(b, tf.float32)
+    a, b = _real_operands(x1, x2)
     bits = _BITS[a.dtype]
     magnitude = tf.bitwise.bitwise_and(tf.bitcast(a, bits), tf.bitwise.invert(_sign_mask(bits)))
     sign = tf.bitwise.bitwise_and(tf.bitcast(b, bits), _sign_mask(bits))
@@ -343,7 +352,7 @@ def _sign_mask(bits):
 
 def hypot(x1, x2, /):
     """sqrt(x1**2 + x2**2) without overflow or underflow; inf wherever an input is infinite."""
-    a, b = (tf.math.abs(v) for v in _floating(*promote(x1, x2)))
+    a, b = (tf.math.abs(v) for v in _real_operands(x1, x2))
     hi, lo = tf.math.maximum(a, b), tf.math.minimum(a, b)
     ratio = tf.math.divide_no_nan(lo, hi)
     out = hi * tf.math.sqrt(1 + ratio * ratio)
@@ -352,14 +361,14 @@ def hypot(x1, x2, /):
 
 def logaddexp(x1, x2, /):
     """log(exp(x1) + exp(x2)) without overflow."""
-    a, b = _floating(*promote(x1, x2))
+    a, b = _real_operands(x1, x2)
     out = tf.math.maximum(a, b) + tf.math.log1p(tf.math.exp(-tf.math.abs(a - b)))
     return tf.where(a == b, a + math.log(2.0), out)  # equal infinities: a - b would be nan
 
 
 def nextafter(x1, x2, /):
     """tf's nextafter (float32 and float64); float16 steps its bits as IEEE 754 says."""
-    a, b = _floating(*promote(x1, x2))
+    a, b = _real_operands(x1, x2)
     if a.dtype is tf.float32 or a.dtype is tf.float64:
         return tf.math.nextafter(a, b)
     bits = _BITS[a.dtype]
@@ -375,6 +384,23 @@ def nextafter(x1, x2, /):
     out = tf.where(a == 0, tiniest, out)
     out = tf.where(a == b, b, out)
     return tf.where(tf.math.is_nan(a) | tf.math.is_nan(b), tf.constant(math.nan, a.dtype), out)
+
+
+def _real_operands(*values):
+    """``values`` promoted to one dtype, floating: float32 unless one of them is floating
+    (integers of two dtypes too: int64 with uint64 promotes to float64)."""
+    tensors = promote(*values)
+    if any(isinstance(v, (float, complex)) or _is_inexact(v) for v in values):
+        return _floating(*tensors)
+    return [tf.cast(t, tf.float32) for t in tensors]
+
+
+def _is_inexact(value) -> bool:
+    dtype = getattr(value, "dtype", None)
+    if dtype is None:
+        return False
+    dtype = tf.as_dtype(dtype)
+    return dtype.is_floating or dtype.is_complex
 
 
 def _floating(*tensors):

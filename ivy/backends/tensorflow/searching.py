@@ -84,4 +84,10 @@ def searchsorted(x1, x2, /, *, side="left", sorter=None):
     if sorter is not None:
         x1 = tf.gather(x1, sorter)
     out = tf.searchsorted(x1[None], tf.reshape(x2, [1, -1]), side=side, out_type=tf.int64)
-    return tf.reshape(out, tf.shape(x2))
+    out = tf.reshape(out, tf.shape(x2))
+    if x2.dtype.is_floating:  # NaN sorts last, as numpy's sort puts it: after every number
+        # ('left': before the first NaN of x1; 'right': at the end)
+        n = tf.size(x1, out_type=tf.int64)
+        first_nan = n - tf.math.count_nonzero(tf.math.is_nan(x1), dtype=tf.int64)
+        out = tf.where(tf.math.is_nan(x2), first_nan if side == "left" else n, out)
+    return out

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import torch
 
+from ivy.backends._creation_args import check_fill_value
 from ivy.backends._dlpack import exportable
 from ivy.backends.torch._helpers import (
     default_dtype_of_value,
@@ -90,6 +91,7 @@ def empty(shape, *, dtype=None, device=None):
 def full(shape, fill_value, *, dtype=None, device=None):
     shape = (shape,) if isinstance(shape, int) else shape
     dtype = native_dtype(dtype) or default_dtype_of_value(fill_value)
+    check_fill_value(fill_value, str(dtype).rsplit(".", 1)[-1], "torch")
     return torch.full(shape, fill_value, dtype=dtype, device=native_device(device))
 
 
@@ -168,7 +170,19 @@ def meshgrid(*arrays, indexing="xy"):
     if not arrays:
         return []  # torch refuses no arrays
     arrays = [a if isinstance(a, torch.Tensor) else asarray(a) for a in arrays]
-    return list(torch.meshgrid(*arrays, indexing=indexing))
+    if len({a.dtype for a in arrays}) == 1:
+        return list(torch.meshgrid(*arrays, indexing=indexing))
+    # arrays of several dtypes (torch refuses them): each result keeps its array's dtype
+    shape = [a.numel() for a in arrays]
+    if indexing == "xy" and len(arrays) > 1:
+        shape[0], shape[1] = shape[1], shape[0]
+    out = []
+    for i, a in enumerate(arrays):
+        axis = {0: 1, 1: 0}.get(i, i) if indexing == "xy" and len(arrays) > 1 else i
+        view = [1] * len(arrays)
+        view[axis] = -1
+        out.append(a.reshape(view).expand(shape))
+    return out
 
 
 _tril = unsigned_safe(torch.tril, "tril", "move", (0,))

@@ -126,7 +126,22 @@ _PROMOTED: dict = {}
 add = _binary(torch.add, "add", "arith")
 subtract = _binary(torch.subtract, "subtract", "arith")
 multiply = _binary(torch.multiply, "multiply", "arith")
-divide = _binary(torch.divide, "divide", "arith")
+_divide = _binary(torch.divide, "divide", "arith")
+
+
+def divide(x1, x2, /):
+    """``x1 / x2``; integers and bools of two dtypes (int64 with uint64 promotes to float64)
+    are divided in float32, as integers of one dtype are."""
+    d1, d2 = getattr(x1, "dtype", None), getattr(x2, "dtype", None)
+    if d1 is not d2 and d1 is not None and d2 is not None and not _inexact(d1, d2):
+        x1, x2 = x1.to(torch.float32), x2.to(torch.float32)
+    return _divide(x1, x2)
+
+
+def _inexact(*dtypes) -> bool:
+    return any(d.is_floating_point or d.is_complex for d in dtypes)
+
+
 pow = _binary(torch.pow, "pow", "arith")
 floor_divide = _binary(torch.floor_divide, "floor_divide", "divide")
 remainder = _binary(torch.remainder, "remainder", "divide")

@@ -112,6 +112,8 @@ def scatter_flat(indices, updates, /, size, *, reduction="sum"):
 def take_along_axis(x, indices, /, *, axis=-1):
     indices = torch.as_tensor(indices, device=x.device).long()  # torch wants int64 indices
     size = x.shape[axis]
+    if not _compiling():  # (torch's take_along_dim does not check the bounds)
+        check_bounds(indices.cpu().numpy(), size, function="take_along_axis", backend="torch")
     indices = torch.where(indices < 0, indices + size, indices)  # negatives from the end
     x, dtype = _signed_view(x)
     return _back(torch.take_along_dim(x, indices, dim=axis), dtype)

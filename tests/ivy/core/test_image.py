@@ -12,7 +12,6 @@ import numpy as np
 import pytest
 
 import ivy
-
 from tests.helpers import api, check, native, tolerance
 
 RNG = np.random.default_rng(77)
