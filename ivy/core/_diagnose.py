@@ -32,6 +32,7 @@ from ivy.errors import (
     InvalidArgumentError,
     InvalidValueError,
     IvyError,
+    LinAlgError,
     ShapeError,
     UnsupportedError,
 )
@@ -200,6 +201,23 @@ def _shapes(ns: Any, name: str, bound: dict, err: Exception) -> Exception | None
                 argument="shape",
                 backend=ns.backend,
             )
+    if name in ("concat", "stack") and isinstance(bound.get("arrays"), (list, tuple)):
+        shapes = [tuple(v.shape) for v in bound["arrays"] if _is_array(v)]
+        axis = bound.get("axis", 0)
+        if len(shapes) > 1 and isinstance(axis, int):
+            keep = [
+                tuple(n for i, n in enumerate(s) if name == "stack" or i != axis % max(len(s), 1))
+                for s in shapes
+            ]
+            if len(set(keep)) > 1 or len({len(s) for s in shapes}) > 1:
+                return ShapeError(
+                    f"the arrays' shapes {shapes} differ "
+                    + ("" if name == "stack" else f"in axes other than {axis}")
+                    + ".",
+                    function=name,
+                    argument="arrays",
+                    backend=ns.backend,
+                )
     if name in ("matmul", "tensordot", "vecdot") and _is_array(bound.get("x1")):
         a, b = tuple(bound["x1"].shape), tuple(bound.get("x2").shape)
         if name == "matmul" and a and b:
@@ -401,6 +419,15 @@ def _indices(ns: Any, name: str, bound: dict, err: Exception) -> Exception | Non
     return IndexOutOfBoundsError(problem, function=name, argument=argument, backend=ns.backend)
 
 
+def _is_linalg(name: str) -> bool:
+    import ivy
+
+    try:
+        return ivy.function_info(name).group.startswith("linalg")
+    except Exception:  # noqa: BLE001 - not a registered function
+        return False
+
+
 def _by_message(ns: Any, name: str, err: Exception) -> Exception:
     """A framework's own error class for bad input (tf's InvalidArgumentError, torch's
     RuntimeError) as an ivy error of the kind its message says; other errors as they are."""
@@ -412,6 +439,8 @@ def _by_message(ns: Any, name: str, err: Exception) -> Exception:
         kind = ShapeError
     elif _INDEX_WORDS.search(text):
         kind = IndexOutOfBoundsError
+    elif _is_linalg(name):
+        kind = LinAlgError
     else:
         kind = InvalidValueError
     if kind is None:

@@ -11,7 +11,17 @@ import numpy as np
 from ivy.backends.jax._helpers import NATIVE_DTYPES, native_device, native_dtype
 from ivy.core import _dtype_rules as rules
 
-result_type = jnp.result_type
+_PYTHON_SCALARS = (bool, int, float, complex)
+
+
+def result_type(*arrays_and_dtypes):
+    """jax's, but Python scalars promote by ivy's rules (a float next to an integer array gives
+    float32 also with 64-bit types on)."""
+    scalars = [v for v in arrays_and_dtypes if type(v) in _PYTHON_SCALARS]
+    if not scalars:
+        return jnp.result_type(*arrays_and_dtypes)
+    names = [_name(v) for v in arrays_and_dtypes if type(v) not in _PYTHON_SCALARS]
+    return jnp.dtype(NATIVE_DTYPES[rules.result_type(names, scalars)])
 
 
 def astype(x, dtype, /, *, copy=True, device=None):

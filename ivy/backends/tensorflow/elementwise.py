@@ -29,6 +29,7 @@ from ivy.backends.tensorflow._helpers import (
     tensor,
     tensor_of,
 )
+from ivy.errors import DtypeError
 
 acos = tf.math.acos
 acosh = tf.math.acosh
@@ -196,7 +197,7 @@ add = _binary(tf.math.add, "add", bools=True)
 atan2 = _binary(tf.math.atan2, "atan2", lambda *v: _real_operands(*v))
 _divide = _binary(tf.math.divide, "divide")
 equal = _binary(tf.math.equal, "equal")
-floor_divide = _binary(tf.math.floordiv, "floor_divide")
+_floor_divide = _binary(tf.math.floordiv, "floor_divide")
 greater = _binary(tf.math.greater, "greater", bools=True)
 greater_equal = _binary(tf.math.greater_equal, "greater_equal", bools=True)
 less = _binary(tf.math.less, "less", bools=True)
@@ -205,6 +206,22 @@ maximum = _binary(tf.math.maximum, "maximum", bools=True)
 minimum = _binary(tf.math.minimum, "minimum", bools=True)
 multiply = _binary(tf.math.multiply, "multiply", bools=True)
 not_equal = _binary(tf.math.not_equal, "not_equal")
+
+
+def floor_divide(x1, x2, /):
+    """Integers: tf's. Floats as numpy, torch and jax compute them, from the exact remainder
+    (tf's ``floor(x1 / x2)`` rounds the quotient first: 2.5 // 0.001 is 2500 there, 2499
+    elsewhere)."""
+    a, b = promote(x1, x2)
+    if not a.dtype.is_floating:
+        return _floor_divide(a, b)
+    mod = tf.truncatemod(a, b)  # C's fmod: exact
+    div = (a - mod) / b
+    div = tf.where((mod != 0) & ((b < 0) != (mod < 0)), div - 1, div)
+    floor = tf.math.floor(div)
+    floor = tf.where(div - floor > 0.5, floor + 1, floor)
+    floor = tf.where(div == 0, tf.zeros_like(div) * (a / b), floor)  # a signed zero
+    return tf.where(b == 0, a / b, floor)
 
 
 def _wide_pow(x1, x2):
@@ -328,8 +345,19 @@ def bitwise_invert(x, /):
 _BITS = {tf.float16: tf.int16, tf.bfloat16: tf.int16, tf.float32: tf.int32, tf.float64: tf.int64}
 
 
+def _complex_refused(name: str) -> DtypeError:
+    return DtypeError(
+        "takes no complex floating input. Cast first (ivy.astype).",
+        function=name,
+        argument="x" if name == "signbit" else "x1, x2",
+        backend="tensorflow",
+    )
+
+
 def signbit(x, /):
     x = tensor(x)
+    if x.dtype.is_complex:
+        raise _complex_refused("signbit")
     bits = _BITS.get(x.dtype)
     if bits is None:  # integers (numpy's answer); bools are never negative
         return x < 0 if x.dtype.is_integer else tf.zeros_like(x, tf.bool)
@@ -352,7 +380,10 @@ def _sign_mask(bits):
 
 def hypot(x1, x2, /):
     """sqrt(x1**2 + x2**2) without overflow or underflow; inf wherever an input is infinite."""
-    a, b = (tf.math.abs(v) for v in _real_operands(x1, x2))
+    a, b = _real_operands(x1, x2)
+    if a.dtype.is_complex:
+        raise _complex_refused("hypot")
+    a, b = tf.math.abs(a), tf.math.abs(b)
     hi, lo = tf.math.maximum(a, b), tf.math.minimum(a, b)
     ratio = tf.math.divide_no_nan(lo, hi)
     out = hi * tf.math.sqrt(1 + ratio * ratio)
