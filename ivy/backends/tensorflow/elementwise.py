@@ -215,6 +215,8 @@ def floor_divide(x1, x2, /):
     a, b = promote(x1, x2)
     if not a.dtype.is_floating:
         return _floor_divide(a, b)
+    if a.dtype is tf.float16:  # (no float16 kernel for the remainder)
+        return tf.cast(floor_divide(tf.cast(a, tf.float32), tf.cast(b, tf.float32)), tf.float16)
     mod = tf.truncatemod(a, b)  # C's fmod: exact
     div = (a - mod) / b
     div = tf.where((mod != 0) & ((b < 0) != (mod < 0)), div - 1, div)
