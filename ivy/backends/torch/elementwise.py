@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import operator
 
+import numpy as np
 import torch
 
 from ivy.backends._clip_args import clip_bounds
@@ -104,6 +105,8 @@ def _binary(native, name: str, kind: str):
             return wide(*with_tensor_operands(x1, x2)) if not _scalar_ok(x1, x2) else wide(x1, x2)
         except _REFUSED:
             return wide(x1, x2)
+        if isinstance(x1, np.generic) or isinstance(x2, np.generic):  # numpy scalars: as
+            return fn(*(v.item() if isinstance(v, np.generic) else v for v in (x1, x2)))  # Python's
         return wide(*_promoted(x1, x2))
 
     fn.__name__ = fn.__qualname__ = name
