@@ -188,7 +188,12 @@ def result_type(names, scalars=()) -> str:
 
 
 def can_cast(from_: str, to: str) -> bool:
-    """True when promoting ``from_`` with ``to`` gives ``to``."""
+    """True when promoting ``from_`` with ``to`` by the Array API's table gives ``to``: within a
+    kind, or a real floating dtype to a complex one. Across kinds (``bool`` to ``int8``,
+    ``int64`` to ``float64``), which the table leaves out, False."""
+    ka, kb = kind_of(from_), kind_of(to)
+    if ka != kb and not (ka == 2 and kb == 3):
+        return False
     return promote(from_, to) == to
 
 

@@ -1,6 +1,6 @@
 """jax backend: data types. ``result_type`` is jax's own (its promotion lattice: int64 with
-float32 gives float32, Python scalars are weak); ``can_cast`` follows that same promotion (jax's
-own ``can_cast`` uses numpy's rules instead). ``finfo`` and ``iinfo`` return Python numbers and
+float32 gives float32; Python scalars promote by ivy's rules); ``can_cast`` follows the Array API's
+table (ivy's rules: never across kinds). ``finfo`` and ``iinfo`` return Python numbers and
 jax's dtype objects, as the Array API asks."""
 
 from __future__ import annotations
@@ -40,8 +40,8 @@ def _name(dtype_or_array) -> str:
 
 
 def can_cast(from_, to, /):
-    to = _dtype(to)
-    return jnp.promote_types(_dtype(from_), to) == to
+    """By the Array API's table (ivy's rules), as the other backends."""
+    return rules.can_cast(_name(from_), _name(to))
 
 
 def finfo(type, /):
