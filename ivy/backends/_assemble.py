@@ -74,6 +74,7 @@ def assemble(
     devices: Callable[[], list[str]] | None = None,
     array_api_capabilities: Mapping[str, Any] | None = None,
     scalars_need_shims: bool = False,
+    natives_in_namespace: bool = False,
 ) -> types.ModuleType:
     """Fill ``namespace`` with the backend's public names and register it as backend ``backend``.
 
@@ -104,6 +105,10 @@ def assemble(
         scalars_need_shims: the framework's natives promote Python scalars otherwise than ivy
             (numpy and jax: an int8 array plus 2.5 is float64 there, float32 in ivy), so
             dispatched calls with Python scalars go to the namespace's shims, not its fast view.
+        natives_in_namespace: the namespace exports the framework's natives themselves where
+            a shim only adds Python-scalar promotion (numpy: ``ivy.numpy.add is numpy.add``, so
+            ``ivy.numpy`` and ``set_framework('numpy')`` cost nothing); the shims stay in a view
+            that ivy's dispatchers use for calls with Python scalars.
 
     Returns:
         The namespace module, complete.
@@ -169,11 +174,20 @@ def assemble(
         ns[ext] = ExtensionNamespace(f"ivy.{backend}.{ext}", group.__all__, ns.__getitem__, call)
         exported.add(ext)
     ns["__all__"] = sorted(exported)
+    scalars = module
+    if natives_in_namespace:
+        scalars = _view(module, {}, "<scalars>")
+        for name in exported:
+            if getattr(ns.get(name), "__ivy_scalar_shim__", False):
+                ns[name] = ns[name].__ivy_native__
     fast = _fast_view(module, exported)
     module.__ivy_fast__ = fast
-    module.__ivy_scalars__ = module
+    module.__ivy_scalars__ = scalars
     if fast is not module:
-        fast.__ivy_scalars__ = module if scalars_need_shims else fast
+        fast.__ivy_scalars__ = scalars if scalars_need_shims else fast
+    if scalars is not module:
+        scalars.__ivy_scalars__ = scalars
+        scalars.__ivy_fast__ = fast
     _fh.register_loaded(backend, module, capabilities)
     return module
 
@@ -190,9 +204,14 @@ def _fast_view(module: types.ModuleType, exported: set[str]) -> Any:
     }
     if not natives:
         return module
-    view = types.ModuleType(f"{module.__name__}.<fast>")
+    return _view(module, natives, "<fast>")
+
+
+def _view(module: types.ModuleType, replaced: dict[str, Any], tag: str) -> types.ModuleType:
+    """A copy of ``module``'s public names with ``replaced`` in their place."""
+    view = types.ModuleType(f"{module.__name__}.{tag}")
     view.__dict__.update({k: v for k, v in module.__dict__.items() if not k.startswith("__")})
-    view.__dict__.update(natives)
+    view.__dict__.update(replaced)
     view.__ivy_full__ = module
     return view
 

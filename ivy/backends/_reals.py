@@ -133,4 +133,5 @@ def scalar_operands(native: Callable, name: str) -> Callable:
     fn.__name__ = fn.__qualname__ = name
     fn.__doc__ = f"{name}, with Python scalars promoted as ivy's rules say."
     fn.__ivy_native__ = native
+    fn.__ivy_scalar_shim__ = True
     return fn

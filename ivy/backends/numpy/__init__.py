@@ -22,4 +22,5 @@ assemble(
     bind=_helpers.SHARED,
     reals=_reals.WRAPPERS,
     scalars_need_shims=True,
+    natives_in_namespace=True,
 )
