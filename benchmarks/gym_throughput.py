@@ -25,13 +25,15 @@ gymnax is a benchmark-only peer. Installed alone it would replace Gymnasium 1.4 
 tensorflow and gymnasium as they are). Without it the gymnax rows are skipped.
 
 Usage: python benchmarks/gym_throughput.py [--backends numpy,jax,tensorflow,torch]
-       [--batches 1,64,1024,16384] [--steps 100] [--repeats 5] [--no-torch-compile]
+       [--batches 1,64,1024,16384] [--steps 100] [--repeats 7] [--no-torch-compile]
+       [--clock wall|cpu]
 """
 
 from __future__ import annotations
 
 import argparse
 import sys
+import time
 import timeit
 import warnings
 from pathlib import Path
@@ -132,14 +134,14 @@ def pendulum_gradient(backend, compile, steps=200, batch=64):
     return lambda: value_and_grad(actions)
 
 
-def _interleaved(variants, repeats):
+def _interleaved(variants, repeats, clock=time.perf_counter):
     """Median seconds per call of each variant, the variants taking turns (shared drift)."""
     timers = {}
     for _ in range(2):  # warm up (and compile) all, twice: torch.compile guards on ivy's cache
         for fn in variants.values():  # of array types, which the other variants fill
             _block(fn())
     for name, fn in variants.items():
-        timers[name] = timeit.Timer(lambda fn=fn: _block(fn()))
+        timers[name] = timeit.Timer(lambda fn=fn: _block(fn()), timer=clock)
     samples = interleaved_samples(timers, 1, repeats)
     return {name: median(values) for name, values in samples.items()}
 
@@ -151,7 +153,15 @@ def main():
     parser.add_argument("--steps", type=int, default=100)
     parser.add_argument("--repeats", type=int, default=7)
     parser.add_argument("--no-torch-compile", action="store_true")
+    parser.add_argument(
+        "--clock",
+        choices=("wall", "cpu"),
+        default="wall",
+        help="cpu: this process's CPU time (steadier on a loaded machine; the multi-threaded "
+        "backends count the time of all their threads)",
+    )
     args = parser.parse_args()
+    clock = time.process_time if args.clock == "cpu" else time.perf_counter
     backends = args.backends.split(",")
     batches = [int(b) for b in args.batches.split(",")]
     steps = args.steps
@@ -171,7 +181,7 @@ def main():
             gymnax = gymnax_scan(n, steps)
             if gymnax is not None:
                 variants["gymnax jax (jit+vmap+scan)"] = gymnax
-        for name, seconds in _interleaved(variants, args.repeats).items():
+        for name, seconds in _interleaved(variants, args.repeats, clock).items():
             rows.setdefault(name, []).append(n * steps / seconds)
 
     print(f"CartPole steps per second (millions), random actions, autoreset, {steps}-step runs")
@@ -195,7 +205,7 @@ def main():
         variants = {"eager": pendulum_gradient(backend, False)}
         if backend != "torch":
             variants["compiled"] = pendulum_gradient(backend, True)
-        times = _interleaved(variants, args.repeats)
+        times = _interleaved(variants, args.repeats, clock)
         compiled = f"{times['compiled'] * 1e3:10.2f}" if "compiled" in times else f"{'-':>10}"
         print(f"{backend:<12}{times['eager'] * 1e3:10.2f}{compiled}")
 

@@ -17,11 +17,13 @@ joint views no longer match; this script patches that table at run time (``_patc
 on disk. Without it the pytorch_kinematics rows are left out and the run says so.
 
 torch runs single-threaded by default (``--torch-threads``), like MuJoCo's loop, and so that a
-shared machine's load disturbs it less.
+shared machine's load disturbs it less. ``--clock cpu`` times with the process's CPU time
+(``time.process_time``, all threads) instead of the wall clock: on a loaded machine it leaves
+out the time the process waits for a core.
 
 Usage:
     .venv/bin/python benchmarks/robot_kinematics.py [--batches 1,1000,100000] [--repeats 7]
-        [--backends numpy,torch,jax,tensorflow] [--torch-threads 1]
+        [--backends numpy,torch,jax,tensorflow] [--torch-threads 1] [--clock wall|cpu]
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ import argparse
 import importlib.util
 import os
 import sys
+import time
 import timeit
 import warnings
 
@@ -102,6 +105,21 @@ def _sync(backend):
     return lambda out: out
 
 
+def installed_backends(names: str, torch_threads: int) -> list[str]:
+    """The installed backends among ``names`` (comma-separated), set up for these benchmarks:
+    jax in float64, torch with ``torch_threads`` threads."""
+    backends = [b for b in names.split(",") if importlib.util.find_spec(b)]
+    if "jax" in backends:
+        import jax
+
+        jax.config.update("jax_enable_x64", True)
+    if "torch" in backends:
+        import torch
+
+        torch.set_num_threads(torch_threads)
+    return backends
+
+
 def build(backends, batch, rng):
     """name -> (function of no argument, its checker), all on the same configurations."""
     tree = ivy_robot.KinematicTree.from_mjcf(XML)
@@ -139,22 +157,19 @@ def main():
     parser.add_argument("--repeats", type=int, default=7)
     parser.add_argument("--backends", default="numpy,torch,jax,tensorflow")
     parser.add_argument("--torch-threads", type=int, default=1)
+    parser.add_argument("--clock", choices=("wall", "cpu"), default="wall")
     args = parser.parse_args()
-    backends = [b for b in args.backends.split(",") if importlib.util.find_spec(b)]
-    if "jax" in backends:
-        import jax
-
-        jax.config.update("jax_enable_x64", True)
-    if "torch" in backends:
-        import torch
-
-        torch.set_num_threads(args.torch_threads)
+    backends = installed_backends(args.backends, args.torch_threads)
     if "torch" in backends and importlib.util.find_spec("pytorch_kinematics") is None:
         print("pytorch_kinematics is not installed: its rows are left out "
               "(pip install pytorch_kinematics)\n")  # fmt: skip
     warnings.filterwarnings("ignore", category=UserWarning)
     rng = np.random.default_rng(0)
-    print(f"Panda FK (10 bodies, 7 hinges), float64; torch threads: {args.torch_threads}")
+    clock = time.perf_counter if args.clock == "wall" else time.process_time
+    print(
+        f"Panda FK (10 bodies, 7 hinges), float64; torch threads: {args.torch_threads}; "
+        f"clock: {args.clock}; load average: {os.getloadavg()[0]:.1f}"
+    )
     for batch in (int(b) for b in args.batches.split(",")):
         runs = build(backends, batch, rng)
         for fn in runs.values():  # warm-up: compilation, caches
@@ -162,7 +177,7 @@ def main():
         number = max(1, min(100, int(2e4 // batch)))
         repeats = args.repeats if batch < 100000 else max(3, args.repeats // 2)
         samples = interleaved_samples(
-            {name: timeit.Timer(fn) for name, fn in runs.items()}, number, repeats
+            {name: timeit.Timer(fn, timer=clock) for name, fn in runs.items()}, number, repeats
         )
         best = {name: min(v) for name, v in samples.items()}
         mj = best["mj_kinematics loop"]

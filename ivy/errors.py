@@ -1,4 +1,19 @@
-"""Errors raised by ivy. Each message says what the user can do about it."""
+"""Errors raised by ivy. Each message says what the user can do about it.
+
+Bad input (shapes that do not broadcast, axes or indices out of range, a dtype a function does
+not take) raises an :class:`InvalidArgumentError` subclass on every backend, whose message names
+the function, the argument and the backend. Each is also a subclass of the builtin error that
+such input raises in Python and numpy (``IndexError``, ``ValueError``, ``TypeError``), so
+existing ``except`` clauses keep working:
+
+    >>> try:
+    ...     ivy.take(ivy.zeros(2, f="torch"), ivy.asarray([5], f="torch"))
+    ... except IndexError as err:
+    ...     print(err)
+    ivy.take (torch backend), argument 'indices': index 5 is out of bounds for size 2 ...
+"""
+
+from __future__ import annotations
 
 __all__ = [
     "IvyError",
@@ -7,6 +22,14 @@ __all__ = [
     "MixedFrameworksError",
     "NoFrameworkError",
     "UnsupportedError",
+    "UnavailableDtypeError",
+    "InvalidArgumentError",
+    "ShapeError",
+    "AxisError",
+    "IndexOutOfBoundsError",
+    "DtypeError",
+    "InvalidValueError",
+    "LinAlgError",
 ]
 
 
@@ -32,3 +55,61 @@ class NoFrameworkError(IvyError, TypeError):
 
 class UnsupportedError(IvyError, NotImplementedError):
     """A function that a backend truly cannot provide (e.g. gradients on numpy)."""
+
+
+class UnavailableDtypeError(IvyError, AttributeError):
+    """A dtype attribute of a backend namespace that the backend does not have, or cannot hold
+    now (``ivy.jax.float64`` while jax's 64-bit types are off). An AttributeError, so that
+    ``hasattr(ivy.jax, 'float64')`` tells whether float64 arrays can be made now."""
+
+
+class InvalidArgumentError(IvyError):
+    """Bad input to an ivy function. The message names the function, the argument and the
+    backend, which are also attributes (``function``, ``argument``, ``backend``; None where not
+    known)."""
+
+    def __init__(
+        self,
+        message: str,
+        *,
+        function: str | None = None,
+        argument: str | None = None,
+        backend: str | None = None,
+    ) -> None:
+        self.function, self.argument, self.backend = function, argument, backend
+        where = f"ivy.{function}" if function else "ivy"
+        if backend:
+            where += f" ({backend} backend)"
+        if argument:
+            where += f", argument {argument!r}"
+        super().__init__(f"{where}: {message}")
+
+
+class ShapeError(InvalidArgumentError, ValueError):
+    """Shapes that do not broadcast together, or do not fit the function (a ValueError)."""
+
+
+class AxisError(InvalidArgumentError, ValueError, IndexError):
+    """An axis out of range for the array's number of dimensions, or repeated (a ValueError and
+    an IndexError, as numpy's ``AxisError``)."""
+
+
+class IndexOutOfBoundsError(InvalidArgumentError, IndexError):
+    """An index out of range for the axis it indexes (an IndexError). Raised in eager calls on
+    every backend; compiled code cannot check values (see ``docs/conformance.md``)."""
+
+
+class DtypeError(InvalidArgumentError, TypeError):
+    """A dtype that the function does not take (a TypeError): the same on every backend, unlike
+    :class:`UnsupportedError`, which is what one backend cannot do."""
+
+
+class InvalidValueError(InvalidArgumentError, ValueError):
+    """Values that the function cannot take (a ValueError), where a framework says so in its own
+    error class (tensorflow's ``InvalidArgumentError``, torch's ``RuntimeError``)."""
+
+
+class LinAlgError(InvalidValueError):
+    """A matrix the function cannot take: singular (``inv``, ``solve``), not positive definite
+    (``cholesky``). Raised in eager calls on every backend (numpy's ``LinAlgError`` is also a
+    ValueError); compiled jax code returns inf or NaN instead."""

@@ -146,15 +146,28 @@ _CONTAINERS = (list, tuple, dict)
 # The generated dispatchers keep ``_by_type[type(x)]``: ``id()`` would add about 25 ns to every
 # inferred call (numpy's 10-element add: 1.6x -> 1.8x native); under torch.compile they
 # recompile when a new array type is registered, which happens once per type.
+# The namespaces there are the backends' fast views (``ns.__ivy_fast__``): the backend namespace
+# with the framework's own function in place of each shim that only adds what the framework
+# refuses (torch's unsigned types...). What the native refuses, the dispatcher's ``_recover``
+# hands to the full namespace's shim; so a dispatched call costs what the native call costs.
 dispatch_globals: dict[str, Any] = {
     "_current": None,
     "_by_type": {},
     "_by_f": {},
     "_passive": _PASSIVE,
 }
-_by_type: dict[type, types.ModuleType] = dispatch_globals["_by_type"]
+_fast_by_type: dict[type, Any] = dispatch_globals["_by_type"]
+_fast_by_f: dict[Any, Any] = dispatch_globals["_by_f"]
+# The same maps to the backend namespaces themselves (get_framework, inference).
+_by_type: dict[type, types.ModuleType] = {}
 _by_type_id: dict[int, types.ModuleType] = {}  # id(type) -> namespace, as _by_type
-_by_f: dict[Any, types.ModuleType] = dispatch_globals["_by_f"]
+_by_f: dict[Any, types.ModuleType] = {}
+
+
+def _fast(ns: types.ModuleType) -> Any:
+    return getattr(ns, "__ivy_fast__", ns)
+
+
 # id(type) -> type; numpy scalars: numpy only if no other framework is present
 _weak_types: dict[int, type] = {}
 _neutral_types: dict[int, type] = {id(t): t for t in _PASSIVE}  # id(type) -> type
@@ -302,11 +315,10 @@ def register_loaded(name: str, ns: types.ModuleType, capabilities: Any = None) -
     for hook in _on_load:
         hook(ns)
     _loaded[name] = ns
-    _by_f[name] = ns
-    _by_f[ns] = ns
-    for alias, target in _ALIASES.items():
-        if target == name:
-            _by_f[alias] = ns
+    keys = [name, ns] + [alias for alias, target in _ALIASES.items() if target == name]
+    for key in keys:
+        _by_f[key] = ns
+        _fast_by_f[key] = _fast(ns)
 
 
 def on_backend_load(hook: Callable[[types.ModuleType], None]) -> None:
@@ -358,6 +370,7 @@ def _classify(t: type) -> types.ModuleType | None:
     else:
         _by_type[t] = ns
         _by_type_id[id(t)] = ns
+        _fast_by_type[t] = _fast(ns)
     return ns
 
 
@@ -418,6 +431,76 @@ def _infer(*objs: Any, name: str = "this function") -> types.ModuleType:
 
 
 dispatch_globals["_infer"] = _infer
+
+
+def _mixed(ns: Any, objs: tuple, name: str) -> Any:
+    """The namespace for a call whose array arguments are not all of one type: that of the
+    first when the others are Python scalars (``__ivy_scalars__``: the backend's functions that
+    promote Python scalars by ivy's rules), else inferred from all of them."""
+    first = type(objs[0])
+    for obj in objs[1:]:
+        t = type(obj)
+        if t is not first and t not in _PASSIVE:
+            return _infer(*objs, name=name)
+    return ns.__ivy_scalars__
+
+
+dispatch_globals["_mixed"] = _mixed
+
+
+def to_namespace(ns: types.ModuleType, value: Any) -> Any:
+    """``value`` with the arrays of other frameworks in it (also inside lists and tuples)
+    converted to arrays of the backend ``ns``; Python scalars, ``ns``'s own arrays and other
+    objects as they are. What every function does with its array arguments when ``f`` is given
+    (``ivy.sin(np_array, f='torch')`` computes on torch)."""
+    ns = getattr(ns, "__ivy_full__", ns)
+    t = type(value)
+    if t in _PASSIVE:
+        return value
+    owner = _by_type.get(t)
+    if owner is ns:
+        return value
+    if owner is None:
+        if t is list or t is tuple:
+            items = [to_namespace(ns, v) for v in value]
+            if all(a is b for a, b in zip(items, value)):
+                return value
+            return items if t is list else tuple(items)
+        if id(t) in _neutral_types:
+            return value
+        name = framework_of_type(t)
+        if name is None:
+            _neutral_types[id(t)] = t
+            return value
+        if name == ns.backend:  # a type of the framework not seen yet (a tracer, a variable)
+            return value
+    return ns.asarray(value)
+
+
+dispatch_globals["_to_namespace"] = to_namespace
+
+
+def _recover(ns: Any, name: str, err: Exception, args: tuple, kwargs: dict) -> Any:
+    """What a dispatcher does when the backend function raised ``err``: the backend's own
+    function handles what the framework's native refused (when the fast view called the
+    native), and an error still left is raised as the typed ivy error that names the function,
+    the argument and the backend (``ivy/core/_diagnose.py``)."""
+    full = getattr(ns, "__ivy_full__", ns)
+    fn = getattr(full, name)
+    if fn is not getattr(ns, name):
+        try:
+            return fn(*args, **kwargs)
+        except Exception as again:  # noqa: BLE001 - explained below
+            err = again
+    from ivy.core._diagnose import explain
+
+    better = explain(full, name, err, args, kwargs)
+    if better is err:
+        raise err
+    raise better from err
+
+
+dispatch_globals["_recover"] = _recover
 
 
 # ----------------------------------------------------------------------------------------------
@@ -550,10 +633,18 @@ def _restore_depth(depth: int) -> None:
 
 def _bind(ns: types.ModuleType) -> None:
     ivy_dict = sys.modules["ivy"].__dict__
+    own = ns.__dict__
     for name in ns.__all__:
         if name not in _saved:
             _saved[name] = ivy_dict.get(name, _MISSING)
-        ivy_dict[name] = ns.__dict__[name]
+        # (a dtype the backend cannot hold now, such as jax's float64 without x64, is no
+        # attribute of the namespace: ivy keeps its name, which then raises where it is used)
+        value = own.get(name, _saved[name])
+        if value is _MISSING:
+            ivy_dict.pop(name, None)
+        else:
+            ivy_dict[name] = value
+    # (the namespace itself, not its fast view: no inference sees the Python scalars then)
     dispatch_globals["_current"] = ns
 
 

@@ -60,13 +60,15 @@ class Env:
 
     def __init__(self, **params: Any) -> None:
         self.params = self.Params(**params)
+        #: The reset box's scale about its centre (1: the task's; see :meth:`narrowed`).
+        self.reset_scale = 1.0
         self._boxes = self._python_boxes()
 
     def _python_boxes(self) -> dict[str, tuple[float, ...]]:
         """The reset and action boxes as tuples of Python floats, made once, outside any trace:
         constants that every compiler takes as they are (numpy arrays inside a function that
         torch.compile traces become traced tensors)."""
-        low, high = self.reset_bounds()
+        low, high = self.initial_bounds()
         action_low, action_high = self.action_bounds()
         return {
             "reset_low": tuple(float(v) for v in low),
@@ -100,6 +102,31 @@ class Env:
         """``(low, high)``: the initial state is uniform in this box (float64, ``(state_dim,)``);
         components with ``low == high`` are that constant."""
         raise NotImplementedError
+
+    def initial_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(low, high)`` of the box that :meth:`reset` draws from: :meth:`reset_bounds`,
+        shrunk by ``reset_scale`` about its centre (see :meth:`narrowed`)."""
+        low, high = self.reset_bounds()
+        if self.reset_scale == 1.0:
+            return low, high
+        centre, half = (high + low) / 2, (high - low) / 2 * self.reset_scale
+        return centre - half, centre + half
+
+    def narrowed(self, scale: float) -> Env:
+        """A copy whose initial states come from the reset box shrunk by ``scale`` (in (0, 1])
+        about its centre: a curriculum of easier starts (for the swing-up tasks, whose boxes
+        are centred on upright, near-upright starts). Everything else is unchanged.
+
+        Example:
+            >>> ivy_gym.PendulumSmooth().narrowed(0.1).initial_bounds()
+            (array([-0.31415927, -0.1]), array([0.31415927, 0.1]))
+        """
+        if not 0.0 < float(scale) <= 1.0:
+            raise ValueError(f"narrowed: scale must be in (0, 1], got {scale!r}.")
+        new = copy.copy(self)
+        new.reset_scale = float(scale)
+        new._boxes = new._python_boxes()
+        return new
 
     def action_bounds(self) -> tuple[np.ndarray, np.ndarray]:
         """``(low, high)`` of the action space (float64, ``(action_dim,)``)."""

@@ -14,6 +14,7 @@ the state as a float64 numpy array in the core's layout (Gymnasium's, for the fa
 
 from __future__ import annotations
 
+import functools
 from typing import Any
 
 import gymnasium
@@ -50,6 +51,7 @@ class _Facade:
             raise TypeError(f"ivy_gym facade: expected an ivy_gym.Env, got {type(core)!r}.")
         self.core = core
         self.xp = ivy.get_framework(f=framework)
+        self._to_numpy = self.xp.to_numpy  # the backend's own: no dispatch at every step
         self.framework = self.xp.backend
         self.dtype = _dtype_name(dtype)
         self.discrete = bool(discrete)
@@ -61,22 +63,31 @@ class _Facade:
         else:
             self._single_action_space = _box(low, high, self.dtype)
         self._single_observation_space = _box(*core.observation_bounds(), self.dtype)
-        self._action_low, self._action_high = low, high
-        self._step = core.step
-        reset_low, reset_high = core.reset_bounds()
-        self._random = reset_low != reset_high
-        self._reset_box = reset_low, reset_high, reset_low[self._random], reset_high[self._random]
+        self._action_low, self._action_high = low.astype(self.dtype), high.astype(self.dtype)
+        # Gymnasium's discrete actions {0, 1} index this table of core actions (push left,
+        # right), in the facade's dtype: one ``take`` per step.
+        self._discrete_actions = np.array([[-1.0], [1.0]], self.dtype)
+        # The step, resolved once: the core's kernel on the facade's namespace and parameters
+        # (the actions arrive in the backend's dtype, so ``Env.step``'s look-up of the backend
+        # and conversion of the action are not needed at every step).
+        self._step = functools.partial(core._step, self.xp, core.params)
+        reset_low, reset_high = core.initial_bounds()
+        random = reset_low != reset_high
+        self._reset_low, self._random = reset_low, None if random.all() else random
+        self._random_low = reset_low[random]
+        self._random_width = reset_high[random] - self._random_low
 
     def _draw_states(self, rng: np.random.Generator, count: int | None) -> np.ndarray:
         """Initial states drawn with Gymnasium's generator: the random components of the reset
-        box in one call (as Gymnasium's own environments draw them)."""
-        low, high, random_low, random_high = self._reset_box
+        box from one ``random`` call, ``low + width * u``, the values that Gymnasium's own
+        environments draw with ``uniform(low, high)``."""
         batch = () if count is None else (count,)
-        if self._random.all():
-            return rng.uniform(low, high, size=(*batch, len(low)))
-        states = np.empty((*batch, len(low)))
-        states[...] = low
-        states[..., self._random] = rng.uniform(random_low, random_high, (*batch, len(random_low)))
+        values = self._random_low + self._random_width * rng.random((*batch, self._random_low.size))
+        if self._random is None:
+            return values
+        states = np.empty((*batch, self._reset_low.size))
+        states[...] = self._reset_low
+        states[..., self._random] = values
         return states
 
     def _to_backend(self, states: np.ndarray):
@@ -84,10 +95,11 @@ class _Facade:
         return self.core._initial(self.xp, x)
 
     def _numpy(self, x) -> np.ndarray:
-        return np.asarray(ivy.to_numpy(x), dtype=self.dtype)
+        return np.asarray(self._to_numpy(x), dtype=self.dtype)
 
-    def _checked_actions(self, action, batch: tuple[int, ...]) -> np.ndarray:
-        """The action(s) as float64 core actions ``(*batch, action_dim)``, or a clear error."""
+    def _checked_actions(self, action, batch: tuple[int, ...]):
+        """The action(s) as core actions ``(*batch, action_dim)`` of the backend and the
+        facade's dtype, or a clear error."""
         a = np.asarray(action)
         if self.discrete:
             if a.shape != batch or a.dtype.kind not in "iu":
@@ -95,12 +107,13 @@ class _Facade:
                     f"{self._name}: expected integer action(s) of shape {batch} in {{0, 1}}, got "
                     f"{action!r} (shape {a.shape}, dtype {a.dtype})."
                 )
-            if ((a != 0) & (a != 1)).any():
+            if (a >> 1).any():  # nonzero for everything but 0 and 1 (negative numbers too)
                 raise ValueError(
                     f"{self._name}: actions must be 0 (push left) or 1 (push right), got "
                     f"{action!r}."
                 )
-            return (2.0 * a - 1.0)[..., None]
+            core_action = self._discrete_actions.take(a, 0)
+            return self.xp.asarray(core_action)
         want = (*batch, self.core.action_dim)
         if a.shape != want:
             raise ValueError(
@@ -112,7 +125,7 @@ class _Facade:
                 f"{self._name}: action(s) outside the action space [{self._action_low}, "
                 f"{self._action_high}]: {a[~inside]}. Clip or rescale the action (e.g. tanh)."
             )
-        return a
+        return self.xp.asarray(a, dtype=self.dtype)
 
     def _frame(self, state_row) -> np.ndarray:
         return self.core.render(state_row)
@@ -183,14 +196,12 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
         if self._state is None:
             raise RuntimeError(f"{self._name}: call reset() before step().")
         a = self._checked_actions(action, ())
-        state, obs, reward, terminated = self._step(
-            self._state, self.xp.asarray(a, dtype=self.dtype)
-        )
+        state, obs, reward, terminated = self._step(self._state, a)
         self._state = state
         return (
             self._numpy(obs),
-            float(ivy.to_numpy(reward)),
-            bool(ivy.to_numpy(terminated)),
+            float(self._to_numpy(reward)),
+            bool(self._to_numpy(terminated)),
             False,
             {},
         )
@@ -285,27 +296,33 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         if self._state is None:
             raise RuntimeError(f"{self._name}: call reset() before step().")
         a = self._checked_actions(actions, (self.num_envs,))
-        state, obs, reward, terminated = self._step(
-            self._state, self.xp.asarray(a, dtype=self.dtype)
-        )
-        obs, reward = self._numpy(obs), self._numpy(reward)
-        terminated = np.asarray(ivy.to_numpy(terminated), bool)
-        self._steps += 1
+        state, obs, reward, terminated = self._step(self._state, a)
+        state_np, obs, reward = self._numpy(state), self._numpy(obs), self._numpy(reward)
+        terminated = np.asarray(self._to_numpy(terminated), bool)
+        steps = self._steps
+        steps += 1
         if self.max_episode_steps is None:
             truncated = np.zeros(self.num_envs, bool)
         else:
-            truncated = self._steps >= self.max_episode_steps
+            truncated = steps >= self.max_episode_steps
         restart = self._prev_done
-        if restart.any():
-            fresh = self._to_backend(self._draw_states(self.np_random, int(restart.sum())))
-            state_np = np.array(ivy.to_numpy(state))  # a writable copy, in the state's dtype
-            state_np[restart] = ivy.to_numpy(fresh)
+        restarts = np.count_nonzero(restart)
+        if restarts:
+            # Gymnasium's next-step autoreset, in place on numpy copies of this step's outputs
+            fresh = self._to_backend(self._draw_states(self.np_random, restarts))
+            if not state_np.flags.writeable or state_np is self._to_numpy(self._state):
+                state_np = state_np.copy()
+            state_np[restart] = self._numpy(fresh)
             state = self.xp.asarray(state_np)
-            obs[restart] = self._numpy(self.core.observe(fresh))
+            if not obs.flags.writeable:
+                obs = obs.copy()
+            obs[restart] = self._numpy(self.core._observe(self.xp, self.core.params, fresh))
             reward[restart] = 0.0
             terminated[restart] = False
             truncated[restart] = False
-            self._steps[restart] = 0
+            steps[restart] = 0
+        if np.may_share_memory(obs, state_np):
+            obs = obs.copy()  # the caller's to change: not a view of the state
         self._state = state
         self._prev_done = terminated | truncated
         return obs, reward, terminated, truncated, {}

@@ -22,6 +22,7 @@ Example:
 from __future__ import annotations
 
 import dataclasses
+import operator
 import time
 from collections.abc import Callable, Sequence
 
@@ -245,6 +246,7 @@ def optimise_policy(
     window: int | None = None,
     max_grad_norm: float | None = None,
     autoreset: bool = False,
+    curriculum: Sequence[tuple[float, int]] = (),
     seed: int | None = None,
     dtype: Dtype = "float32",
     compile: bool | None = None,
@@ -266,10 +268,15 @@ def optimise_policy(
         batch_size: initial states per iteration.
         lr, discount, window, max_grad_norm: as for :func:`optimise_actions`.
         autoreset: restart environments that terminate within the horizon.
+        curriculum: stages ``(scale, iterations)`` run first, each on ``env.narrowed(scale)``
+            (initial states from the reset box shrunk about its centre: near-upright starts
+            for the swing-up tasks), e.g. ``[(0.1, 150), (0.3, 150), (0.6, 200)]``; then the
+            ``iterations`` on the whole reset box. Adam's state carries across the stages.
         seed: ``ivy.seed`` for the backend first (None: leave the generator as it is).
         dtype: dtype of the states.
         compile: run each iteration compiled; by default on jax and tensorflow.
-        callback: ``callback(iteration, v)`` after each update; True stops the optimisation.
+        callback: ``callback(iteration, v)`` after each update (iterations counted across the
+            stages); True stops the optimisation.
         f: framework; by default that of ``v``.
 
     Returns:
@@ -291,6 +298,45 @@ def optimise_policy(
     if seed is not None:
         ivy.seed(seed, f=xp)
     opt = ivy.Adam(lr, f=xp)
+    if compile is None:
+        compile = xp.backend != "torch"
+    stages = [(env.narrowed(scale), operator.index(n)) for scale, n in curriculum]
+    stages.append((env, operator.index(iterations)))
+    carry = (v, opt.init(v))
+    returns, norms, seconds, first, done = [], [], 0.0, None, 0
+    for stage_env, stage_iterations in stages:
+        step = _policy_step(
+            xp, opt, stage_env, policy, horizon, batch_size, dtype, discount, window,
+            max_grad_norm, autoreset,
+        )  # fmt: skip
+        stage_callback = None
+        if callback is not None:
+            stopped = []
+
+            def stage_callback(i, variables, offset=done, stopped=stopped):
+                stopped.append(bool(callback(offset + i, variables)))
+                return stopped[-1]
+
+        carry, stage_returns, stage_norms, stage_seconds, stage_first = _run(
+            xp, step, carry, stage_iterations, compile, stage_callback
+        )
+        returns.append(stage_returns)
+        norms.append(stage_norms)
+        seconds += stage_seconds
+        first = stage_first if first is None else first
+        done += len(stage_returns)
+        if callback is not None and stopped and stopped[-1]:
+            break
+    v = carry[0]
+    returns, norms = np.concatenate(returns), np.concatenate(norms)
+    final_return = mean_return(env, horizon, policy=policy, v=v, batch_size=batch_size, f=xp)
+    return OptimisationResult(v, returns, norms, final_return, seconds, first)
+
+
+def _policy_step(
+    xp, opt, env, policy, horizon, batch_size, dtype, discount, window, max_grad_norm, autoreset
+):
+    """One Adam update of the policy's parameters from a fresh batch of rollouts of ``env``."""
 
     def loss_fn(v):
         state = env.reset((batch_size,), dtype=dtype, f=xp)
@@ -310,13 +356,7 @@ def optimise_policy(
     def step(v, opt_state):
         return _update(xp, opt, loss_fn, v, opt_state, max_grad_norm)
 
-    if compile is None:
-        compile = xp.backend != "torch"
-    (v, _), returns, norms, seconds, first = _run(
-        xp, step, (v, opt.init(v)), iterations, compile, callback
-    )
-    final_return = mean_return(env, horizon, policy=policy, v=v, batch_size=batch_size, f=xp)
-    return OptimisationResult(v, returns, norms, final_return, seconds, first)
+    return step
 
 
 def mean_return(

@@ -94,16 +94,6 @@ def gather_last(xp, x, spec):
     return xp.matmul(x[..., None, :], selection)[..., 0, :]
 
 
-def assemble_poses(xp, rot, pos):
-    """``[[R, t], [0, 0, 0, 1]]`` ``[..., 4, 4]`` from ``R`` ``[..., 3, 3]`` and ``t``
-    ``[..., 3]``."""
-    top = xp.concat([rot, pos[..., None]], axis=-1)
-    bottom = xp.concat(
-        [xp.zeros_like(top[..., 0:1, 0:3]), xp.ones_like(top[..., 0:1, 0:1])], axis=-1
-    )
-    return xp.concat([top, bottom], axis=-2)
-
-
 def skew(axis: np.ndarray) -> np.ndarray:
     """The cross-product matrix of a numpy 3-vector."""
     x, y, z = axis

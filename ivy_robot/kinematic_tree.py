@@ -33,6 +33,7 @@ import ivy
 import ivy_mechanics as mech
 from ivy.typing import Array, Framework
 from ivy_robot import _arrays as A
+from ivy_robot import _entries as E
 from ivy_robot.mjcf import SUPPORTED_JOINT_TYPES, load_mjcf, mujoco_quaternion_to_rot_mat
 
 __all__ = ["KinematicTree", "BodySpheres"]
@@ -208,37 +209,16 @@ class KinematicTree:
         consts = {"mats": np.stack(mats), "vecs": np.stack(vecs)}
         if len(self._hinge_qadr):
             consts.update({"h" + k: np.stack(v) for k, v in hinge.items()})
-        # per-joint constants, for joints applied one by one
-        one_by_one = any(len(p.joints) > (p.hinge is not None) for p in plan if p.kind == "chain")
-        if one_by_one:
-            consts["jK"] = np.stack([A.skew(a) for a in self._jnt_axis])
-            consts["jK2"] = consts["jK"] @ consts["jK"]
-            consts["jpos"] = self._jnt_pos
-            consts["jaxis"] = self._jnt_axis
         self._consts = consts
 
     def _build_dofs(self) -> None:
         """Per-dof flags and the dof order of the Jacobian's blocks."""
-        hinge_slide = [j for j in range(self.njnt) if self._jnt_type[j] in (_HINGE, _SLIDE)]
-        others = [j for j in range(self.njnt) if self._jnt_type[j] in (_BALL, _FREE)]
-        self._hs_joints = tuple(hinge_slide)
-        self._ball_free_joints = tuple(others)
-        order = [int(self._jnt_dadr[j]) for j in hinge_slide]
         rotational = []
         for j in range(self.njnt):
             kind = self._jnt_type[j]
             rotational += {_HINGE: [1.0], _SLIDE: [0.0], _BALL: [1.0] * 3}.get(
                 kind, [0.0] * 3 + [1.0] * 3
             )
-        for j in others:
-            n = 3 if self._jnt_type[j] == _BALL else 6
-            order += list(range(int(self._jnt_dadr[j]), int(self._jnt_dadr[j]) + n))
-        # the blocks are computed hinges/slides first, then balls/frees; permute to dof order
-        self._dof_permutation = None
-        if order != list(range(self.nv)):
-            perm = np.zeros((self.nv, self.nv))
-            perm[np.asarray(order), np.arange(self.nv)] = 1.0
-            self._dof_permutation = perm
         # dof chains: the dofs of a body and of its ancestors
         chains = np.zeros((self.nbody, self.nv))
         for i in range(1, self.nbody):
@@ -250,18 +230,11 @@ class KinematicTree:
         self._dof_consts = {
             "rot": np.asarray(rotational).reshape(self.nv, 1),
             "trans": 1.0 - np.asarray(rotational).reshape(self.nv, 1),
-            "hs_axis": self._jnt_axis[list(hinge_slide)].reshape(-1, 3),
-            "hs_pos": self._jnt_pos[list(hinge_slide)].reshape(-1, 3),
-            "eye": np.eye(3),
-            "jpos": self._jnt_pos.reshape(-1, 3),
         }
-        if self._dof_permutation is not None:
-            self._dof_consts["perm"] = self._dof_permutation
 
     def _build_kernel_data(self) -> None:
         """Everything the kernels read, as Python ints, floats and nested lists: no numpy object
         is touched while a function is traced (``torch.compile`` breaks its graph on numpy)."""
-        self._k_consts = A.as_lists(self._consts)
         self._k_dofs = A.as_lists(self._dof_consts)
         self._k_hinge = A.gather_spec(self._hinge_qadr, self.nq)
         self._k_joints = tuple(
@@ -269,11 +242,31 @@ class KinematicTree:
             for t, q, b in zip(self._jnt_type, self._jnt_qadr, self._jnt_body)
         )
         self._k_site_body = tuple(int(b) for b in self._site_body)
-        self._k_sites = A.as_lists({"r": self._site_rot.reshape(-1, 3, 3), "p": self._site_pos})
-        self._k_site_each = tuple(
-            A.as_lists({"r": self._site_rot[s], "p": self._site_pos[s]}) for s in range(self.nsite)
-        )
+        self._k_dof_adr = tuple(int(d) for d in self._jnt_dadr)
         self._k_chain = tuple(self._chains[b][:, None].tolist() for b in range(self.nbody))
+        # entry-wise constants (Python floats, snapped): see ivy_robot._entries
+        consts = self._consts
+        self._e_mats = [E.constant_matrix(m) for m in consts["mats"]]
+        self._e_vecs = [E.constant_vector(v) for v in consts["vecs"]]
+        self._e_hinge = tuple(
+            tuple(E.constant_matrix(consts[k][h]) for k in ("hA", "hB", "hC"))
+            + tuple(E.constant_vector(consts[k][h]) for k in ("hP", "hK", "hK2"))
+            for h in range(len(self._hinge_qadr))
+        )
+        self._k_hq0 = [float(self.qpos0[q]) for q in self._hinge_qadr]
+        self._e_joint = tuple(
+            {
+                "axis": E.constant_vector(self._jnt_axis[j]),
+                "pos": E.constant_vector(self._jnt_pos[j]),
+                "K": E.constant_matrix(A.skew(self._jnt_axis[j])),
+                "K2": E.constant_matrix(A.skew(self._jnt_axis[j]) @ A.skew(self._jnt_axis[j])),
+            }
+            for j in range(self.njnt)
+        )
+        self._e_sites = tuple(
+            (E.constant_matrix(self._site_rot[s]), E.constant_vector(self._site_pos[s]))
+            for s in range(self.nsite)
+        )
 
     # ------------------------------------------------------------------------------------------
     # Names
@@ -338,9 +331,8 @@ class KinematicTree:
         xp = ivy.get_framework(qpos, f=f)
         self._check_qpos(xp, qpos)
         rots, poss, _ = self._frames(xp, qpos)
-        rot = _stack_batched(xp, rots, qpos, -3)
-        pos = _stack_batched(xp, poss, qpos, -2)
-        return A.assemble_poses(xp, rot, pos)
+        entries = [e for rot, pos in zip(rots, poss) for e in E.pose_entries(rot, pos)]
+        return E.poses_to_array(xp, entries, qpos, self.nbody)
 
     def site_poses(self, qpos: Array, *, f: Framework = None) -> Array:
         """World poses of every site (``site_xpos``, ``site_xmat``).
@@ -362,12 +354,10 @@ class KinematicTree:
             shape = tuple(qpos.shape[:-1]) + (0, 4, 4)
             return xp.zeros(shape, dtype=qpos.dtype, device=xp.dev(qpos))
         rots, poss, _ = self._frames(xp, qpos)
-        c = A.constants(xp, qpos, self._k_sites)
-        body_rot = _stack_batched(xp, [rots[b] for b in self._k_site_body], qpos, -3)
-        body_pos = _stack_batched(xp, [poss[b] for b in self._k_site_body], qpos, -2)
-        rot = xp.matmul(body_rot, c["r"])
-        pos = body_pos + xp.matvec(body_rot, c["p"])
-        return A.assemble_poses(xp, rot, pos)
+        entries = []
+        for s, b in enumerate(self._k_site_body):
+            entries += E.pose_entries(*E.compose(rots[b], poss[b], *self._e_sites[s]))
+        return E.poses_to_array(xp, entries, qpos, self.nsite)
 
     def transform_points(
         self, qpos: Array, bodies: Sequence[int | str], points: Array, *, f: Framework = None
@@ -392,8 +382,10 @@ class KinematicTree:
         self._check_qpos(xp, qpos)
         ids = [self.body_id(b) for b in bodies]
         rots, poss, _ = self._frames(xp, qpos)
-        body_rot = _stack_batched(xp, [rots[b] for b in ids], qpos, -3)
-        body_pos = _stack_batched(xp, [poss[b] for b in ids], qpos, -2)
+        body_rot = E.to_array(
+            xp, [e for b in ids for row in rots[b] for e in row], qpos, (len(ids), 3, 3)
+        )
+        body_pos = E.to_array(xp, [e for b in ids for e in poss[b]], qpos, (len(ids), 3))
         points = A.to_backend(xp, points, qpos)
         return body_pos + xp.matvec(body_rot, points)
 
@@ -430,16 +422,16 @@ class KinematicTree:
         self._check_qpos(xp, qpos)
         if (body is None) == (site is None):
             raise ValueError("KinematicTree.jacobian: give exactly one of body= or site=")
-        rots, poss, joint_frames = self._frames(xp, qpos, joint_frames=True)
+        rots, poss, joint_frames = self._frames(xp, qpos)
         if site is not None:
             s = self.site_id(site)
             b = self._k_site_body[s]
-            c = A.constants(xp, qpos, self._k_site_each[s])
-            frame_rot = xp.matmul(rots[b], c["r"])
-            frame_pos = poss[b] + xp.matvec(rots[b], c["p"])
+            frame_rot, frame_pos = E.compose(rots[b], poss[b], *self._e_sites[s])
         else:
             b = self.body_id(body)
             frame_rot, frame_pos = rots[b], poss[b]
+        frame_rot = E.to_array(xp, [e for row in frame_rot for e in row], qpos, (3, 3))
+        frame_pos = E.to_array(xp, frame_pos, qpos, (3,))
         target = frame_pos
         if point is not None:
             point = A.to_backend(xp, point, qpos)
@@ -507,93 +499,100 @@ class KinematicTree:
         meaning = f"the model's nq={self.nq} joint positions (MuJoCo's qpos order)"
         A.check_last_axis(xp, qpos, self.nq, "qpos", "KinematicTree", meaning)
 
-    def _frames(self, xp, qpos, joint_frames: bool = False):
-        """World rotations and positions of every body (lists; constant bodies unbatched), and
-        of the frame right after each joint (for the Jacobian)."""
-        c = A.constants(xp, qpos, self._k_consts)
-        mats, vecs = c["mats"], c["vecs"]
-        if "hA" in c:
-            theta = A.gather_last(xp, qpos, self._k_hinge) - c["hq0"]
-            sin, vers = _sin_versine(xp, theta)
-            hinge_rot = c["hA"] + sin[..., None, None] * c["hB"] + vers[..., None, None] * c["hC"]
-            hinge_pos = c["hP"] - sin[..., None] * c["hK"] - vers[..., None] * c["hK2"]
+    def _frames(self, xp, qpos):
+        """World rotations and positions of every body, and of the frame right after each
+        joint (for the Jacobian), entry by entry (:mod:`ivy_robot._entries`)."""
         rots, poss = [None] * self.nbody, [None] * self.nbody
         frames = [None] * self.njnt
+        if self._e_hinge:
+            theta = A.gather_last(xp, qpos, self._k_hinge)
+            if any(self._k_hq0):
+                theta = theta - xp.asarray(self._k_hq0, dtype=qpos.dtype, device=xp.dev(qpos))
+            sin, vers = _sin_versine(xp, theta)
         for i, step in enumerate(self._plan):
             if step.kind in ("world", "static"):
-                rots[i], poss[i] = mats[step.mat], vecs[step.vec]
+                rots[i], poss[i] = self._e_mats[step.mat], self._e_vecs[step.vec]
                 continue
             if step.kind == "free":
                 adr = self._k_joints[step.joints[0]][1]
-                rot = _quaternion_rot(xp, qpos[..., adr + 3 : adr + 7])
-                pos = qpos[..., adr : adr + 3]
+                rot = E.from_array(_quaternion_rot(xp, qpos[..., adr + 3 : adr + 7]))
+                pos = [qpos[..., adr + k] for k in range(3)]
                 frames[step.joints[0]] = (rot, pos)
                 rots[i], poss[i] = rot, pos
                 continue
             if step.hinge is not None:
-                rot, pos = hinge_rot[..., step.hinge, :, :], hinge_pos[..., step.hinge, :]
+                s, v = sin[..., step.hinge], vers[..., step.hinge]
+                a, b, c, p, k, k2 = self._e_hinge[step.hinge]
+                rot = [
+                    [E.affine(a[r][col], [(b[r][col], s), (c[r][col], v)]) for col in range(3)]
+                    for r in range(3)
+                ]
+                pos = [E.affine(p[r], [(-k[r], s), (-k2[r], v)]) for r in range(3)]
             else:
-                rot, pos = mats[step.mat], vecs[step.vec]
+                rot, pos = self._e_mats[step.mat], self._e_vecs[step.vec]
             if step.parent is not None:
-                parent_rot = rots[step.parent]
-                rot, pos = (
-                    xp.matmul(parent_rot, rot),
-                    poss[step.parent] + xp.matvec(parent_rot, pos),
-                )
+                rot, pos = E.compose(rots[step.parent], poss[step.parent], rot, pos)
             joints = step.joints
             if step.hinge is not None:
                 frames[joints[0]] = (rot, pos)
                 joints = joints[1:]
             for j in joints:
-                rot, pos = self._apply_joint(xp, qpos, c, j, rot, pos)
+                rot, pos = self._apply_joint(xp, qpos, j, rot, pos)
                 frames[j] = (rot, pos)
             rots[i], poss[i] = rot, pos
         return rots, poss, frames
 
-    def _apply_joint(self, xp, qpos, c, j, rot, pos):
-        """The frame after joint ``j``, given the (world) frame before it."""
+    def _apply_joint(self, xp, qpos, j, rot, pos):
+        """The frame after joint ``j``, given the (world) frame before it (entries)."""
         kind, adr, ref, _ = self._k_joints[j]
+        c = self._e_joint[j]
         if kind == _SLIDE:
-            shift = qpos[..., adr : adr + 1] - ref
-            return rot, pos + xp.matvec(rot, c["jaxis"][j]) * shift
+            shift = qpos[..., adr] - ref if ref != 0.0 else qpos[..., adr]
+            axis = E.matvec(rot, c["axis"])
+            return rot, [E.add(pos[r], E.dot([(axis[r], shift)])) for r in range(3)]
         if kind == _HINGE:
-            sin, vers = _sin_versine(xp, qpos[..., adr] - ref)
-            local = (
-                c["mats"][0]
-                + sin[..., None, None] * c["jK"][j]
-                + vers[..., None, None] * (c["jK2"][j])
-            )
+            theta = qpos[..., adr] - ref if ref != 0.0 else qpos[..., adr]
+            s, v = _sin_versine(xp, theta)
+            eye = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+            local = [
+                [E.affine(eye[r][col], [(c["K"][r][col], s), (c["K2"][r][col], v)])
+                 for col in range(3)]
+                for r in range(3)
+            ]  # fmt: skip
         else:  # ball
-            local = _quaternion_rot(xp, qpos[..., adr : adr + 4])
-        anchor = pos + xp.matvec(rot, c["jpos"][j])
-        new_rot = xp.matmul(rot, local)
-        return new_rot, anchor - xp.matvec(new_rot, c["jpos"][j])
+            local = E.from_array(_quaternion_rot(xp, qpos[..., adr : adr + 4]))
+        anchor = [E.add(pos[r], x) for r, x in enumerate(E.matvec(rot, c["pos"]))]
+        new_rot = E.matmul(rot, local)
+        back = E.matvec(new_rot, c["pos"])
+        return new_rot, [E.add(anchor[r], E.dot([(back[r], -1.0)])) for r in range(3)]
 
     def _dof_axes(self, xp, qpos, rots, poss, frames):
         """World axes and anchors of every dof *[batch_shape, nv, 3]*, in dof order."""
-        c = A.constants(xp, qpos, self._k_dofs)
-        axes, anchors = [], []
-        if self._hs_joints:
-            rot = _stack_batched(xp, [frames[j][0] for j in self._hs_joints], qpos, -3)
-            pos = _stack_batched(xp, [frames[j][1] for j in self._hs_joints], qpos, -2)
-            axes.append(xp.matvec(rot, c["hs_axis"]))
-            anchors.append(pos + xp.matvec(rot, c["hs_pos"]))
-        for j in self._ball_free_joints:
+        axes, anchors = [None] * self.nv, [None] * self.nv
+        eye = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+        for j in range(self.njnt):
             kind, _, _, b = self._k_joints[j]
-            body_axes = xp.swapaxes(rots[b], -1, -2)  # rows: the body frame's axes
-            if kind == _BALL:
-                rot, pos = frames[j]
-                anchor = pos + xp.matvec(rot, c["jpos"][j])
-                axes.append(body_axes)
-                anchors.append(xp.stack([anchor] * 3, axis=-2))
+            dof = self._k_dof_adr[j]
+            if kind == _FREE:
+                body_axes = [[rots[b][r][col] for r in range(3)] for col in range(3)]
+                axes[dof : dof + 6] = eye + body_axes
+                anchors[dof : dof + 6] = [poss[b]] * 6
+                continue
+            rot, pos = frames[j]
+            offset = E.matvec(rot, self._e_joint[j]["pos"])
+            anchor = [E.add(pos[r], x) for r, x in enumerate(offset)]
+            if kind == _BALL:  # angular velocity in the body frame: the body's axes
+                axes[dof : dof + 3] = [[rots[b][r][col] for r in range(3)] for col in range(3)]
+                anchors[dof : dof + 3] = [anchor] * 3
             else:
-                axes.append(xp.concat([c["eye"] + xp.zeros_like(body_axes), body_axes], axis=-2))
-                anchors.append(xp.stack([poss[b]] * 6, axis=-2))
-        axes = _concat_batched(xp, axes, qpos)
-        anchors = _concat_batched(xp, anchors, qpos)
-        if self._dof_permutation is not None:
-            axes, anchors = xp.matmul(c["perm"], axes), xp.matmul(c["perm"], anchors)
-        return axes, anchors
+                axes[dof] = E.matvec(rot, self._e_joint[j]["axis"])
+                anchors[dof] = anchor
+        flat_axes = [e for axis in axes for e in axis]
+        flat_anchors = [e for anchor in anchors for e in anchor]
+        return (
+            E.to_array(xp, flat_axes, qpos, (self.nv, 3)),
+            E.to_array(xp, flat_anchors, qpos, (self.nv, 3)),
+        )
 
 
 # ----------------------------------------------------------------------------------------------
@@ -625,17 +624,3 @@ def _quaternion_rot(xp, quat_wxyz):
     ivy_mechanics, whose quaternions are ``[x, y, z, w]``."""
     xyzw = xp.concat([quat_wxyz[..., 1:4], quat_wxyz[..., 0:1]], axis=-1)
     return mech.quaternion_to_rot_mat(xyzw, f=xp)
-
-
-def _stack_batched(xp, arrays, like, axis):
-    """Stack arrays of which some lack the batch dimensions of ``like`` (constants)."""
-    trailing = -axis - 1  # 3x3 matrices stacked at -3 have 2 trailing axes, vectors 1
-    full = len(like.shape) - 1 + trailing
-    arrays = [a if len(a.shape) == full else A.broadcast_leading(xp, a, like, 1) for a in arrays]
-    return xp.stack(arrays, axis=axis)
-
-
-def _concat_batched(xp, arrays, like):
-    full = len(like.shape) - 1 + 2
-    arrays = [a if len(a.shape) == full else A.broadcast_leading(xp, a, like, 1) for a in arrays]
-    return arrays[0] if len(arrays) == 1 else xp.concat(arrays, axis=-2)

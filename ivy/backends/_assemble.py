@@ -31,11 +31,13 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from ivy import framework_handler as _fh
+from ivy.backends._inspection import info_function
+from ivy.backends._reals import scalar_operands
 from ivy.core import GROUP_NAMES, GROUPS
 from ivy.core._dispatch import REGISTRY
 from ivy.core._extensions import ExtensionNamespace, extension_groups
 from ivy.dtypes import DTYPE_NAMES
-from ivy.errors import UnsupportedError
+from ivy.errors import UnavailableDtypeError
 
 ARRAY_API_VERSION = "2023.12"
 ARRAY_API_CONSTANTS = {
@@ -68,6 +70,11 @@ def assemble(
     reals: Mapping[str, Callable] | None = None,
     capabilities: Any = None,
     fallback: Callable[[str], Callable] | None = None,
+    dtypes_now: Mapping[str, Callable[[], bool]] | None = None,
+    devices: Callable[[], list[str]] | None = None,
+    array_api_capabilities: Mapping[str, Any] | None = None,
+    scalars_need_shims: bool = False,
+    natives_in_namespace: bool = False,
 ) -> types.ModuleType:
     """Fill ``namespace`` with the backend's public names and register it as backend ``backend``.
 
@@ -75,7 +82,8 @@ def assemble(
         namespace: the backend package's module (or its ``globals()``).
         backend: the name it is known by (``'torch'``, ``'array_api_strict'``...).
         native_dtypes: dtype name -> the native dtype object, for every ivy dtype the backend
-            has (a missing one is left out of the namespace, and its name raises on use).
+            has (a missing one is left out of the namespace: reading it raises AttributeError,
+            so that ``hasattr(ns, 'float16')`` tells whether the backend has it).
         package: the package holding the backend's own group modules (None: none).
         xp: the Array API namespace that the shared layer is bound to (None: not used).
         bind: what the shared layer's functions find besides ``xp``: the backend's helpers
@@ -86,6 +94,21 @@ def assemble(
         capabilities: the backend's :class:`ivy.framework_handler.Capabilities`.
         fallback: ``fallback(name)`` gives the function for a name that neither the backend nor
             the shared layer provides (a registered library's host bridge); None: none.
+        dtypes_now: dtype name -> a callable telling whether the backend can hold that dtype
+            at the time of the call (jax's 64-bit types, while ``jax_enable_x64`` is off: the
+            namespace then has no such attribute); None: every native dtype, always.
+        devices: a callable giving ivy's names of the devices the backend sees, for
+            ``__array_namespace_info__().devices()``; None: the default device only.
+        array_api_capabilities: the Array API capability flags, for
+            ``__array_namespace_info__().capabilities()``; None: boolean indexing and
+            data-dependent shapes.
+        scalars_need_shims: the framework's natives promote Python scalars otherwise than ivy
+            (numpy and jax: an int8 array plus 2.5 is float64 there, float32 in ivy), so
+            dispatched calls with Python scalars go to the namespace's shims, not its fast view.
+        natives_in_namespace: the namespace exports the framework's natives themselves where
+            a shim only adds Python-scalar promotion (numpy: ``ivy.numpy.add is numpy.add``, so
+            ``ivy.numpy`` and ``set_framework('numpy')`` cost nothing); the shims stay in a view
+            that ivy's dispatchers use for calls with Python scalars.
 
     Returns:
         The namespace module, complete.
@@ -126,10 +149,15 @@ def assemble(
     if missing:
         raise ImportError(f"ivy backend {backend!r} does not implement {sorted(missing)}")
     known = {n: t for n, t in native_dtypes.items() if t is not None}
-    ns.update(known)
-    exported.update(DTYPE_NAMES)  # a dtype the backend lacks raises on use (see below)
-    for name in set(DTYPE_NAMES) - set(known):
-        ns[name] = _MissingDtype(name, backend)
+    sometimes = dict(dtypes_now or {})
+    ns.update({n: t for n, t in known.items() if n not in sometimes})
+    exported.update(DTYPE_NAMES)  # a dtype the backend lacks (now) is no attribute: see below
+    ns["__getattr__"] = _dtype_getattr(module, backend, known, sometimes)
+    ns["__array_namespace_info__"] = info_function(
+        module,
+        devices,
+        dict(array_api_capabilities or _ARRAY_API_CAPABILITIES),
+    )
     ns.update(ARRAY_API_CONSTANTS)
     exported.update(ARRAY_API_CONSTANTS)
     ns["__array_api_version__"] = ARRAY_API_VERSION
@@ -146,21 +174,78 @@ def assemble(
         ns[ext] = ExtensionNamespace(f"ivy.{backend}.{ext}", group.__all__, ns.__getitem__, call)
         exported.add(ext)
     ns["__all__"] = sorted(exported)
+    scalars = module
+    if natives_in_namespace:
+        scalars = _view(module, {}, "<scalars>")
+        for name in exported:
+            if getattr(ns.get(name), "__ivy_scalar_shim__", False):
+                ns[name] = ns[name].__ivy_native__
+    fast = _fast_view(module, exported)
+    module.__ivy_fast__ = fast
+    module.__ivy_scalars__ = scalars
+    if fast is not module:
+        fast.__ivy_scalars__ = scalars if scalars_need_shims else fast
+    if scalars is not module:
+        scalars.__ivy_scalars__ = scalars
+        scalars.__ivy_fast__ = fast
     _fh.register_loaded(backend, module, capabilities)
     return module
 
 
-class _MissingDtype:
-    """Stands for an ivy dtype that a backend does not have; using it raises."""
+def _fast_view(module: types.ModuleType, exported: set[str]) -> Any:
+    """What the framework-agnostic dispatchers call: ``module`` itself, or, where some of its
+    functions are shims that only add what the framework's native refuses (they carry the
+    native as ``__ivy_native__``), a view of it with those natives in their place. The
+    dispatchers hand what a native refuses to the shim (``framework_handler._recover``)."""
+    natives = {
+        name: native
+        for name in exported
+        if (native := getattr(module.__dict__.get(name), "__ivy_native__", None)) is not None
+    }
+    if not natives:
+        return module
+    return _view(module, natives, "<fast>")
 
-    def __init__(self, name: str, backend: str):
-        self.name, self.backend = name, backend
 
-    def __repr__(self) -> str:
-        return f"<dtype {self.name} (not available on {self.backend})>"
+def _view(module: types.ModuleType, replaced: dict[str, Any], tag: str) -> types.ModuleType:
+    """A copy of ``module``'s public names with ``replaced`` in their place."""
+    view = types.ModuleType(f"{module.__name__}.{tag}")
+    view.__dict__.update({k: v for k, v in module.__dict__.items() if not k.startswith("__")})
+    view.__dict__.update(replaced)
+    view.__ivy_full__ = module
+    return view
 
-    def __call__(self, *args: Any, **kwargs: Any) -> Any:
-        raise UnsupportedError(f"the {self.backend} backend has no dtype {self.name}")
+
+_ARRAY_API_CAPABILITIES = {
+    "boolean indexing": True,
+    "data-dependent shapes": True,
+    "max dimensions": None,
+}
+
+
+def _dtype_getattr(
+    module: types.ModuleType,
+    backend: str,
+    known: Mapping[str, Any],
+    sometimes: Mapping[str, Callable[[], bool]],
+) -> Callable[[str], Any]:
+    """The namespace's module ``__getattr__`` (PEP 562), called only for names its dict lacks:
+    the dtypes that come and go (``sometimes``), and a clear error for those it never has."""
+
+    def __getattr__(name: str) -> Any:
+        available = sometimes.get(name)
+        if available is not None:
+            if available():
+                return known[name]
+            raise UnavailableDtypeError(
+                f"ivy.{backend}.{name}: {backend} cannot hold {name} arrays now. For jax, enable "
+                f"64-bit types first: jax.config.update('jax_enable_x64', True)."
+            )
+        if name in DTYPE_NAMES:
+            raise UnavailableDtypeError(f"ivy.{backend} has no dtype {name}: {backend} lacks it.")
+        raise AttributeError(f"module {module.__name__!r} has no attribute {name!r}")
+
+    return __getattr__
 
 
 def _own_module(package: str | None, group: str) -> types.ModuleType | None:
@@ -196,12 +281,16 @@ def bind_shared(module: types.ModuleType, xp: Any, bind: Mapping[str, Any]) -> d
         if isinstance(value, types.FunctionType) and value.__module__ == module.__name__:
             if all(hasattr(xp, attr) for attr in needs.get(name, ())):
                 scope[name] = out[name] = _rebind(value, scope)
-    for name, path in getattr(module, "NATIVE", {}).items():
-        native = xp
-        for part in path.split("."):
-            native = getattr(native, part, None)
-        if native is not None and name not in out:
-            out[name] = native
+    for table, wrap in (
+        (getattr(module, "NATIVE", {}), None),
+        (getattr(module, "SCALAR_OPERANDS", {}), scalar_operands),
+    ):
+        for name, path in table.items():
+            native = xp
+            for part in path.split("."):
+                native = getattr(native, part, None)
+            if native is not None and name not in out:
+                out[name] = native if wrap is None else wrap(native, name)
     return {n: f for n, f in out.items() if not n.startswith("_")}
 
 
@@ -216,7 +305,9 @@ def _rebind(fn: types.FunctionType, scope: dict[str, Any]) -> types.FunctionType
 
 
 def _core_function(name: str) -> Callable:
-    return getattr(GROUPS[GROUP_NAMES.index(REGISTRY[name].group)], name)
+    """The composition ``name`` as written (without the agnostic function's conversions)."""
+    fn = getattr(GROUPS[GROUP_NAMES.index(REGISTRY[name].group)], name)
+    return getattr(fn, "__ivy_body__", fn)
 
 
 def _bound(comp: Callable, ns: types.ModuleType) -> Callable:

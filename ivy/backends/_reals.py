@@ -16,6 +16,7 @@ and a dtype comparison more than the framework's own.
 
 from __future__ import annotations
 
+import inspect
 from collections.abc import Callable
 
 import numpy as np
@@ -67,7 +68,7 @@ def with_options(native: Callable, name: str) -> Callable:
             return out
         return native(_float32(x), *args, **kwargs)
 
-    return _named(fn, name, "inputs")
+    return _named(fn, name, "inputs", native)
 
 
 def binary(native: Callable, name: str) -> Callable:
@@ -92,13 +93,45 @@ def binary(native: Callable, name: str) -> Callable:
     return _named(fn, name, "operands")
 
 
-def _named(fn: Callable, name: str, what: str) -> Callable:
+def _named(fn: Callable, name: str, what: str, native: Callable | None = None) -> Callable:
     fn.__name__ = fn.__qualname__ = name
     fn.__ivy_reals__ = True
     fn.__doc__ = f"{name}, with integer and boolean {what} computed in float32."
+    if native is not None:
+        try:  # the native's parameters, not ``*args, **kwargs``
+            fn.__signature__ = inspect.signature(native)
+        except (TypeError, ValueError):
+            pass
     return fn
 
 
 # ivy's rule for the functions of real numbers that the core declares (@dispatch(reals=True)),
 # applied by the assembly of the backends whose arrays carry numpy dtypes.
 WRAPPERS = {"unary": unary, "binary": binary, "options": with_options}
+
+
+def scalar_operands(native: Callable, name: str) -> Callable:
+    """``native(x1, x2)`` with a Python float (or complex) next to an integer or boolean array
+    computed as ivy says: in float32 (complex64), the default dtype, where numpy and jax (with
+    64-bit types) give float64 (complex128). Two arrays are the native's business: the function
+    carries it as ``__ivy_native__``, which ivy's dispatchers call when no Python scalar is
+    involved."""
+
+    def fn(x1, x2, /):
+        out = native(x1, x2)
+        if type(x1) not in _PYTHON_SCALARS and type(x2) not in _PYTHON_SCALARS:
+            return out
+        dtype = getattr(out, "dtype", None)
+        if dtype is not _F64 and dtype is not _C128:
+            return out
+        if type(x1) in _PYTHON_SCALARS:
+            kind = _kind(x2)
+            return out if kind is None or kind in _INEXACT else native(x1, _float32(x2))
+        kind = _kind(x1)
+        return out if kind is None or kind in _INEXACT else native(_float32(x1), x2)
+
+    fn.__name__ = fn.__qualname__ = name
+    fn.__doc__ = f"{name}, with Python scalars promoted as ivy's rules say."
+    fn.__ivy_native__ = native
+    fn.__ivy_scalar_shim__ = True
+    return fn

@@ -28,6 +28,7 @@ import functools
 import inspect
 import linecache
 import os
+import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -91,7 +92,10 @@ def {name}({params}){returns}:
             ns = _by_f[f]
         except (KeyError, TypeError):
             ns = _resolve_f(f)
-    return ns.{name}({call})
+{convert}    try:
+        return ns.{name}({call})
+    except Exception as err:
+        return _recover(ns, "{name}", err, ({positional}), {{{keywords}}})
 """
 
 
@@ -109,11 +113,41 @@ def _infer_block(name: str, arrays: list[str], indent: str) -> str:
         "except KeyError:",
         f"    ns = {slow}",
     ]
-    if rest:
+    if len(rest) == 1:
         # (no ``try: ... else:`` here: tensorflow's AutoGraph cannot read an ``if`` inside one)
-        mismatch = " or ".join(f"(type({p}) is not t and type({p}) not in _passive)" for p in rest)
-        lines += [f"if {mismatch}:", f"    ns = {slow}"]
+        other = rest[0]
+        lines += [
+            f"if type({other}) is not t:",
+            f"    if type({other}) in _passive:",
+            "        ns = ns.__ivy_scalars__",
+            "    else:",
+            f"        ns = {slow}",
+        ]
+    elif rest:
+        mismatch = " or ".join(f"type({p}) is not t" for p in rest)
+        lines += [f"if {mismatch}:", f"    ns = _mixed(ns, ({everything},), 'ivy.{name}')"]
     return "\n".join(indent + line for line in lines)
+
+
+_ARRAY_ANNOTATION = re.compile(r"\bArray\b")
+
+
+def _convert_block(params: list[inspect.Parameter], indent: str) -> str:
+    """Source that converts, when ``f`` is given, the arrays of another framework among the
+    parameters annotated as arrays (``Array``, ``Array | Scalar``, ``Sequence[Array]``...) to the
+    chosen framework: ``ivy.sin(np_array, f='torch')`` computes on torch. An array of the chosen
+    framework costs one dict look-up per parameter."""
+    lines = []
+    for p in params:
+        ann = p.annotation
+        if isinstance(ann, str) and _ARRAY_ANNOTATION.search(ann) and p.name != "f":
+            lines += [
+                f"if _by_type.get(type({p.name})) is not ns:",
+                f"    {p.name} = _to_namespace(ns, {p.name})",
+                f"    if type({p.name}) in _passive:",
+                "        ns = ns.__ivy_scalars__",
+            ]
+    return "".join(indent + line + "\n" for line in lines)
 
 
 def _literal(value: Any) -> str:
@@ -138,6 +172,8 @@ def _build(stub: Callable, arrays: list[str]) -> Callable:
         raise TypeError(f"stub {stub.__name__} must end with a keyword-only parameter f=None")
     declared: list[str] = []
     call: list[str] = []
+    positional: list[str] = []
+    keywords: list[str] = []
     slash_done = False
     star_done = False
     for p in params:
@@ -159,6 +195,10 @@ def _build(stub: Callable, arrays: list[str]) -> Callable:
         if p.name == "f":
             continue
         call.append(p.name if p.kind is not p.KEYWORD_ONLY else f"{p.name}={p.name}")
+        if p.kind is p.KEYWORD_ONLY:
+            keywords.append(f"{p.name!r}: {p.name}")
+        else:
+            positional.append(p.name)
     names = {p.name for p in params}
     unknown = set(arrays) - names
     if unknown:
@@ -170,7 +210,10 @@ def _build(stub: Callable, arrays: list[str]) -> Callable:
         params=", ".join(declared),
         returns="" if returns is sig.empty else f" -> {_annotation(returns)}",
         infer=_infer_block(stub.__name__, arrays, " " * 12),
+        convert=_convert_block(params, " " * 8),
         call=", ".join(call),
+        positional="".join(f"{p}, " for p in positional),
+        keywords=", ".join(keywords),
     )
     filename = os.path.join(_DISPATCH_DIR, f"{stub.__name__}.py")
     # mtime None: linecache.checkcache keeps the entry although no such file exists on disk.
@@ -260,9 +303,24 @@ def _register(fn: Callable, kind: str, reals: str | None = None) -> Callable:
 
 
 def composition(fn: Callable) -> Callable:
-    """Mark ``fn`` (which takes ``f=None``) as a composition exposed in every backend namespace."""
-    fn.__ivy_kind__ = "composition"
-    return _register(_fh.run_as_is_in_autograph(fn), "composition")
+    """Mark ``fn`` (which takes ``f=None``) as a composition exposed in every backend namespace.
+
+    The agnostic function (``ivy.<name>``) converts, when ``f`` is given, the arrays of other
+    frameworks among its arguments to the chosen one, as the dispatchers do; the backends bind
+    ``fn`` itself (``__ivy_body__``), whose arguments are already the backend's.
+    """
+
+    @functools.wraps(fn)
+    def agnostic(*args: Any, f: Any = None, **kwargs: Any) -> Any:
+        if f is not None:
+            ns = _fh.get_framework(f=f)
+            args = [_fh.to_namespace(ns, a) for a in args]
+            kwargs = {k: _fh.to_namespace(ns, v) for k, v in kwargs.items()}
+        return fn(*args, f=f, **kwargs)
+
+    agnostic.__ivy_kind__ = fn.__ivy_kind__ = "composition"
+    agnostic.__ivy_body__ = fn
+    return _register(_fh.run_as_is_in_autograph(agnostic), "composition")
 
 
 def alias(name: str, target: Callable) -> Callable:

@@ -32,6 +32,8 @@ __all__ = [
     "isdtype",
     "finfo",
     "iinfo",
+    "REFUSED_KINDS",
+    "refused_kind",
 ]
 
 _SIGNED = frozenset({"int8", "int16", "int32", "int64"})
@@ -186,7 +188,12 @@ def result_type(names, scalars=()) -> str:
 
 
 def can_cast(from_: str, to: str) -> bool:
-    """True when promoting ``from_`` with ``to`` gives ``to``."""
+    """True when promoting ``from_`` with ``to`` by the Array API's table gives ``to``: within a
+    kind, or a real floating dtype to a complex one. Across kinds (``bool`` to ``int8``,
+    ``int64`` to ``float64``), which the table leaves out, False."""
+    ka, kb = kind_of(from_), kind_of(to)
+    if ka != kb and not (ka == 2 and kb == 3):
+        return False
     return promote(from_, to) == to
 
 
@@ -232,3 +239,38 @@ def iinfo(name: str, native: Callable[[str], Any] = str) -> IInfo:
 
     info = np.iinfo(name)
     return IInfo(bits=int(info.bits), max=int(info.max), min=int(info.min), dtype=native(name))
+
+
+# The dtype kinds (0 bool, 1 integer, 2 real floating, 3 complex) that a function does not take,
+# on every backend (the Array API standard's table, with ivy's extension: functions of real
+# numbers take integers and bools, computed in float32). A call that a backend refuses with such
+# a dtype raises ivy's DtypeError (a TypeError) on every backend (``ivy/core/_diagnose.py``).
+_NO_COMPLEX = (
+    "atan2 copysign hypot nextafter logaddexp signbit ceil floor trunc greater greater_equal "
+    "less less_equal maximum minimum remainder floor_divide"
+)
+REFUSED_KINDS: dict[str, frozenset[int]] = {
+    **{name: frozenset({3}) for name in _NO_COMPLEX.split()},
+    **{
+        name: frozenset({2, 3})
+        for name in (
+            "bitwise_and bitwise_or bitwise_xor bitwise_invert bitwise_left_shift "
+            "bitwise_right_shift"
+        ).split()
+    },
+}
+_KIND_WORDS = ("bool", "integer", "real floating", "complex floating")
+
+
+def refused_kind(function: str, names, scalars=()) -> str | None:
+    """The kind (in words) of the operands' dtypes ``names`` (and Python ``scalars``) that
+    ``function`` does not take, or None. The promoted dtype counts too (int64 with uint64 is
+    float64)."""
+    refused = REFUSED_KINDS.get(function)
+    if not refused or not names:
+        return None
+    kinds = [kind_of(n) for n in names] + [kind_of(result_type(names, scalars))]
+    for k in kinds:
+        if k in refused:
+            return _KIND_WORDS[k]
+    return None

@@ -238,7 +238,10 @@ def meshgrid(
 
     Example: ``[a.shape for a in ivy.meshgrid(np.ones(3), np.ones(2))]`` -> ``[(2, 3), (2, 3)]``.
     """
-    return _fh.get_framework(*arrays, f=f).meshgrid(*arrays, indexing=indexing)
+    ns = _fh.get_framework(*arrays, f=f)
+    if f is not None:
+        arrays = _fh.to_namespace(ns, arrays)
+    return ns.meshgrid(*arrays, indexing=indexing)
 
 
 @dispatch

@@ -13,6 +13,7 @@ float64; torch, jax and tensorflow: float32), and the framework-independent rule
 
 from __future__ import annotations
 
+from ivy import framework_handler as _fh
 from ivy.core import _dtype_rules as _rules
 from ivy.core._by_hand import by_hand, framework_or_none
 from ivy.core._dispatch import alias, dispatch
@@ -115,4 +116,8 @@ def result_type(*arrays_and_dtypes: Array | Dtype | Scalar, f: Framework = None)
         names = [_rules.name_of(a) for a in arrays_and_dtypes if not isinstance(a, _SCALARS)]
         scalars = [a for a in arrays_and_dtypes if isinstance(a, _SCALARS)]
         return _rules.result_type(names, scalars)
+    if f is not None:  # arrays of another framework: converted, as every function does
+        arrays_and_dtypes = [
+            _fh.to_namespace(ns, a) if hasattr(a, "shape") else a for a in arrays_and_dtypes
+        ]
     return ns.result_type(*arrays_and_dtypes)

@@ -99,10 +99,11 @@ def gradient_image(x: Array, /, *, f: Framework = None) -> tuple[Array, Array]:
     return dy, dx
 
 
-def image_grid(
+def _image_grid(
     count: int, height: int, width: int, aspect_ratio: tuple[float, float] = (1, 1)
 ) -> tuple[int, int]:
-    """``(rows, columns)`` of the grid :func:`stack_images` uses for ``count`` images.
+    """``(rows, columns)`` of the grid :func:`stack_images` uses for ``count`` images (a helper
+    of stack_images, not public API).
 
     The grid has no empty row, and its aspect ratio (``rows * height`` to ``columns * width``) is
     the closest to ``aspect_ratio`` (height to width) on a log scale; ties go to fewer blank
@@ -132,8 +133,9 @@ def stack_images(
     """Tile images of one shape into a single image, in a grid whose aspect ratio is as close as
     possible to ``desired_aspect_ratio``.
 
-    The images fill the grid row by row; the cells left over in the last row are black (0). See
-    :func:`image_grid` for the choice of grid.
+    The images fill the grid row by row; the cells left over in the last row are black (0). The
+    grid has no empty row, and its aspect ratio (``rows * H`` to ``columns * W``) is the closest
+    to ``desired_aspect_ratio`` on a log scale; ties go to fewer blank cells, then fewer rows.
 
     Args:
         images: a list of images ``[..., H, W, C]`` of the same shape.
@@ -155,7 +157,7 @@ def stack_images(
             f"stack_images: the images must all be [..., H, W, C] of one shape; got "
             f"{[tuple(xp.shape(im)) for im in images]}."
         )
-    rows, cols = image_grid(len(images), shape[-3], shape[-2], desired_aspect_ratio)
+    rows, cols = _image_grid(len(images), shape[-3], shape[-2], desired_aspect_ratio)
     cells = images + [xp.zeros_like(images[0])] * (rows * cols - len(images))
     lines = [xp.concat(cells[r * cols : (r + 1) * cols], axis=-2) for r in range(rows)]
     return xp.concat(lines, axis=-3)

@@ -37,7 +37,10 @@ def einsum(equation: str, *operands: Array, f: Framework = None) -> Array:
 
     Example: ``ivy.einsum('ij,j->i', a, v)`` is ``a @ v``.
     """
-    return _fh.get_framework(*operands, f=f).einsum(equation, *operands)
+    ns = _fh.get_framework(*operands, f=f)
+    if f is not None:
+        operands = _fh.to_namespace(ns, operands)
+    return ns.einsum(equation, *operands)
 
 
 @composition

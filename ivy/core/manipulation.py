@@ -88,8 +88,13 @@ def squeeze(
 
 
 @dispatch
-def expand_dims(x: Array, /, *, axis: int = 0, f: Framework = None) -> Array:
-    """Insert a size-1 axis at position ``axis``."""
+def expand_dims(x: Array, /, axis: int | tuple[int, ...] = 0, *, f: Framework = None) -> Array:
+    """Insert size-1 axes at the positions ``axis`` (an int or a tuple of ints) of the result.
+
+    ``axis`` may be passed by position or by keyword (the Array API 2023.12 makes it
+    keyword-only, 2024.12 positional as well). Example: the shape of
+    ``ivy.expand_dims(np.ones((2, 3)), axis=(0, 3))`` is ``(1, 2, 3, 1)``.
+    """
 
 
 @dispatch
@@ -138,7 +143,13 @@ def broadcast_arrays(*arrays: Array, f: Framework = None) -> list[Array]:
     Example: ``[a.shape for a in ivy.broadcast_arrays(np.ones((2, 1)), np.ones(3))]`` ->
     ``[(2, 3), (2, 3)]``.
     """
-    return _fh.get_framework(*arrays, f=f).broadcast_arrays(*arrays)
+    ns = _fh.get_framework(*arrays, f=f)
+    if f is not None:
+        arrays = _fh.to_namespace(ns, arrays)
+    try:
+        return ns.broadcast_arrays(*arrays)
+    except Exception as err:  # noqa: BLE001 - raised again, typed (ivy/core/_diagnose.py)
+        return _fh._recover(ns, "broadcast_arrays", err, tuple(arrays), {})
 
 
 @dispatch

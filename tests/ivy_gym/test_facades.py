@@ -87,6 +87,8 @@ def test_state_reads_and_writes_the_core_state(backend):
         ("Reacher-v0", np.array([0.5]), "shape"),
         ("MountainCarContinuous-v0", np.array([-1.01]), "outside the action space"),
         ("CartPole-v1", 2, "0 \\(push left\\) or 1"),
+        ("CartPole-v1", -1, "0 \\(push left\\) or 1"),
+        ("CartPole-v1", np.uint8(2), "0 \\(push left\\) or 1"),
         ("CartPole-v1", 0.5, "integer"),
         ("CartPole-v1", np.array([1]), "integer"),
     ],
@@ -210,3 +212,17 @@ def test_vector_env_matches_the_core(backend):
     obs = [envs.step(a)[0] for a in actions]
     traj = ivy_gym.rollout(ivy_gym.MountainCarShaped(), native(start, backend), actions)
     np.testing.assert_allclose(np.array(obs), numpy_of(traj.observations), rtol=1e-13)
+
+
+def test_vector_env_discrete_actions_and_fresh_observations():
+    envs = _vec("CartPole-v1", 4)
+    envs.reset(seed=0)
+    with pytest.raises(ValueError, match="0 \\(push left\\) or 1"):
+        envs.step(np.array([0, 1, -1, 0]))
+    core = ivy_gym.CartPole()
+    start = envs.unwrapped.state.copy()
+    obs = envs.step(np.array([0, 1, 1, 0], np.uint8))[0]
+    expected = core.step(start, np.array([[-1.0], [1.0], [1.0], [-1.0]]))[1]
+    np.testing.assert_allclose(obs, expected, rtol=1e-6, atol=1e-7)
+    obs[:] = 100.0  # the caller's array: changing it leaves the environments' state alone
+    np.testing.assert_allclose(envs.unwrapped.state, expected, rtol=1e-6, atol=1e-7)

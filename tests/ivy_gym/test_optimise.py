@@ -124,3 +124,60 @@ def test_squash_actions_maps_to_the_action_box(backend):
     np.testing.assert_allclose(
         numpy_of(ivy_gym.squash_actions(logits, env)), [[-2.0], [0.0], [2 * np.tanh(0.5)], [2.0]]
     )
+
+
+def test_torch_compiled_optimisation_equals_eager(request):
+    """compile=True on torch (torch.compile; not the default, it takes ~20 s even for a tiny
+    horizon): the same return, gradient norm and updated actions as eagerly. One iteration:
+    the second recompiles (torch.compile guards on ivy's cache of array types)."""
+    if "torch" not in request.config.ivy_backends:
+        pytest.skip("torch not selected")
+    env = ivy_gym.CartPoleSwingUp()
+    state = native(np.array([[0.0, 0.0, 3.0, 0.0]]), "torch")
+    logits = np.random.default_rng(0).uniform(-1, 1, size=(3, 1, 1))
+    results = [
+        ivy_gym.optimise_actions(
+            env, 3, 1, initial_state=state, initial_logits=logits, compile=compile
+        )
+        for compile in (False, True)
+    ]
+    eager, compiled = results
+    np.testing.assert_allclose(compiled.returns, eager.returns, rtol=1e-5, atol=1e-7)
+    np.testing.assert_allclose(compiled.grad_norms, eager.grad_norms, rtol=1e-4, atol=1e-7)
+    np.testing.assert_allclose(numpy_of(compiled.actions), numpy_of(eager.actions), atol=1e-5)
+
+
+def test_narrowed_env_draws_from_the_shrunk_box(backend):
+    env = ivy_gym.CartPoleSwingUp()
+    near = env.narrowed(0.1)
+    assert near.params == env.params and env.reset_scale == 1.0 and near.reset_scale == 0.1
+    low, high = near.initial_bounds()
+    np.testing.assert_allclose(high, [0.1, 0.03, np.pi / 10, 0.03])
+    np.testing.assert_allclose(low, -high)
+    ivy.seed(0)
+    states = numpy_of(near.reset((500,), dtype="float64", f=backend))
+    assert np.all((states >= low) & (states <= high))
+    assert np.all(states.max(0) > 0.8 * high)  # the whole shrunk box, not a corner of it
+    assert near.replace(masscart=2.0).reset_scale == 0.1
+    with pytest.raises(ValueError, match="scale"):
+        env.narrowed(0.0)
+
+
+def test_optimise_policy_curriculum_stages(request):
+    backend = _quick_backend(request)
+    env = ivy_gym.PendulumSmooth()
+    ivy.seed(0)
+    mlp = ivy.MLP(3, (8,), 1, activation="tanh", output_activation="tanh", f=backend)
+    seen = []
+    result = ivy_gym.optimise_policy(
+        env, mlp, 10, 3, batch_size=4, curriculum=[(0.1, 2), (0.5, 2)], seed=0,
+        callback=lambda i, v: seen.append(i),
+    )  # fmt: skip
+    assert seen == list(range(7)) and result.returns.shape == (7,)
+    # near upright (a 10% box) the smooth reward is close to 1 per step; from anywhere it is not
+    assert result.returns[:2].min() > 8.5 and result.returns[4:].mean() < 8.5
+    stopped = ivy_gym.optimise_policy(
+        env, mlp, 10, 3, batch_size=4, curriculum=[(0.1, 2), (0.5, 2)],
+        callback=lambda i, v: i == 2,
+    )  # fmt: skip
+    assert stopped.returns.shape == (3,)

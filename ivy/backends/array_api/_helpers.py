@@ -6,6 +6,7 @@ host bridge for what the standard does not define."""
 from __future__ import annotations
 
 import functools
+import inspect
 from collections.abc import Callable
 from typing import Any
 
@@ -66,6 +67,7 @@ def helpers_for(xp: Any, backend: str) -> dict[str, Any]:
         "device_name": device_name,
         "as_inexact": as_inexact,
         "reals": reals_wrappers(xp),
+        "concrete": lambda value: True,
     }
 
 
@@ -100,6 +102,10 @@ def reals_wrappers(xp: Any) -> dict[str, Callable]:
         def fn(x, /, *args, **kwargs):
             return native(xp.astype(x, xp.float32) if exact(x) else x, *args, **kwargs)
 
+        try:  # the native's parameters, not ``*args, **kwargs``
+            fn.__signature__ = inspect.signature(native)
+        except (TypeError, ValueError):
+            pass
         return _named(fn, native, name)
 
     return {"unary": unary, "binary": binary, "options": options}

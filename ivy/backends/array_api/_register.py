@@ -57,6 +57,11 @@ def assemble_registered(name: str, spec: Any) -> types.ModuleType:
             module.host_bridged.append(fn_name)
         return fn
 
+    info = xp.__array_namespace_info__() if hasattr(xp, "__array_namespace_info__") else None
+
+    def devices() -> list:
+        return list(info.devices()) if info is not None else []
+
     return assemble(
         module,
         backend=name,
@@ -66,4 +71,5 @@ def assemble_registered(name: str, spec: Any) -> types.ModuleType:
         reals=helpers["reals"],
         capabilities=spec.capabilities,
         fallback=recorded,
+        devices=devices,
     )

@@ -30,3 +30,4 @@ dtype_name = _unbound("dtype_name")  # native dtype -> ivy's name ('float32')
 device_name = _unbound("device_name")  # native device -> ivy's name ('cpu', 'gpu:0')
 native_dtypes: dict = {}  # ivy dtype name -> the native dtype
 array_types: tuple = ()  # the types of the native arrays
+concrete = _unbound("concrete")  # array -> whether its values are known (not traced by jax.jit)

@@ -3,8 +3,9 @@ Python values keep ivy's default dtypes (bool, int64, float32, complex64)."""
 
 from __future__ import annotations
 
+from ivy.backends._creation_args import linspace_dtype
 from ivy.backends._dlpack import exportable
-from ivy.backends.array_api._unbound import native_device, native_dtype, xp
+from ivy.backends.array_api._unbound import backend_name, native_device, native_dtype, xp
 
 
 def _default_dtype(value):
@@ -64,7 +65,7 @@ def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
 
 
 def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True):
-    dtype = native_dtype(dtype) or xp.float32
+    dtype = native_dtype(linspace_dtype(start, stop, dtype, backend_name) or dtype)
     return xp.linspace(
         start, stop, num, dtype=dtype, device=native_device(device), endpoint=endpoint
     )

@@ -27,11 +27,21 @@ def astype(x, dtype, /, *, copy=True, device=None):
 
 
 def can_cast(from_, to, /):
-    return xp.can_cast(_native(from_), native_dtype(to))
+    """By the Array API's table (ivy's rules): never across kinds."""
+    return rules.can_cast(_name(from_), _name(to))
+
+
+_PYTHON_SCALARS = (bool, int, float, complex)
 
 
 def result_type(*arrays_and_dtypes):
-    return xp.result_type(*(_native(a) for a in arrays_and_dtypes))
+    """By ivy's rules (``ivy/core/_dtype_rules.py``): a Python float next to an integer array
+    gives float32 (numpy's would be float64)."""
+    scalars = [v for v in arrays_and_dtypes if type(v) in _PYTHON_SCALARS]
+    if not scalars:
+        return xp.result_type(*(_native(a) for a in arrays_and_dtypes))
+    names = [_name(v) for v in arrays_and_dtypes if type(v) not in _PYTHON_SCALARS]
+    return native_dtypes[rules.result_type(names, scalars)]
 
 
 def _name(dtype_or_array) -> str:

@@ -8,19 +8,41 @@ nothing here converts integer inputs.
 
 from __future__ import annotations
 
-from ivy.backends.array_api._unbound import xp
+from ivy.backends._clip_args import clip_bounds
+from ivy.backends.array_api._unbound import backend_ns, xp
 
 NATIVE = {
     name: name
     for name in (
-        "abs acos acosh add asin asinh atan atan2 atanh bitwise_and bitwise_invert "
+        "abs acos acosh asin asinh atan atanh bitwise_and bitwise_invert "
         "bitwise_left_shift bitwise_or bitwise_right_shift bitwise_xor ceil conj copysign cos "
-        "cosh divide equal exp expm1 floor floor_divide greater greater_equal hypot imag isfinite "
+        "cosh divide equal exp expm1 floor greater greater_equal hypot imag isfinite "
         "isinf isnan less less_equal log log10 log1p log2 logaddexp logical_and logical_not "
-        "logical_or logical_xor maximum minimum multiply negative nextafter not_equal positive "
-        "pow real remainder round sign signbit sin sinh sqrt square subtract tan tanh trunc"
+        "logical_or logical_xor negative nextafter not_equal positive "
+        "real round sign signbit sin sinh sqrt square tan tanh trunc"
     ).split()
 }
+# Natives that promote a Python float next to an integer array to float64 (numpy, and jax with
+# 64-bit types): wrapped so that it is float32, as ivy says (``_reals.scalar_operands``).
+SCALAR_OPERANDS = {
+    name: name
+    for name in "add subtract multiply floor_divide remainder pow maximum minimum".split()
+}
+
+
+def atan2(x1, x2, /):
+    """The native's; complex input is refused (jax's would answer)."""
+    out = xp.atan2(x1, x2)
+    if getattr(out.dtype, "kind", None) == "c":
+        from ivy.errors import DtypeError
+
+        raise DtypeError(
+            "takes no complex floating input. Cast first (ivy.astype).",
+            function="atan2",
+            argument="x1, x2",
+            backend=backend_ns.backend,
+        )
+    return out
 
 
 def reciprocal(x, /):
@@ -28,9 +50,16 @@ def reciprocal(x, /):
 
 
 def clip(x, /, min=None, max=None):  # noqa: A002 - the Array API names
+    """The result has ``x``'s dtype whatever the bounds' (``ivy/backends/_clip_args.py``)."""
+    x = xp.asarray(x)
     if min is None and max is None:
         return xp.asarray(x, copy=True)
-    return xp.clip(x, min, max)
+    low, high = clip_bounds(backend_ns, x, min, max)
+    if x.dtype == xp.bool:
+        if low is not None:
+            x = xp.logical_or(x, xp.asarray(low))
+        return x if high is None else xp.logical_and(x, xp.asarray(high))
+    return xp.clip(x, low, high)
 
 
 def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):

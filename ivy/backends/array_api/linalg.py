@@ -4,7 +4,20 @@ float32, the default float dtype (numpy, and jax with 64-bit types, would use fl
 
 from __future__ import annotations
 
-from ivy.backends.array_api._unbound import as_inexact, xp
+from ivy.backends.array_api._unbound import as_inexact, backend_name, concrete, xp
+from ivy.errors import LinAlgError
+
+
+def _checked(out, x, name: str, what: str):
+    """``out``, or LinAlgError where a finite ``x`` gave non-finite values: jax answers a
+    singular or indefinite matrix with inf or NaN where numpy raises (checked only where the
+    values are known: not inside ``jax.jit``)."""
+    if concrete(out) and not bool(xp.all(xp.isfinite(out))) and bool(xp.all(xp.isfinite(x))):
+        raise LinAlgError(
+            f"the matrix is {what}.", function=name, argument="x", backend=backend_name
+        )
+    return out
+
 
 NATIVE = {
     "matmul": "matmul",
@@ -19,7 +32,8 @@ NATIVE = {
 
 
 def cholesky(x, /, *, upper=False):
-    return xp.linalg.cholesky(as_inexact(x), upper=upper)
+    x = as_inexact(x)
+    return _checked(xp.linalg.cholesky(x, upper=upper), x, "cholesky", "not positive definite")
 
 
 def det(x, /):
@@ -35,7 +49,8 @@ def eigvalsh(x, /):
 
 
 def inv(x, /):
-    return xp.linalg.inv(as_inexact(x))
+    x = as_inexact(x)
+    return _checked(xp.linalg.inv(x), x, "inv", "singular")
 
 
 def matrix_norm(x, /, *, keepdims=False, ord="fro"):
@@ -64,7 +79,8 @@ def slogdet(x, /):
 
 
 def solve(x1, x2, /):
-    return xp.linalg.solve(as_inexact(x1), as_inexact(x2))
+    x1 = as_inexact(x1)
+    return _checked(xp.linalg.solve(x1, as_inexact(x2)), x1, "solve", "singular")
 
 
 def svd(x, /, *, full_matrices=True):

@@ -12,10 +12,10 @@ NATIVE = {"all": "all", "any": "any"}
 
 def diff(x, /, *, axis=-1, n=1, prepend=None, append=None):
     extra = {}
-    if prepend is not None:
-        extra["prepend"] = prepend
-    if append is not None:
-        extra["append"] = append
+    for key, value in (("prepend", prepend), ("append", append)):
+        if value is not None:  # a Python scalar takes x's dtype (numpy's would be float64)
+            scalar = type(value) in (bool, int, float, complex)
+            extra[key] = xp.asarray(value, dtype=x.dtype) if scalar else value
     return xp.diff(x, axis=axis, n=n, **extra)
 
 

@@ -23,6 +23,28 @@ _NEEDS_X64 = {
 }
 
 
+def _x64() -> bool:
+    return jax.config.jax_enable_x64
+
+
+# The dtypes jax holds only while 64-bit types are on (read at each look-up: x64 may be switched
+# on after import).
+X64_DTYPES = {name: _x64 for name in ("int64", "uint64", "float64", "complex128")}
+# jax.numpy's own inspection says no to both, since neither works inside jax.jit; ivy's
+# functions are eager unless compiled, and there both work.
+ARRAY_API_CAPABILITIES = {
+    "boolean indexing": True,
+    "data-dependent shapes": True,
+    "max dimensions": None,
+}
+
+
+def devices() -> list:
+    """The devices jax sees: those of its default backend, and the CPU."""
+    found = list(jax.devices())
+    return found + [d for d in jax.devices("cpu") if d not in found]
+
+
 def default_int():
     """int64 when jax has 64-bit types enabled, else int32 (jax cannot hold int64 then)."""
     return jnp.int64 if jax.config.jax_enable_x64 else jnp.int32
@@ -151,4 +173,5 @@ SHARED = {
     "as_inexact": as_inexact,
     "dtype_name": dtype_name,
     "device_name": device_name,
+    "concrete": lambda value: not isinstance(value, jax.core.Tracer),
 }

@@ -18,8 +18,14 @@ def gelu(x, /, approximate=False):
 
 
 def softmax(x, /, axis=-1):
-    return jax.nn.softmax(as_inexact(x), axis=axis)
+    x = as_inexact(x)
+    if len(x.shape) == 0 and axis in (0, -1):  # a 0-d array: one class (as numpy and torch)
+        return jax.nn.softmax(x[None], axis=0)[0]
+    return jax.nn.softmax(x, axis=axis)
 
 
 def log_softmax(x, /, axis=-1):
-    return jax.nn.log_softmax(as_inexact(x), axis=axis)
+    x = as_inexact(x)
+    if len(x.shape) == 0 and axis in (0, -1):  # a 0-d array: one class (as numpy and torch)
+        return jax.nn.log_softmax(x[None], axis=0)[0]
+    return jax.nn.log_softmax(x, axis=axis)

@@ -6,6 +6,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
+from ivy.backends._creation_args import check_fill_value, linspace_dtype
 from ivy.backends.jax._helpers import (
     check_x64_of,
     default_dtype_of_value,
@@ -69,6 +70,7 @@ def empty(shape, *, dtype=None, device=None):
 
 def full(shape, fill_value, *, dtype=None, device=None):
     dt = native_dtype(dtype) or default_dtype_of_value(fill_value)
+    check_fill_value(fill_value, jnp.dtype(dt).name, "jax")
     return jnp.full(shape, fill_value, dt, device=native_device(device))
 
 
@@ -84,7 +86,7 @@ def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
 
 
 def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True):
-    dt = native_dtype(dtype) or jnp.float32
+    dt = native_dtype(linspace_dtype(start, stop, dtype, "jax") or dtype)
     return jnp.linspace(start, stop, num, endpoint, dtype=dt, device=native_device(device))
 
 

@@ -1,6 +1,6 @@
 """jax backend: data types. ``result_type`` is jax's own (its promotion lattice: int64 with
-float32 gives float32, Python scalars are weak); ``can_cast`` follows that same promotion (jax's
-own ``can_cast`` uses numpy's rules instead). ``finfo`` and ``iinfo`` return Python numbers and
+float32 gives float32; Python scalars promote by ivy's rules); ``can_cast`` follows the Array API's
+table (ivy's rules: never across kinds). ``finfo`` and ``iinfo`` return Python numbers and
 jax's dtype objects, as the Array API asks."""
 
 from __future__ import annotations
@@ -11,7 +11,17 @@ import numpy as np
 from ivy.backends.jax._helpers import NATIVE_DTYPES, native_device, native_dtype
 from ivy.core import _dtype_rules as rules
 
-result_type = jnp.result_type
+_PYTHON_SCALARS = (bool, int, float, complex)
+
+
+def result_type(*arrays_and_dtypes):
+    """jax's, but Python scalars promote by ivy's rules (a float next to an integer array gives
+    float32 also with 64-bit types on)."""
+    scalars = [v for v in arrays_and_dtypes if type(v) in _PYTHON_SCALARS]
+    if not scalars:
+        return jnp.result_type(*arrays_and_dtypes)
+    names = [_name(v) for v in arrays_and_dtypes if type(v) not in _PYTHON_SCALARS]
+    return jnp.dtype(NATIVE_DTYPES[rules.result_type(names, scalars)])
 
 
 def astype(x, dtype, /, *, copy=True, device=None):
@@ -30,8 +40,8 @@ def _name(dtype_or_array) -> str:
 
 
 def can_cast(from_, to, /):
-    to = _dtype(to)
-    return jnp.promote_types(_dtype(from_), to) == to
+    """By the Array API's table (ivy's rules), as the other backends."""
+    return rules.can_cast(_name(from_), _name(to))
 
 
 def finfo(type, /):

@@ -1,9 +1,12 @@
 """jax backend: gathering and scattering.
 
-As everywhere in jax, out-of-bounds indices do not raise (they cannot under ``jax.jit``):
-``take``, ``take_along_axis``, ``gather_nd`` and ``gather_flat`` return a fill value there (NaN for floats, the smallest integer for
-ints; jax's ``mode='fill'``), and ``scatter_nd`` and ``scatter_flat`` drop those updates. ``indices_where`` has a result shape
-that depends on the values, so it cannot run under ``jax.jit``.
+Out-of-bounds indices raise :class:`ivy.errors.IndexOutOfBoundsError` in eager calls, as on
+every backend (``ivy/backends/_index_checks.py``). Inside ``jax.jit`` indices have no values to
+check, and jax's own behaviour applies: ``take``, ``take_along_axis``, ``gather_nd`` and
+``gather_flat`` return a fill value there (NaN for floats, the smallest integer for ints; jax's
+``mode='fill'``), ``scatter_nd`` and ``scatter_flat`` drop those updates, and ``one_hot`` gives a
+row of zeros. ``indices_where`` has a result shape that depends on the values, so it cannot run
+under ``jax.jit``.
 """
 
 from __future__ import annotations
@@ -11,6 +14,7 @@ from __future__ import annotations
 import jax
 import jax.numpy as jnp
 
+from ivy.backends._index_checks import check_bounds, check_bounds_per_column
 from ivy.backends.jax._helpers import native_dtype
 
 indices_where = jnp.argwhere
@@ -18,8 +22,16 @@ indices_where = jnp.argwhere
 _SCATTER_METHODS = {"sum": "add", "replace": "set", "min": "min", "max": "max"}
 
 
+def _eager(*values) -> bool:
+    return not any(isinstance(v, jax.core.Tracer) for v in values)
+
+
 def take(x, indices, /, *, axis=None):
-    return jnp.take(x, jnp.asarray(indices), axis=axis)  # jnp.take refuses Python lists
+    indices = jnp.asarray(indices)  # jnp.take refuses Python lists
+    if _eager(indices):
+        size = x.size if axis is None else x.shape[axis]
+        check_bounds(indices, size, function="take", backend="jax")
+    return jnp.take(x, indices, axis=axis)
 
 
 def _index_tuple(indices):
@@ -28,7 +40,10 @@ def _index_tuple(indices):
 
 
 def gather_nd(params, indices, /):
-    return jnp.asarray(params).at[_index_tuple(indices)].get(mode="fill")
+    params, indices = jnp.asarray(params), jnp.asarray(indices)
+    if _eager(indices):
+        check_bounds_per_column(indices, params.shape, function="gather_nd", backend="jax")
+    return params.at[_index_tuple(indices)].get(mode="fill")
 
 
 def scatter_nd(indices, updates, /, shape, *, reduction="sum"):
@@ -37,7 +52,10 @@ def scatter_nd(indices, updates, /, shape, *, reduction="sum"):
         raise ValueError(
             f"scatter_nd: unknown reduction {reduction!r}; use 'sum', 'replace', 'min' or 'max'."
         )
-    updates = jnp.asarray(updates)
+    updates, indices = jnp.asarray(updates), jnp.asarray(indices)
+    shape = (shape,) if isinstance(shape, int) else tuple(shape)
+    if _eager(indices):
+        check_bounds_per_column(indices, shape, function="scatter_nd", backend="jax")
     idx = _index_tuple(indices)
     out = jnp.zeros(shape, updates.dtype)
     if method in ("min", "max"):
@@ -47,11 +65,13 @@ def scatter_nd(indices, updates, /, shape, *, reduction="sum"):
 
 
 def one_hot(indices, depth, /, *, dtype=None):
+    if _eager(indices):
+        check_bounds(indices, depth, function="one_hot", backend="jax", negative=False)
     return jax.nn.one_hot(indices, depth, dtype=native_dtype(dtype) or jnp.float32)
 
 
 def gather_flat(params, indices, /):
-    return jnp.take(params, jnp.asarray(indices))  # flattened; jnp.take refuses Python lists
+    return take(params, indices)  # flattened (axis None)
 
 
 def scatter_flat(indices, updates, /, size, *, reduction="sum"):
@@ -59,4 +79,7 @@ def scatter_flat(indices, updates, /, size, *, reduction="sum"):
 
 
 def take_along_axis(x, indices, /, *, axis=-1):
-    return jnp.take_along_axis(jnp.asarray(x), jnp.asarray(indices), axis=axis)
+    x, indices = jnp.asarray(x), jnp.asarray(indices)
+    if _eager(indices):
+        check_bounds(indices, x.shape[axis], function="take_along_axis", backend="jax")
+    return jnp.take_along_axis(x, indices, axis=axis)

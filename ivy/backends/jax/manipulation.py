@@ -42,7 +42,7 @@ def split(x, /, num_or_size_splits=None, *, axis=0):
     return jnp.split(x, list(itertools.accumulate(sizes[:-1])), axis=axis)
 
 
-def expand_dims(x, /, *, axis=0):
+def expand_dims(x, /, axis=0):
     return jnp.expand_dims(x, axis)
 
 

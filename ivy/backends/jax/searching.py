@@ -6,12 +6,25 @@ import jax
 import jax.numpy as jnp
 
 from ivy.backends.jax._helpers import default_int
+from ivy.core import _dtype_rules as rules
 from ivy.errors import UnsupportedError
 
 argmax = jnp.argmax
 argmin = jnp.argmin
 count_nonzero = jnp.count_nonzero
-where = jnp.where
+_PYTHON_SCALARS = (bool, int, float, complex)
+
+
+def where(condition, x1, x2, /):
+    """jax's, but a Python float next to an integer array gives float32 (ivy's rule), also with
+    64-bit types on."""
+    if type(x1) in _PYTHON_SCALARS or type(x2) in _PYTHON_SCALARS:
+        arrays = [rules.name_of(v.dtype) for v in (x1, x2) if hasattr(v, "dtype")]
+        if arrays:
+            scalars = [v for v in (x1, x2) if type(v) in _PYTHON_SCALARS]
+            dtype = rules.result_type(arrays, scalars)
+            x1, x2 = jnp.asarray(x1, dtype=dtype), jnp.asarray(x2, dtype=dtype)
+    return jnp.where(condition, x1, x2)
 
 
 def nonzero(x, /):

@@ -5,14 +5,10 @@ from __future__ import annotations
 import jax
 import jax.numpy as jnp
 
-from ivy.backends import _reals
 from ivy.backends.jax._helpers import default_int, native_dtype
 
-mean = _reals.with_options(jnp.mean, "mean")
 min = jnp.min
 max = jnp.max
-var = _reals.with_options(jnp.var, "var")  # takes ``correction=`` as the Array API does
-std = _reals.with_options(jnp.std, "std")
 
 
 def sum(x, /, *, axis=None, dtype=None, keepdims=False):

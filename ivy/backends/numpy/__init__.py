@@ -21,4 +21,6 @@ assemble(
     xp=numpy,
     bind=_helpers.SHARED,
     reals=_reals.WRAPPERS,
+    scalars_need_shims=True,
+    natives_in_namespace=True,
 )

@@ -78,4 +78,5 @@ SHARED = {
     "as_inexact": as_inexact,
     "dtype_name": dtype_name,
     "device_name": device_name,
+    "concrete": lambda value: True,
 }

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ivy.backends._creation_args import linspace_dtype
 from ivy.backends._dlpack import exportable
 from ivy.backends.numpy._helpers import (
     check_device,
@@ -68,7 +69,8 @@ def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
 
 def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True):
     check_device(device)
-    return np.linspace(start, stop, num, endpoint=endpoint, dtype=native_dtype(dtype) or np.float32)
+    dtype = linspace_dtype(start, stop, dtype, "numpy") or dtype
+    return np.linspace(start, stop, num, endpoint=endpoint, dtype=native_dtype(dtype))
 
 
 def eye(n_rows, n_cols=None, /, *, k=0, dtype=None, device=None):

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ivy.backends._index_checks import check_bounds
 from ivy.backends.numpy._helpers import native_dtype
 
 gather_flat = np.take  # (params, indices): flattened, any index shape, negative from the end
@@ -58,6 +59,7 @@ def _extreme(dtype, largest):
 
 def one_hot(indices, depth, /, *, dtype=None):
     indices = np.asarray(indices)
+    check_bounds(indices, depth, function="one_hot", backend="numpy", negative=False)
     return (indices[..., None] == np.arange(depth)).astype(native_dtype(dtype) or np.float32)
 
 

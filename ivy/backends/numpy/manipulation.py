@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ivy.core import _dtype_rules as rules
+
 
 def reshape(x, /, shape, *, copy=None):
     out = np.reshape(x, shape)
@@ -19,6 +21,10 @@ def transpose(x, /, axes=None):
 
 
 def concat(arrays, /, *, axis=0):
+    dtypes = {getattr(a, "dtype", None) for a in arrays}
+    if len(dtypes) > 1 and None not in dtypes:  # by ivy's rules: int64 with float32 is float32
+        dtype = rules.result_type([d.name for d in dtypes])
+        return np.concatenate(arrays, axis=axis, dtype=dtype, casting="unsafe")
     return np.concatenate(arrays, axis=axis)
 
 
@@ -55,7 +61,7 @@ def squeeze(x, /, axis=None):
     return np.squeeze(x, axis=axis)
 
 
-def expand_dims(x, /, *, axis=0):
+def expand_dims(x, /, axis=0):
     return np.expand_dims(x, axis)
 
 

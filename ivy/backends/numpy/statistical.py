@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ivy.backends.numpy._helpers import as_inexact, native_dtype
+from ivy.backends.numpy._helpers import native_dtype
 
 
 def sum(x, /, *, axis=None, dtype=None, keepdims=False):
@@ -15,24 +15,12 @@ def prod(x, /, *, axis=None, dtype=None, keepdims=False):
     return np.prod(x, axis=axis, dtype=native_dtype(dtype), keepdims=keepdims)
 
 
-def mean(x, /, *, axis=None, keepdims=False):
-    return np.mean(as_inexact(x), axis=axis, keepdims=keepdims)
-
-
 def min(x, /, *, axis=None, keepdims=False):
     return np.min(x, axis=axis, keepdims=keepdims)
 
 
 def max(x, /, *, axis=None, keepdims=False):
     return np.max(x, axis=axis, keepdims=keepdims)
-
-
-def var(x, /, *, axis=None, correction=0.0, keepdims=False):
-    return np.var(as_inexact(x), axis=axis, ddof=correction, keepdims=keepdims)
-
-
-def std(x, /, *, axis=None, correction=0.0, keepdims=False):
-    return np.std(as_inexact(x), axis=axis, ddof=correction, keepdims=keepdims)
 
 
 cumulative_sum = np.cumulative_sum

@@ -5,7 +5,7 @@ int32)."""
 import sys
 
 from ivy.backends._assemble import assemble
-from ivy.backends.tensorflow._helpers import NATIVE_DTYPES, REALS
+from ivy.backends.tensorflow._helpers import NATIVE_DTYPES, REALS, devices
 
 assemble(
     sys.modules[__name__],
@@ -13,4 +13,5 @@ assemble(
     package=__name__,
     native_dtypes=NATIVE_DTYPES,
     reals=REALS,
+    devices=devices,
 )

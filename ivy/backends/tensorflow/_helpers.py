@@ -235,6 +235,10 @@ def tf_device(device: str) -> str:
         return name
     if not isinstance(device, str):
         raise TypeError(f"device must be a string such as 'cpu' or 'gpu:0'; got {device!r}.")
+    if device.startswith("/"):  # tensorflow's own name ('/job:localhost/.../device:CPU:0')
+        spec = tf.DeviceSpec.from_string(device)
+        if spec.device_type is not None:
+            device = f"{spec.device_type.lower()}:{spec.device_index or 0}"
     kind_, _, index = device.lower().lstrip("/").partition(":")
     if kind_ not in ("cpu", "gpu") or not (index or "0").isdigit():
         raise ValueError(f"Unknown device {device!r}; use 'cpu' or 'gpu:N' (e.g. 'gpu:0').")
@@ -249,6 +253,15 @@ def tf_device(device: str) -> str:
     name = f"/{kind_.upper()}:{index}"
     _TF_DEVICES[device] = name
     return name
+
+
+def devices() -> list[str]:
+    """The devices tensorflow sees, by the names its tensors report as ``x.device``."""
+    return [
+        f"/job:localhost/replica:0/task:0/device:{d.device_type}:{d.name.rpartition(':')[2]}"
+        for d in tf.config.list_logical_devices()
+        if d.device_type in ("CPU", "GPU")
+    ]
 
 
 def placed(device):

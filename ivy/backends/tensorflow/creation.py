@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import tensorflow as tf
 
+from ivy.backends._creation_args import linspace_dtype
 from ivy.backends.tensorflow._helpers import (
     TENSOR_TYPES,
     default_dtype_of_value,
@@ -60,12 +61,32 @@ def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
     if stop is None:
         start, stop = 0, start
     with placed(device):
+        if (
+            all(isinstance(v, (int, float)) for v in (start, stop, step))
+            and (stop - start) * step <= 0
+        ):
+            return tf.zeros([0], dt)  # an empty range, which tf refuses
+        if dt.is_integer and dt not in (tf.int32, tf.int64):  # tf.range has no uint8 kernel
+            work = tf.int64 if dt.size < 8 or not dt.is_unsigned else tf.float64
         out = tf.range(tensor_of(start, work), tensor_of(stop, work), tensor_of(step, work))
         return out if work is dt else tf.cast(out, dt)
 
 
 def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True):
-    dt = native_dtype(dtype) or tf.float32
+    dt = native_dtype(linspace_dtype(start, stop, dtype, "tensorflow") or dtype)
+    if dt.is_complex:  # the real and imaginary parts, each spaced evenly
+        parts = [
+            linspace(
+                complex(v).real if i == 0 else complex(v).imag,
+                complex(w).real if i == 0 else complex(w).imag,
+                num,
+                dtype=dt.real_dtype,
+                device=device,
+                endpoint=endpoint,
+            )
+            for i, (v, w) in enumerate(((start, stop), (start, stop)))
+        ]
+        return tf.complex(*parts)
     work = dt if dt.is_floating else tf.float64
     with placed(device):
         out = tf.linspace(tensor_of(start, work), tensor_of(stop, work), num + (not endpoint))
@@ -107,7 +128,24 @@ def full_like(x, /, fill_value, *, dtype=None, device=None):
         return tf.fill(tf.shape(x), tensor_of(fill_value, native_dtype(dtype) or x.dtype))
 
 
-meshgrid = tf.meshgrid  # a list, as the Array API (2023.12) says
+def meshgrid(*arrays, indexing="xy"):
+    """A list, as the Array API (2023.12) says; arrays of several dtypes (which tf refuses)
+    each keep their dtype."""
+    arrays = [tensor(a) for a in arrays]
+    if len({a.dtype for a in arrays}) <= 1:
+        return tf.meshgrid(*arrays, indexing=indexing)
+    n = len(arrays)
+    sizes = [tf.size(a) for a in arrays]
+    order = list(range(n))
+    if indexing == "xy" and n > 1:
+        order[0], order[1] = 1, 0
+    shape = [sizes[order[k]] for k in range(n)]
+    out = []
+    for i, a in enumerate(arrays):
+        view = [1] * n
+        view[order.index(i)] = -1
+        out.append(tf.broadcast_to(tf.reshape(a, view), shape))
+    return out
 
 
 def from_dlpack(x, /, *, device=None, copy=None):

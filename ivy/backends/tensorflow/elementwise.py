@@ -19,6 +19,7 @@ import math
 
 import tensorflow as tf
 
+from ivy.backends._clip_args import clip_bounds
 from ivy.backends.tensorflow._helpers import (
     FAST_TYPES,
     REFUSED,
@@ -28,8 +29,8 @@ from ivy.backends.tensorflow._helpers import (
     tensor,
     tensor_of,
 )
+from ivy.errors import DtypeError
 
-abs = tf.math.abs
 acos = tf.math.acos
 acosh = tf.math.acosh
 asin = tf.math.asin
@@ -44,11 +45,8 @@ expm1 = tf.math.expm1
 imag = tf.math.imag
 log = tf.math.log
 log1p = tf.math.log1p
-negative = tf.math.negative
 positive = tf.identity
 real = tf.math.real
-round = tf.math.round
-sign = tf.math.sign
 sin = tf.math.sin
 sinh = tf.math.sinh
 sqrt = tf.math.sqrt
@@ -57,12 +55,52 @@ tan = tf.math.tan
 tanh = tf.math.tanh
 
 
+def round(x, /):  # noqa: A001 - the Array API name
+    """tf's (halves to even); complex numbers round each part (tf has no kernel for them)."""
+    if getattr(x, "dtype", None) in (tf.complex64, tf.complex128):
+        return tf.complex(tf.math.round(tf.math.real(x)), tf.math.round(tf.math.imag(x)))
+    return tf.math.round(x)
+
+
+def _log_base(x, base: float):
+    out = log(x)
+    if out.dtype.is_complex:  # divide each part by the real ln(base) (a complex division
+        # would make the imaginary part of log(0) = -inf + 0j NaN)
+        scale = tf.constant(1.0 / math.log(base), out.dtype.real_dtype)
+        return tf.complex(tf.math.real(out) * scale, tf.math.imag(out) * scale)
+    return out / math.log(base)
+
+
 def log2(x, /):
-    return log(x) / math.log(2.0)
+    return _log_base(x, 2.0)
 
 
 def log10(x, /):
-    return log(x) / math.log(10.0)
+    return _log_base(x, 10.0)
+
+
+def _unsigned_kernel(native, name: str, of_unsigned, of_bool=None):
+    """tf's ``native``, which has no kernel for unsigned integers (``of_unsigned`` computes
+    them exactly) nor for bools (``of_bool``; None: refused as tf refuses them)."""
+
+    def fn(x, /):
+        try:
+            return native(x)
+        except REFUSED:
+            x = tensor(x)
+            if x.dtype.is_unsigned:
+                return of_unsigned(x)
+            if x.dtype is tf.bool and of_bool is not None:
+                return of_bool(x)
+            raise
+
+    fn.__name__ = fn.__qualname__ = name
+    return fn
+
+
+abs = _unsigned_kernel(tf.math.abs, "abs", tf.identity, tf.identity)
+negative = _unsigned_kernel(tf.math.negative, "negative", lambda x: tf.zeros_like(x) - x)
+sign = _unsigned_kernel(tf.math.sign, "sign", lambda x: tf.cast(x > 0, x.dtype), tf.identity)
 
 
 def reciprocal(x, /):
@@ -119,15 +157,18 @@ isnan = _classification(tf.math.is_nan, "isnan", False, tf.math.logical_or)
 
 
 def _as_bools(*values) -> list:
+    """Truth values: nonzero is true (tf's cast of a complex number to bool reads its real part
+    only)."""
     out = []
     for v in values:
         v = tensor(v)
-        out.append(v if v.dtype is tf.bool else tf.cast(v, tf.bool))
+        out.append(v if v.dtype is tf.bool else tf.not_equal(v, tf.zeros((), v.dtype)))
     return out
 
 
-def _binary(native, name: str, fallback=promote):
-    """ivy function ``name`` calling tf's ``native``; ``fallback`` converts refused inputs."""
+def _binary(native, name: str, fallback=promote, bools: bool = False):
+    """ivy function ``name`` calling tf's ``native``; ``fallback`` converts refused inputs;
+    with ``bools``, booleans (which tf has no kernel for) compute exactly through int8."""
 
     def fn(x1, x2, /):
         # Fast path: tensors, Python floats and bools, and ints that fit every dtype (but not
@@ -139,7 +180,11 @@ def _binary(native, name: str, fallback=promote):
                 return native(x1, x2)
             except REFUSED:
                 pass
-        return native(*fallback(x1, x2))
+        args = fallback(x1, x2)
+        if bools and args[0].dtype is tf.bool:
+            out = native(*(tf.cast(v, tf.int8) for v in args))
+            return out if out.dtype is tf.bool else tf.cast(out, tf.bool)
+        return native(*args)
 
     fn.__name__ = fn.__qualname__ = name
     fn.__doc__ = (
@@ -148,20 +193,61 @@ def _binary(native, name: str, fallback=promote):
     return fn
 
 
-add = _binary(tf.math.add, "add")
-atan2 = _binary(tf.math.atan2, "atan2", lambda *v: _floating(*promote(*v)))
+add = _binary(tf.math.add, "add", bools=True)
+atan2 = _binary(tf.math.atan2, "atan2", lambda *v: _real_operands(*v))
 _divide = _binary(tf.math.divide, "divide")
 equal = _binary(tf.math.equal, "equal")
-floor_divide = _binary(tf.math.floordiv, "floor_divide")
-greater = _binary(tf.math.greater, "greater")
-greater_equal = _binary(tf.math.greater_equal, "greater_equal")
-less = _binary(tf.math.less, "less")
-less_equal = _binary(tf.math.less_equal, "less_equal")
-maximum = _binary(tf.math.maximum, "maximum")
-minimum = _binary(tf.math.minimum, "minimum")
-multiply = _binary(tf.math.multiply, "multiply")
+_floor_divide = _binary(tf.math.floordiv, "floor_divide")
+greater = _binary(tf.math.greater, "greater", bools=True)
+greater_equal = _binary(tf.math.greater_equal, "greater_equal", bools=True)
+less = _binary(tf.math.less, "less", bools=True)
+less_equal = _binary(tf.math.less_equal, "less_equal", bools=True)
+maximum = _binary(tf.math.maximum, "maximum", bools=True)
+minimum = _binary(tf.math.minimum, "minimum", bools=True)
+multiply = _binary(tf.math.multiply, "multiply", bools=True)
 not_equal = _binary(tf.math.not_equal, "not_equal")
-pow = _binary(tf.math.pow, "pow")
+
+
+def floor_divide(x1, x2, /):
+    """Integers: tf's. Floats as numpy, torch and jax compute them, from the exact remainder
+    (tf's ``floor(x1 / x2)`` rounds the quotient first: 2.5 // 0.001 is 2500 there, 2499
+    elsewhere)."""
+    a, b = promote(x1, x2)
+    if not a.dtype.is_floating:
+        return _floor_divide(a, b)
+    if a.dtype is tf.float16:  # (no float16 kernel for the remainder)
+        return tf.cast(floor_divide(tf.cast(a, tf.float32), tf.cast(b, tf.float32)), tf.float16)
+    mod = tf.truncatemod(a, b)  # C's fmod: exact
+    div = (a - mod) / b
+    div = tf.where((mod != 0) & ((b < 0) != (mod < 0)), div - 1, div)
+    floor = tf.math.floor(div)
+    floor = tf.where(div - floor > 0.5, floor + 1, floor)
+    floor = tf.where(div == 0, tf.zeros_like(div) * (a / b), floor)  # a signed zero
+    return tf.where(b == 0, a / b, floor)
+
+
+def _wide_pow(x1, x2):
+    """x1 ** x2 for tensors of one dtype; unsigned integers (no tf kernel) through int64, whose
+    wrap-around modulo 2**64 is theirs."""
+    a, b = promote(x1, x2)
+    if not a.dtype.is_unsigned:
+        return tf.math.pow(a, b)
+    if a.dtype is tf.uint64:
+        out = tf.math.pow(tf.bitcast(a, tf.int64), tf.bitcast(b, tf.int64))
+        return tf.bitcast(out, tf.uint64)
+    return tf.cast(tf.math.pow(tf.cast(a, tf.int64), tf.cast(b, tf.int64)), a.dtype)
+
+
+_pow = _binary(tf.math.pow, "pow")
+
+
+def pow(x1, x2, /):
+    try:
+        return _pow(x1, x2)
+    except REFUSED:
+        return _wide_pow(x1, x2)
+
+
 remainder = _binary(tf.math.floormod, "remainder")
 subtract = _binary(tf.math.subtract, "subtract")
 logical_and = _binary(tf.math.logical_and, "logical_and", _as_bools)
@@ -174,20 +260,28 @@ def divide(x1, x2, /):
     for v in (x1, x2):
         if isinstance(v, TENSOR_TYPES) and (v.dtype.is_floating or v.dtype.is_complex):
             return _divide(x1, x2)
-    return _divide(*_floating(*promote(x1, x2)))
+    return _divide(*_real_operands(x1, x2))
 
 
 def logical_not(x, /):
-    x = tensor(x)
-    return tf.math.logical_not(x if x.dtype is tf.bool else tf.cast(x, tf.bool))
+    return tf.math.logical_not(_as_bools(x)[0])
 
 
 def clip(x, /, min=None, max=None):
+    """The result has ``x``'s dtype whatever the bounds' (``ivy/backends/_clip_args.py``)."""
+    x = tensor(x)
+    import ivy
+
+    min, max = clip_bounds(ivy.tensorflow, x, min, max)
+    if x.dtype is tf.bool:
+        if min is not None:
+            x = tf.math.logical_or(x, tensor_of(min, tf.bool))
+        return x if max is None else tf.math.logical_and(x, tensor_of(max, tf.bool))
     if min is not None:
-        x = maximum(x, min)
+        x = maximum(x, tensor_of(min, x.dtype))
     if max is not None:
-        x = minimum(x, max)
-    return tensor(x)
+        x = minimum(x, tensor_of(max, x.dtype))
+    return x
 
 
 # ----------------------------------------------------------------------------------------------
@@ -213,8 +307,32 @@ def _bitwise(native, logical, name: str):
 bitwise_and = _bitwise(tf.bitwise.bitwise_and, tf.math.logical_and, "bitwise_and")
 bitwise_or = _bitwise(tf.bitwise.bitwise_or, tf.math.logical_or, "bitwise_or")
 bitwise_xor = _bitwise(tf.bitwise.bitwise_xor, tf.math.logical_xor, "bitwise_xor")
-bitwise_left_shift = _bitwise(tf.bitwise.left_shift, None, "bitwise_left_shift")
-bitwise_right_shift = _bitwise(tf.bitwise.right_shift, None, "bitwise_right_shift")
+
+
+def _shift(native, name: str, left: bool):
+    """tf's shift ``native``, with numpy's answers for shift counts that are negative or not
+    less than the width (tf takes such counts modulo the width): 0 for left shifts, 0 or -1
+    (the sign) for right shifts."""
+    bitwise = _bitwise(native, None, name)
+
+    def fn(x1, x2, /):
+        out = bitwise(x1, x2)
+        a, b = promote(x1, x2)
+        valid = (
+            (b >= 0) & (b < a.dtype.size * 8) if not b.dtype.is_unsigned else b < a.dtype.size * 8
+        )
+        if left or a.dtype.is_unsigned:
+            fill = tf.zeros_like(out)
+        else:
+            fill = tf.where(a < 0, tf.constant(-1, a.dtype), tf.constant(0, a.dtype))
+        return tf.where(valid, out, fill)
+
+    fn.__name__ = fn.__qualname__ = name
+    return fn
+
+
+bitwise_left_shift = _shift(tf.bitwise.left_shift, "bitwise_left_shift", True)
+bitwise_right_shift = _shift(tf.bitwise.right_shift, "bitwise_right_shift", False)
 
 
 def bitwise_invert(x, /):
@@ -229,8 +347,19 @@ def bitwise_invert(x, /):
 _BITS = {tf.float16: tf.int16, tf.bfloat16: tf.int16, tf.float32: tf.int32, tf.float64: tf.int64}
 
 
+def _complex_refused(name: str) -> DtypeError:
+    return DtypeError(
+        "takes no complex floating input. Cast first (ivy.astype).",
+        function=name,
+        argument="x" if name == "signbit" else "x1, x2",
+        backend="tensorflow",
+    )
+
+
 def signbit(x, /):
     x = tensor(x)
+    if x.dtype.is_complex:
+        raise _complex_refused("signbit")
     bits = _BITS.get(x.dtype)
     if bits is None:  # integers (numpy's answer); bools are never negative
         return x < 0 if x.dtype.is_integer else tf.zeros_like(x, tf.bool)
@@ -239,9 +368,7 @@ def signbit(x, /):
 
 def copysign(x1, x2, /):
     """The magnitude of ``x1`` with the sign bit of ``x2`` (-0.0 and -nan count as negative)."""
-    a, b = promote(x1, x2)
-    if a.dtype not in _BITS:
-        a, b = tf.cast(a, tf.float32), tf.cast(b, tf.float32)
+    a, b = _real_operands(x1, x2)
     bits = _BITS[a.dtype]
     magnitude = tf.bitwise.bitwise_and(tf.bitcast(a, bits), tf.bitwise.invert(_sign_mask(bits)))
     sign = tf.bitwise.bitwise_and(tf.bitcast(b, bits), _sign_mask(bits))
@@ -255,7 +382,10 @@ def _sign_mask(bits):
 
 def hypot(x1, x2, /):
     """sqrt(x1**2 + x2**2) without overflow or underflow; inf wherever an input is infinite."""
-    a, b = (tf.math.abs(v) for v in _floating(*promote(x1, x2)))
+    a, b = _real_operands(x1, x2)
+    if a.dtype.is_complex:
+        raise _complex_refused("hypot")
+    a, b = tf.math.abs(a), tf.math.abs(b)
     hi, lo = tf.math.maximum(a, b), tf.math.minimum(a, b)
     ratio = tf.math.divide_no_nan(lo, hi)
     out = hi * tf.math.sqrt(1 + ratio * ratio)
@@ -264,14 +394,14 @@ def hypot(x1, x2, /):
 
 def logaddexp(x1, x2, /):
     """log(exp(x1) + exp(x2)) without overflow."""
-    a, b = _floating(*promote(x1, x2))
+    a, b = _real_operands(x1, x2)
     out = tf.math.maximum(a, b) + tf.math.log1p(tf.math.exp(-tf.math.abs(a - b)))
     return tf.where(a == b, a + math.log(2.0), out)  # equal infinities: a - b would be nan
 
 
 def nextafter(x1, x2, /):
     """tf's nextafter (float32 and float64); float16 steps its bits as IEEE 754 says."""
-    a, b = _floating(*promote(x1, x2))
+    a, b = _real_operands(x1, x2)
     if a.dtype is tf.float32 or a.dtype is tf.float64:
         return tf.math.nextafter(a, b)
     bits = _BITS[a.dtype]
@@ -287,6 +417,23 @@ def nextafter(x1, x2, /):
     out = tf.where(a == 0, tiniest, out)
     out = tf.where(a == b, b, out)
     return tf.where(tf.math.is_nan(a) | tf.math.is_nan(b), tf.constant(math.nan, a.dtype), out)
+
+
+def _real_operands(*values):
+    """``values`` promoted to one dtype, floating: float32 unless one of them is floating
+    (integers of two dtypes too: int64 with uint64 promotes to float64)."""
+    tensors = promote(*values)
+    if any(isinstance(v, (float, complex)) or _is_inexact(v) for v in values):
+        return _floating(*tensors)
+    return [tf.cast(t, tf.float32) for t in tensors]
+
+
+def _is_inexact(value) -> bool:
+    dtype = getattr(value, "dtype", None)
+    if dtype is None:
+        return False
+    dtype = tf.as_dtype(dtype)
+    return dtype.is_floating or dtype.is_complex
 
 
 def _floating(*tensors):

@@ -17,8 +17,15 @@ import tensorflow as tf
 from ivy.backends._fft_args import SWAPPED_NORM, axis_of, check_norm, size_of, sizes_and_axes
 from ivy.backends.tensorflow._helpers import native_dtype, placed, static_rank, tensor
 
-fftshift = tf.signal.fftshift
-ifftshift = tf.signal.ifftshift
+
+def fftshift(x, /, *, axes=None):
+    x = tensor(x)
+    return tf.identity(x) if x.shape.rank == 0 else tf.signal.fftshift(x, axes=axes)
+
+
+def ifftshift(x, /, *, axes=None):
+    x = tensor(x)
+    return tf.identity(x) if x.shape.rank == 0 else tf.signal.ifftshift(x, axes=axes)
 
 
 def _complex(x):

@@ -4,9 +4,22 @@ from __future__ import annotations
 
 import tensorflow as tf
 
+from ivy.backends._index_checks import check_bounds, check_bounds_per_column
 from ivy.backends.tensorflow._helpers import native_dtype, tensor
 
-gather_nd = tf.gather_nd
+
+def gather_nd(params, indices, /):
+    """tf's, with negative indices counted from the end (tf refuses them) and, in eager calls,
+    indices out of range raising IndexOutOfBoundsError."""
+    params, indices = tensor(params), tf.convert_to_tensor(indices)
+    if tf.executing_eagerly():
+        check_bounds_per_column(
+            indices.numpy(), params.shape, function="gather_nd", backend="tensorflow"
+        )
+    depth = indices.shape[-1]
+    lead = tf.shape(params, out_type=indices.dtype)[:depth]
+    return tf.gather_nd(params, tf.where(indices < 0, indices + lead, indices))
+
 
 _SCATTERS = {
     "replace": tf.tensor_scatter_nd_update,
@@ -49,6 +62,11 @@ def scatter_nd(indices, updates, /, shape, *, reduction="sum"):
 
 def one_hot(indices, depth, /, *, dtype=None):
     dt = native_dtype(dtype) or tf.float32
+    indices = tensor(indices)
+    if tf.executing_eagerly():  # (inside tf.function indices have no values yet)
+        check_bounds(
+            indices.numpy(), depth, function="one_hot", backend="tensorflow", negative=False
+        )
     if dt is tf.bool:  # tf's default on and off values are the numbers 1 and 0
         return tf.one_hot(indices, depth, on_value=True, off_value=False, dtype=dt)
     return tf.one_hot(indices, depth, dtype=dt)

@@ -21,6 +21,7 @@ from ivy.backends.tensorflow._helpers import (
     tensor,
 )
 from ivy.core.linalg import EighResult, QRResult, SlogdetResult, SVDResult
+from ivy.errors import LinAlgError, ShapeError
 
 matrix_transpose = tf.linalg.matrix_transpose
 
@@ -34,7 +35,7 @@ def matmul(x1, x2, /):
             pass
     x1, x2 = promote(x1, x2)
     vec1, vec2 = x1.shape.rank == 1, x2.shape.rank == 1
-    out = tf.linalg.matmul(x1[None] if vec1 else x1, x2[:, None] if vec2 else x2)
+    out = _integer_safe(tf.linalg.matmul, x1[None] if vec1 else x1, x2[:, None] if vec2 else x2)
     if vec2:
         out = out[..., 0]  # drop the column of the vector made a matrix
     if vec1:
@@ -42,8 +43,33 @@ def matmul(x1, x2, /):
     return out
 
 
+# Integer dtypes that tf's matmul has no kernel for: computed in int64 (uint64 as its bits),
+# whose wrap-around modulo 2**64 is theirs.
+_NO_MATMUL = frozenset({tf.int8, tf.int16, tf.uint8, tf.uint16, tf.uint32, tf.uint64})
+
+
+def _integer_safe(native, a, b, **kwargs):
+    dtype = a.dtype
+    if dtype not in _NO_MATMUL:
+        return native(a, b, **kwargs)
+    if dtype is tf.uint64:
+        return tf.bitcast(
+            native(tf.bitcast(a, tf.int64), tf.bitcast(b, tf.int64), **kwargs), tf.uint64
+        )
+    return tf.cast(native(tf.cast(a, tf.int64), tf.cast(b, tf.int64), **kwargs), dtype)
+
+
 def cholesky(x, /, *, upper=False):
-    lower = tf.linalg.cholesky(floating(x))
+    x = floating(x)
+    lower = tf.linalg.cholesky(x)
+    if tf.executing_eagerly() and not bool(tf.reduce_all(tf.math.is_finite(lower))):
+        if bool(tf.reduce_all(tf.math.is_finite(x))):  # tf answers with NaN where numpy raises
+            raise LinAlgError(
+                "the matrix is not positive definite.",
+                function="cholesky",
+                argument="x",
+                backend="tensorflow",
+            )
     return tf.linalg.adjoint(lower) if upper else lower
 
 
@@ -143,6 +169,11 @@ def pinv(x, /, *, rtol=None):
         else:
             size = max(rows, cols)
         rtol = size * np.finfo(x.dtype.real_dtype.as_numpy_dtype).eps
+    if x.dtype.is_complex:  # tf.linalg.pinv takes real matrices only: through the SVD
+        s, u, v = tf.linalg.svd(x)
+        cutoff = tf.cast(rtol, s.dtype) * tf.math.reduce_max(s, axis=-1, keepdims=True)
+        inverse = tf.where(s > cutoff, 1 / s, tf.zeros_like(s))
+        return tf.linalg.matmul(v * tf.cast(inverse, x.dtype)[..., None, :], u, adjoint_b=True)
     return tf.linalg.pinv(x, rcond=rtol)
 
 
@@ -153,7 +184,12 @@ def qr(x, /, *, mode="reduced"):
 
 
 def slogdet(x, /):
-    return SlogdetResult(*tf.linalg.slogdet(floating(x)))
+    """The log of the absolute determinant is real, also for complex matrices (tf gives it the
+    input's complex dtype)."""
+    sign, logabsdet = tf.linalg.slogdet(floating(x))
+    if logabsdet.dtype.is_complex:
+        logabsdet = tf.math.real(logabsdet)
+    return SlogdetResult(sign, logabsdet)
 
 
 def solve(x1, x2, /):
@@ -185,7 +221,7 @@ def tensordot(x1, x2, /, *, axes=2):
         a1, a2 = axes
         r1, r2 = x1.shape.rank, x2.shape.rank
         axes = ([a % r1 for a in a1], [a % r2 for a in a2])
-    return tf.tensordot(x1, x2, axes)
+    return _integer_safe(tf.tensordot, x1, x2, axes=axes)
 
 
 def trace(x, /, *, offset=0, dtype=None):
@@ -201,6 +237,15 @@ def trace(x, /, *, offset=0, dtype=None):
 
 def vecdot(x1, x2, /, *, axis=-1):
     x1, x2 = promote(x1, x2)
+    n1, n2 = x1.shape[axis], x2.shape[axis]
+    if n1 is not None and n2 is not None and n1 != n2:  # (broadcasting would hide it)
+        raise ShapeError(
+            f"the axis {axis} of x1 (shape {tuple(x1.shape)}) and of x2 (shape {tuple(x2.shape)}) "
+            f"must have the same size.",
+            function="vecdot",
+            argument="x1, x2",
+            backend="tensorflow",
+        )
     if x1.dtype.is_complex:
         x1 = tf.math.conj(x1)
     return tf.math.reduce_sum(x1 * x2, axis=axis)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import tensorflow as tf
 
+from ivy.backends._axes import check_squeezable, new_axis_positions, normalize_axes
 from ivy.backends.tensorflow._helpers import (
     FAST_TYPES,
     REFUSED,
@@ -14,8 +15,17 @@ from ivy.backends.tensorflow._helpers import (
     tensor,
 )
 
-stack = tf.stack
-squeeze = tf.squeeze
+
+def stack(arrays, /, *, axis=0):
+    """tf.stack, with mixed dtypes promoted (tf would refuse them)."""
+    if all(type(a) in FAST_TYPES for a in arrays):
+        try:
+            return tf.stack(arrays, axis)
+        except REFUSED:
+            pass
+    return tf.stack(promote(*arrays), axis)
+
+
 repeat = tf.repeat
 broadcast_to = tf.broadcast_to
 
@@ -74,8 +84,24 @@ def split(x, /, num_or_size_splits=None, *, axis=0):
     return tf.split(x, sizes, axis=axis)
 
 
-def expand_dims(x, /, *, axis=0):
-    return tf.expand_dims(x, axis)
+def squeeze(x, /, axis=None):
+    if axis is None:
+        return tf.squeeze(x)
+    x = tensor(x)
+    shape = x.shape.as_list()
+    axes = normalize_axes(axis, len(shape), "squeeze", "tensorflow")
+    if not axes:
+        return x  # tf.squeeze(x, ()) would remove every size-1 axis
+    check_squeezable(shape, axes, axis, "tensorflow")
+    return tf.squeeze(x, axes)
+
+
+def expand_dims(x, /, axis=0):
+    x = tensor(x)
+    rank = static_rank(x, "expand_dims")
+    for position in new_axis_positions(axis, rank, "expand_dims", "tensorflow"):
+        x = tf.expand_dims(x, position)
+    return x
 
 
 def flip(x, /, *, axis=None):
@@ -95,6 +121,8 @@ def tile(x, repetitions, /):
         reps = [1] * (rank - len(reps)) + reps
     for _ in range(len(reps) - rank):  # numpy: more repetitions than axes add leading axes
         x = x[None]
+    if x.dtype is tf.uint16:  # no tf kernel: the same bits as int16
+        return tf.bitcast(tf.tile(tf.bitcast(x, tf.int16), reps), tf.uint16)
     return tf.tile(x, reps)
 
 

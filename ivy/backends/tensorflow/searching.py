@@ -5,10 +5,35 @@ from __future__ import annotations
 import tensorflow as tf
 
 from ivy.backends.tensorflow._helpers import FAST_TYPES, REFUSED, fast, promote, static_rank, tensor
+from ivy.errors import InvalidValueError
 
 
 def _arg_reduce(native, x, axis, keepdims, name):
     x = tensor(x)
+    shape = x.shape
+    if shape.rank is not None and shape.num_elements() == 0 and (axis is None or shape[axis] == 0):
+        raise InvalidValueError(
+            f"{name} of an empty array (shape {tuple(shape)}) has no answer.",
+            function=name,
+            argument="x",
+            backend="tensorflow",
+        )
+    if x.dtype.is_floating:
+        # NaN wins, as on every backend (tf's argmax skips NaN): where a NaN is, argmax of the
+        # NaN mask (its first NaN) is the answer
+        nan = tf.math.is_nan(x)
+        found = _arg_plain(tf.math.argmax, tf.cast(nan, tf.uint8), axis, keepdims, name)
+        plain = _arg_plain(native, tf.where(nan, tf.zeros((), x.dtype), x), axis, keepdims, name)
+        any_nan = tf.reduce_any(nan, axis=axis, keepdims=keepdims)
+        if axis is None and keepdims:
+            any_nan = tf.reshape(any_nan, tf.shape(found))
+        return tf.where(any_nan, found, plain)
+    if x.dtype is tf.bool:
+        x = tf.cast(x, tf.uint8)
+    return _arg_plain(native, x, axis, keepdims, name)
+
+
+def _arg_plain(native, x, axis, keepdims, name):
     if axis is None:
         out = native(tf.reshape(x, [-1]), axis=0)
         return tf.reshape(out, [1] * static_rank(x, name)) if keepdims else out
@@ -59,4 +84,10 @@ def searchsorted(x1, x2, /, *, side="left", sorter=None):
     if sorter is not None:
         x1 = tf.gather(x1, sorter)
     out = tf.searchsorted(x1[None], tf.reshape(x2, [1, -1]), side=side, out_type=tf.int64)
-    return tf.reshape(out, tf.shape(x2))
+    out = tf.reshape(out, tf.shape(x2))
+    if x2.dtype.is_floating:  # NaN sorts last, as numpy's sort puts it: after every number
+        # ('left': before the first NaN of x1; 'right': at the end)
+        n = tf.size(x1, out_type=tf.int64)
+        first_nan = n - tf.math.count_nonzero(tf.math.is_nan(x1), dtype=tf.int64)
+        out = tf.where(tf.math.is_nan(x2), first_nan if side == "left" else n, out)
+    return out

@@ -11,9 +11,38 @@ from ivy.backends.tensorflow._helpers import (
     static_rank,
     tensor,
 )
+from ivy.errors import InvalidValueError
 
-min = tf.math.reduce_min
-max = tf.math.reduce_max
+
+def _extremum(native, name: str):
+    """tf's reduce_min or reduce_max: bools as uint8 (no tf kernel), and an empty reduction
+    raises (tf would give the dtype's extreme, where the others have no identity)."""
+
+    def fn(x, /, *, axis=None, keepdims=False):
+        x = tensor(x)
+        shape = x.shape
+        if shape.rank is not None and shape.num_elements() == 0:
+            axes = (
+                range(shape.rank) if axis is None else ((axis,) if isinstance(axis, int) else axis)
+            )
+            if any(shape[a] == 0 for a in axes):
+                raise InvalidValueError(
+                    f"zero-size reduction of an array of shape {tuple(shape)}: {name} has no "
+                    f"identity, so an empty reduction has no value.",
+                    function=name,
+                    argument="x",
+                    backend="tensorflow",
+                )
+        if x.dtype is tf.bool:
+            return tf.cast(native(tf.cast(x, tf.uint8), axis=axis, keepdims=keepdims), tf.bool)
+        return native(x, axis=axis, keepdims=keepdims)
+
+    fn.__name__ = fn.__qualname__ = name
+    return fn
+
+
+min = _extremum(tf.math.reduce_min, "min")
+max = _extremum(tf.math.reduce_max, "max")
 
 
 def _accumulator(x, dtype):

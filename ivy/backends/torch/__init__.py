@@ -4,7 +4,7 @@ torch.float32``); the default float dtype is float32, as on every backend."""
 import sys
 
 from ivy.backends._assemble import assemble
-from ivy.backends.torch._helpers import NATIVE_DTYPES, REALS
+from ivy.backends.torch._helpers import NATIVE_DTYPES, REALS, devices
 
 assemble(
     sys.modules[__name__],
@@ -12,4 +12,5 @@ assemble(
     package=__name__,
     native_dtypes=NATIVE_DTYPES,
     reals=REALS,
+    devices=devices,
 )

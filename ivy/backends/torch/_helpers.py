@@ -80,8 +80,20 @@ def with_tensor_operands(x1, x2):
     if isinstance(x1, torch.Tensor):
         if isinstance(x2, torch.Tensor):
             return x1, x2
-        return x1, torch.full((), x2, device=x1.device)
-    return torch.full((), x1, device=x2.device), x2
+        return x1, _scalar_tensor(x2, x1)
+    return _scalar_tensor(x1, x2), x2
+
+
+def _scalar_tensor(value, other):
+    """A Python scalar as a 0-d tensor next to ``other``: a float or complex next to a floating
+    tensor is made in that precision (a float32 0-d tensor would round 1e-6 before torch
+    promotes it to float64)."""
+    dtype = None
+    if isinstance(value, float) and (other.is_floating_point() or other.is_complex()):
+        dtype = other.dtype
+    elif isinstance(value, complex) and other.dtype in (torch.float64, torch.complex128):
+        dtype = torch.complex128
+    return torch.full((), value, dtype=dtype, device=other.device)
 
 
 def reduction_args(x, axis, keepdims):
@@ -109,3 +121,10 @@ def _as_is(native, name: str):
 # real numbers in its default float dtype, float32, by itself; the shims of the others
 # (reductions, activations) convert them.
 REALS = {"unary": _as_is, "binary": _as_is, "options": _as_is}
+
+
+def devices() -> list[torch.device]:
+    """The devices torch sees: the CPU and each CUDA device."""
+    return [torch.device("cpu")] + [
+        torch.device("cuda", i) for i in range(torch.cuda.device_count())
+    ]

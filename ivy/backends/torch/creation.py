@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import torch
 
+from ivy.backends._creation_args import check_fill_value
 from ivy.backends._dlpack import exportable
 from ivy.backends.torch._helpers import (
     default_dtype_of_value,
@@ -12,6 +13,8 @@ from ivy.backends.torch._helpers import (
     native_device,
     native_dtype,
 )
+from ivy.backends.torch._unsigned import WIDE_UNSIGNED, unsigned_safe, work_dtype
+from ivy.errors import DtypeError
 
 # torch's default dtypes can be changed by the user; ivy's cannot.
 _DOWNCAST = {torch.float64: torch.float32, torch.complex128: torch.complex64}
@@ -19,9 +22,15 @@ _DOWNCAST = {torch.float64: torch.float32, torch.complex128: torch.complex64}
 
 def asarray(obj, /, *, dtype=None, device=None, copy=None):
     dtype, device = native_dtype(dtype), native_device(device)
+    if isinstance(obj, torch.Tensor):
+        return _from_tensor(obj, dtype, device, copy)
     if isinstance(obj, (list, tuple)) and obj and has_own_dtype(obj):
         obj = _stack(obj)
-    elif isinstance(obj, np.ndarray) and not obj.flags.writeable:
+    elif (
+        isinstance(obj, np.ndarray)
+        and not torch.compiler.is_compiling()  # (torch.compile cannot read numpy's flags)
+        and not obj.flags.writeable
+    ):
         obj = obj.copy()  # torch would alias a read-only buffer as writable (and warn)
     elif not isinstance(obj, (torch.Tensor, np.ndarray, np.generic)) and (
         hasattr(obj, "__dlpack__") or hasattr(obj, "__array__")
@@ -31,6 +40,22 @@ def asarray(obj, /, *, dtype=None, device=None, copy=None):
     if dtype is None and x.dtype in _DOWNCAST and not has_own_dtype(obj):
         return x.to(_DOWNCAST[x.dtype])
     return x
+
+
+def _from_tensor(x, dtype, device, copy):
+    """A tensor as it is, or converted (``Tensor.to``, which keeps ``requires_grad`` without
+    torch.asarray's warning about it)."""
+    same = (dtype is None or dtype is x.dtype) and (
+        device is None or torch.device(device) == x.device
+    )
+    if same and not copy:
+        return x
+    if not same and copy is False:
+        raise ValueError(
+            "asarray: copy=False, but the dtype or device asked for needs a copy. Pass copy=None "
+            "to allow it."
+        )
+    return x.to(dtype=dtype or x.dtype, device=device or x.device, copy=bool(copy))
 
 
 def _stack(seq):
@@ -66,6 +91,7 @@ def empty(shape, *, dtype=None, device=None):
 def full(shape, fill_value, *, dtype=None, device=None):
     shape = (shape,) if isinstance(shape, int) else shape
     dtype = native_dtype(dtype) or default_dtype_of_value(fill_value)
+    check_fill_value(fill_value, str(dtype).rsplit(".", 1)[-1], "torch")
     return torch.full(shape, fill_value, dtype=dtype, device=native_device(device))
 
 
@@ -75,20 +101,42 @@ def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
         dtype = torch.int64 if ints else torch.float32
     if stop is None:
         start, stop = 0, start
-    return torch.arange(start, stop, step, dtype=native_dtype(dtype), device=native_device(device))
+    dtype, device = native_dtype(dtype), native_device(device)
+    if (stop - start) * step <= 0:  # an empty range, which torch refuses
+        return torch.empty(0, dtype=dtype, device=device)
+    out = torch.arange(start, stop, step, dtype=work_dtype(dtype), device=device)
+    return out if out.dtype is dtype or dtype is None else out.to(dtype)
 
 
 def linspace(start, stop, /, num, *, dtype=None, device=None, endpoint=True):
-    dtype, device = native_dtype(dtype) or torch.float32, native_device(device)
+    dtype, device = native_dtype(dtype), native_device(device)
+    if dtype is None:  # complex bounds (the Array API allows them) give complex64
+        dtype = (
+            torch.complex64
+            if isinstance(start, complex) or isinstance(stop, complex)
+            else torch.float32
+        )
+    work = work_dtype(dtype)
+    if dtype.is_complex and not (isinstance(start, complex) or isinstance(stop, complex)):
+        start, stop = complex(start), complex(stop)
+    if not dtype.is_complex and (isinstance(start, complex) or isinstance(stop, complex)):
+        raise DtypeError(
+            f"complex bounds {start!r}, {stop!r} need a complex dtype, not {dtype}.",
+            function="linspace",
+            argument="dtype",
+            backend="torch",
+        )
     if endpoint:
-        return torch.linspace(start, stop, num, dtype=dtype, device=device)
-    return torch.linspace(start, stop, num + 1, dtype=dtype, device=device)[:-1]
+        out = torch.linspace(start, stop, num, dtype=work, device=device)
+    else:
+        out = torch.linspace(start, stop, num + 1, dtype=work, device=device)[:-1]
+    return out if out.dtype is dtype else out.to(dtype)
 
 
 def eye(n_rows, n_cols=None, /, *, k=0, dtype=None, device=None):
     dtype, device = native_dtype(dtype) or torch.float32, native_device(device)
     n_cols = n_rows if n_cols is None else n_cols
-    if k == 0:
+    if k == 0 and dtype not in WIDE_UNSIGNED:
         return torch.eye(n_rows, n_cols, dtype=dtype, device=device)
     rows = torch.arange(n_rows, device=device)[:, None]
     return (torch.arange(n_cols, device=device) - rows == k).to(dtype)
@@ -122,12 +170,28 @@ def meshgrid(*arrays, indexing="xy"):
     if not arrays:
         return []  # torch refuses no arrays
     arrays = [a if isinstance(a, torch.Tensor) else asarray(a) for a in arrays]
-    return list(torch.meshgrid(*arrays, indexing=indexing))
+    if len({a.dtype for a in arrays}) == 1:
+        return list(torch.meshgrid(*arrays, indexing=indexing))
+    # arrays of several dtypes (torch refuses them): each result keeps its array's dtype
+    shape = [a.numel() for a in arrays]
+    if indexing == "xy" and len(arrays) > 1:
+        shape[0], shape[1] = shape[1], shape[0]
+    out = []
+    for i, a in enumerate(arrays):
+        axis = {0: 1, 1: 0}.get(i, i) if indexing == "xy" and len(arrays) > 1 else i
+        view = [1] * len(arrays)
+        view[axis] = -1
+        out.append(a.reshape(view).expand(shape))
+    return out
+
+
+_tril = unsigned_safe(torch.tril, "tril", "move", (0,))
+_triu = unsigned_safe(torch.triu, "triu", "move", (0,))
 
 
 def tril(x, /, *, k=0):
-    return torch.tril(x, k)
+    return _tril(x, k)
 
 
 def triu(x, /, *, k=0):
-    return torch.triu(x, k)
+    return _triu(x, k)

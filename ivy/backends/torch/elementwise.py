@@ -10,74 +10,172 @@ from __future__ import annotations
 
 import operator
 
+import numpy as np
 import torch
 
-from ivy.backends.torch._helpers import as_inexact, with_tensor_operands
+from ivy.backends._clip_args import clip_bounds
+from ivy.backends.torch._helpers import (
+    NATIVE_DTYPES,
+    as_inexact,
+    dtype_name,
+    with_tensor_operands,
+)
+from ivy.backends.torch._unsigned import WIDE_UNSIGNED, unsigned_safe
 from ivy.backends.torch.creation import asarray
+from ivy.core import _dtype_rules as rules
 
-abs = torch.abs
 acos = torch.acos
 acosh = torch.acosh
-add = torch.add
 asin = torch.asin
 asinh = torch.asinh
 atan = torch.atan
 atanh = torch.atanh
-bitwise_and = torch.bitwise_and
-bitwise_invert = torch.bitwise_not
-bitwise_left_shift = torch.bitwise_left_shift
-bitwise_or = torch.bitwise_or
-bitwise_right_shift = torch.bitwise_right_shift
-bitwise_xor = torch.bitwise_xor
 ceil = torch.ceil
 conj = torch.conj_physical  # a new tensor, not a lazily conjugated view
 cos = torch.cos
 cosh = torch.cosh
-divide = torch.divide
-equal = operator.eq
 exp = torch.exp
 expm1 = torch.expm1
 floor = torch.floor
-floor_divide = torch.floor_divide
-greater = operator.gt
-greater_equal = operator.ge
-imag = torch.imag
 isfinite = torch.isfinite
 isinf = torch.isinf
 isnan = torch.isnan
-less = operator.lt
-less_equal = operator.le
 log = torch.log
 log10 = torch.log10
 log1p = torch.log1p
 log2 = torch.log2
-logical_not = torch.logical_not
-multiply = torch.multiply
-negative = torch.negative
-not_equal = operator.ne
 positive = torch.positive
-pow = torch.pow
-real = torch.real
 reciprocal = torch.reciprocal
-remainder = torch.remainder
-round = torch.round
+
+
+def round(x, /):  # noqa: A001 - the Array API name
+    """torch's (halves to even); complex numbers round each part (torch has no kernel)."""
+    if x.is_complex():
+        return torch.complex(torch.round(x.real), torch.round(x.imag))
+    return torch.round(x)
+
+
 signbit = torch.signbit
 sin = torch.sin
 sinh = torch.sinh
 sqrt = torch.sqrt
-square = torch.square
-subtract = torch.subtract
 tan = torch.tan
 tanh = torch.tanh
 trunc = torch.trunc
 
+# What torch refuses for uint16, uint32 and uint64 is computed through int64 (``_unsigned.py``).
+negative = unsigned_safe(torch.negative, "negative", "arith", (0,))
+square = unsigned_safe(torch.square, "square", "arith", (0,))
+bitwise_invert = unsigned_safe(torch.bitwise_not, "bitwise_invert", "arith", (0,))
+logical_not = unsigned_safe(torch.logical_not, "logical_not", "arith", (0,))
+
+
+def abs(x, /):  # noqa: A001 - the Array API name
+    try:
+        return torch.abs(x)
+    except (NotImplementedError, RuntimeError):
+        if x.dtype is torch.bool or x.dtype in WIDE_UNSIGNED:
+            return x.clone()  # torch has no abs of bools and wide unsigned integers
+        raise
+
+
+abs.__ivy_native__ = torch.abs
+
+
+def real(x, /):
+    return torch.real(x) if x.is_complex() else x.clone()
+
+
+def imag(x, /):
+    return torch.imag(x) if x.is_complex() else torch.zeros_like(x)  # torch refuses real input
+
+
+def _binary(native, name: str, kind: str):
+    """ivy's binary function ``name`` on torch's ``native``: Array API promotion, also of 0-d
+    tensors, which torch would promote as Python scalars (a 0-d int64 tensor plus an int8 one is
+    int64, not int8); Python scalars on either side; uint16, uint32 and uint64 computed through
+    int64 where torch has no kernel (``kind``, see ``_unsigned.py``)."""
+    wide = unsigned_safe(native, name, kind)
+
+    def fn(x1, x2, /):
+        try:
+            if x1.dtype is x2.dtype:
+                return native(x1, x2)
+        except AttributeError:  # a Python scalar
+            return wide(*with_tensor_operands(x1, x2)) if not _scalar_ok(x1, x2) else wide(x1, x2)
+        except _REFUSED:
+            return wide(x1, x2)
+        if isinstance(x1, np.generic) or isinstance(x2, np.generic):  # numpy scalars: as
+            return fn(*(v.item() if isinstance(v, np.generic) else v for v in (x1, x2)))  # Python's
+        return wide(*_promoted(x1, x2))
+
+    fn.__name__ = fn.__qualname__ = name
+    fn.__doc__ = f"``{getattr(native, '__name__', name)}`` with Array API type promotion."
+    return fn
+
+
+_REFUSED = (NotImplementedError, RuntimeError)
+
+
+def _scalar_ok(x1, x2) -> bool:
+    """torch's functions take a Python scalar on the right, and on the left for a few."""
+    return isinstance(x1, torch.Tensor)
+
+
+def _promoted(x1, x2):
+    """Two tensors of different dtypes, in the dtype ivy's rules give them."""
+    dtype = _PROMOTED.get((x1.dtype, x2.dtype))
+    if dtype is None:
+        dtype = _PROMOTED[(x1.dtype, x2.dtype)] = NATIVE_DTYPES[
+            rules.promote(dtype_name(x1.dtype), dtype_name(x2.dtype))
+        ]
+    return (x1 if x1.dtype is dtype else x1.to(dtype)), (x2 if x2.dtype is dtype else x2.to(dtype))
+
+
+_PROMOTED: dict = {}
+
+add = _binary(torch.add, "add", "arith")
+subtract = _binary(torch.subtract, "subtract", "arith")
+multiply = _binary(torch.multiply, "multiply", "arith")
+_divide = _binary(torch.divide, "divide", "arith")
+
+
+def divide(x1, x2, /):
+    """``x1 / x2``; integers and bools of two dtypes (int64 with uint64 promotes to float64)
+    are divided in float32, as integers of one dtype are."""
+    d1, d2 = getattr(x1, "dtype", None), getattr(x2, "dtype", None)
+    if d1 is not d2 and d1 is not None and d2 is not None and not _inexact(d1, d2):
+        x1, x2 = x1.to(torch.float32), x2.to(torch.float32)
+    return _divide(x1, x2)
+
+
+def _inexact(*dtypes) -> bool:
+    return any(d.is_floating_point or d.is_complex for d in dtypes)
+
+
+pow = _binary(torch.pow, "pow", "arith")
+floor_divide = _binary(torch.floor_divide, "floor_divide", "divide")
+remainder = _binary(torch.remainder, "remainder", "divide")
+bitwise_and = _binary(torch.bitwise_and, "bitwise_and", "arith")
+bitwise_or = _binary(torch.bitwise_or, "bitwise_or", "arith")
+bitwise_xor = _binary(torch.bitwise_xor, "bitwise_xor", "arith")
+bitwise_left_shift = _binary(torch.bitwise_left_shift, "bitwise_left_shift", "arith")
+bitwise_right_shift = _binary(torch.bitwise_right_shift, "bitwise_right_shift", "divide")
+# (operator functions reach the tensor's comparison from either side: torch.gt(2.0, x) fails)
+equal = _binary(operator.eq, "equal", "order")
+not_equal = _binary(operator.ne, "not_equal", "order")
+less = _binary(operator.lt, "less", "order")
+less_equal = _binary(operator.le, "less_equal", "order")
+greater = _binary(operator.gt, "greater", "order")
+greater_equal = _binary(operator.ge, "greater_equal", "order")
+
 
 def atan2(x1, x2, /):
-    return torch.atan2(*with_tensor_operands(x1, x2))
+    return torch.atan2(*_inexact_operands(x1, x2))
 
 
 def copysign(x1, x2, /):
-    return torch.copysign(*with_tensor_operands(x1, x2))
+    return torch.copysign(*_inexact_operands(x1, x2))
 
 
 def hypot(x1, x2, /):
@@ -92,55 +190,89 @@ def nextafter(x1, x2, /):
     return torch.nextafter(*_inexact_operands(x1, x2))
 
 
-def logical_and(x1, x2, /):
-    return torch.logical_and(*with_tensor_operands(x1, x2))
+def _logical(native, name: str):
+    wide = unsigned_safe(native, name, "arith")
+
+    def fn(x1, x2, /):
+        return wide(*with_tensor_operands(x1, x2))
+
+    fn.__name__ = fn.__qualname__ = name
+    return fn
 
 
-def logical_or(x1, x2, /):
-    return torch.logical_or(*with_tensor_operands(x1, x2))
+logical_and = _logical(torch.logical_and, "logical_and")
+logical_or = _logical(torch.logical_or, "logical_or")
+logical_xor = _logical(torch.logical_xor, "logical_xor")
 
 
-def logical_xor(x1, x2, /):
-    return torch.logical_xor(*with_tensor_operands(x1, x2))
+def _extremum(native, bound: str, name: str):
+    """maximum or minimum: torch's own for tensors (promoted as ivy's rules say), ``clamp`` with
+    a Python scalar (faster than making the scalar a tensor; NaN propagates)."""
+    tensors = _binary(native, name, "order")
+    clamped = unsigned_safe(torch.clamp, name, "order", (0, 1, 2))
+
+    def fn(x1, x2, /):
+        if isinstance(x1, torch.Tensor) and isinstance(x2, torch.Tensor):
+            return tensors(x1, x2)
+        x, scalar = (x1, x2) if isinstance(x1, torch.Tensor) else (x2, x1)
+        if x.dtype is torch.bool or x.dtype.is_complex or not isinstance(scalar, (int, float)):
+            return tensors(*with_tensor_operands(x1, x2))
+        if isinstance(scalar, float) and not (x.is_floating_point()):
+            return tensors(*with_tensor_operands(x1, x2))  # int and float: a float result
+        if bound == "min":
+            return clamped(x, scalar, None)
+        return clamped(x, None, scalar)
+
+    fn.__name__ = fn.__qualname__ = name
+    return fn
 
 
-def maximum(x1, x2, /):
-    if isinstance(x1, torch.Tensor) and isinstance(x2, torch.Tensor):
-        return torch.maximum(x1, x2)
-    x, scalar = (x1, x2) if isinstance(x1, torch.Tensor) else (x2, x1)
-    if x.dtype is torch.bool:
-        return torch.maximum(*with_tensor_operands(x1, x2))
-    return torch.clamp(x, min=scalar)  # faster than making the scalar a tensor; nan propagates
-
-
-def minimum(x1, x2, /):
-    if isinstance(x1, torch.Tensor) and isinstance(x2, torch.Tensor):
-        return torch.minimum(x1, x2)
-    x, scalar = (x1, x2) if isinstance(x1, torch.Tensor) else (x2, x1)
-    if x.dtype is torch.bool:
-        return torch.minimum(*with_tensor_operands(x1, x2))
-    return torch.clamp(x, max=scalar)  # faster than making the scalar a tensor; nan propagates
+maximum = _extremum(torch.maximum, "min", "maximum")
+minimum = _extremum(torch.minimum, "max", "minimum")
 
 
 def sign(x, /):
     if x.is_floating_point():
         return torch.where(torch.isnan(x), x, torch.sign(x))  # torch.sign(nan) is 0
+    if x.dtype in WIDE_UNSIGNED:  # no kernel: 0 or 1
+        return (x != 0).to(x.dtype)
+    if x.dtype is torch.bool:
+        return x.clone()
     return torch.sgn(x)  # complex: x / |x|, as numpy 2 and the Array API
 
 
+_clamp = unsigned_safe(torch.clamp, "clip", "order", (0, 1, 2))
+
+
 def clip(x, /, min=None, max=None):
-    x, min, max = (_tensor_or_scalar(v) for v in (x, min, max))
+    """The result has ``x``'s dtype whatever the bounds' (``ivy/backends/_clip_args.py``)."""
+    x = x if isinstance(x, torch.Tensor) else asarray(x)
     if min is None and max is None:
         return x.clone()
-    return torch.clamp(x, min, max)
+    low, high = clip_bounds(_namespace(), x, min, max)
+    if isinstance(low, torch.Tensor) != isinstance(high, torch.Tensor) and None not in (low, high):
+        # torch.clamp takes two tensors or two numbers
+        low, high = (
+            v if isinstance(v, torch.Tensor) else torch.full((), v, dtype=x.dtype, device=x.device)
+            for v in (low, high)
+        )
+    if x.dtype is torch.bool:
+        return _bool_clip(x, low, high)
+    return _clamp(x, low, high)
 
 
-def _tensor_or_scalar(value):
-    """``value`` as it is if a tensor, a Python number or None, else (a numpy array, a list...)
-    as a tensor: ``ivy.clip(np.array([-1., 2.]), 0, 1, f='torch')`` is a tensor."""
-    if value is None or isinstance(value, (torch.Tensor, int, float)):
-        return value
-    return asarray(value)
+def _bool_clip(x, low, high):
+    if low is not None:
+        x = torch.logical_or(x, torch.as_tensor(low, device=x.device))
+    if high is not None:
+        x = torch.logical_and(x, torch.as_tensor(high, device=x.device))
+    return x
+
+
+def _namespace():
+    import ivy
+
+    return ivy.torch
 
 
 def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):
@@ -150,10 +282,14 @@ def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):
 def _inexact_operands(x1, x2):
     """Tensor operands of one dtype for functions torch defines on floats only: integer and
     boolean operands become float32 (ivy's rule, ``ivy/backends/_reals.py``), or the dtype of
-    the floating operand."""
+    the floating operand; two floating operands take their promoted dtype (also when one is
+    0-d, which torch would promote as a Python scalar)."""
     a, b = with_tensor_operands(x1, x2)
-    if a.is_floating_point() or a.is_complex():
-        return a, b if b.dtype is a.dtype else b.to(torch.promote_types(a.dtype, b.dtype))
-    if b.is_floating_point() or b.is_complex():
+    fa, fb = a.is_floating_point() or a.is_complex(), b.is_floating_point() or b.is_complex()
+    if fa and fb:
+        return _promoted(a, b) if a.dtype is not b.dtype else (a, b)
+    if fa:
+        return a, b.to(a.dtype)
+    if fb:
         return a.to(b.dtype), b
     return as_inexact(a), as_inexact(b)

@@ -72,8 +72,12 @@ def rfftfreq(n, /, *, d=1.0, dtype=None, device=None):
 
 
 def fftshift(x, /, *, axes=None):
+    if x.ndim == 0:  # (torch's needs an axis to shift; a 0-d array has none)
+        return x.clone()
     return torch.fft.fftshift(x, dim=axes)
 
 
 def ifftshift(x, /, *, axes=None):
+    if x.ndim == 0:
+        return x.clone()
     return torch.fft.ifftshift(x, dim=axes)

@@ -11,10 +11,25 @@ from __future__ import annotations
 import torch
 
 from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
+from ivy.backends.torch._unsigned import promoted, unsigned_safe, work_dtype
+from ivy.errors import ShapeError
 
-matmul = torch.matmul
 diagonal = torch.linalg.diagonal  # (x, *, offset=0) over the last two axes
-outer = torch.outer  # promotes mixed dtypes itself
+_matmul = unsigned_safe(torch.matmul, "matmul", "arith")
+_outer = unsigned_safe(torch.outer, "outer", "arith")
+_tensordot = unsigned_safe(torch.tensordot, "tensordot", "arith")
+_cross = unsigned_safe(torch.linalg.cross, "cross", "arith")
+
+
+def matmul(x1, x2, /):
+    """``torch.matmul`` with mixed dtypes promoted (torch refuses them) and uint16+ computed
+    through int64."""
+    return _matmul(*_promoted(x1, x2))
+
+
+def outer(x1, x2, /):
+    return _outer(*_promoted(x1, x2))
+
 
 _WIDE = {torch.bool: torch.int64, torch.uint8: torch.uint64, torch.uint16: torch.uint64}
 _WIDE.update({torch.uint32: torch.uint64, torch.int8: torch.int64, torch.int16: torch.int64})
@@ -22,10 +37,11 @@ _WIDE[torch.int32] = torch.int64
 
 
 def _promoted(x1, x2):
-    """Both tensors in their common dtype (torch's tensordot and vecdot require one)."""
+    """Both tensors in their dtype promoted by ivy's rules (torch's matmul, tensordot and vecdot
+    require one dtype, and torch promotes none of uint16, uint32, uint64)."""
     if x1.dtype == x2.dtype:
         return x1, x2
-    dtype = torch.result_type(x1, x2)
+    dtype = promoted((x1, x2))
     return x1.to(dtype), x2.to(dtype)
 
 
@@ -34,9 +50,10 @@ def cholesky(x, /, *, upper=False):
 
 
 def cross(x1, x2, /, *, axis=-1):
+    x1, x2 = _promoted(x1, x2)
     if x1.ndim != x2.ndim:  # torch.linalg.cross broadcasts only between equal ranks
         x1, x2 = torch.broadcast_tensors(x1, x2)
-    return torch.linalg.cross(x1, x2, dim=axis)
+    return _cross(x1, x2, dim=axis)
 
 
 def det(x, /):
@@ -59,9 +76,12 @@ def matrix_norm(x, /, *, keepdims=False, ord="fro"):
     return torch.linalg.matrix_norm(as_inexact(x), ord=ord, dim=(-2, -1), keepdim=keepdims)
 
 
+_matrix_power = unsigned_safe(torch.linalg.matrix_power, "matrix_power", "arith", (0,))
+
+
 def matrix_power(x, n, /):
     """Integer matrices stay integer for ``n >= 0``; a negative ``n`` inverts in float32."""
-    return torch.linalg.matrix_power(x if n >= 0 else as_inexact(x), n)
+    return _matrix_power(x if n >= 0 else as_inexact(x), n)
 
 
 def matrix_rank(x, /, *, rtol=None):
@@ -105,7 +125,7 @@ def svdvals(x, /):
 
 def tensordot(x1, x2, /, *, axes=2):
     x1, x2 = _promoted(x1, x2)
-    return torch.tensordot(x1, x2, dims=axes)
+    return _tensordot(x1, x2, dims=axes)
 
 
 def trace(x, /, *, offset=0, dtype=None):
@@ -120,8 +140,18 @@ def trace(x, /, *, offset=0, dtype=None):
 
 def vecdot(x1, x2, /, *, axis=-1):
     x1, x2 = _promoted(x1, x2)
+    if x1.shape[axis] != x2.shape[axis]:  # (broadcasting would hide it)
+        raise ShapeError(
+            f"the axis {axis} of x1 (shape {tuple(x1.shape)}) and of x2 (shape "
+            f"{tuple(x2.shape)}) must have the same size.",
+            function="vecdot",
+            argument="x1, x2",
+            backend="torch",
+        )
     if not (x1.is_floating_point() or x1.is_complex()):  # torch.linalg.vecdot refuses integers
-        return torch.sum(x1 * x2, dim=axis, dtype=x1.dtype)  # torch would sum in int64
+        work = work_dtype(x1.dtype)
+        out = torch.sum(x1.to(work) * x2.to(work), dim=axis, dtype=work)  # torch: int64 sums
+        return out if out.dtype is x1.dtype else out.to(x1.dtype)
     return torch.linalg.vecdot(x1, x2, dim=axis)
 
 

@@ -4,16 +4,25 @@ from __future__ import annotations
 
 import torch
 
+from ivy.backends._axes import check_squeezable, new_axis_positions, normalize_axes
+from ivy.backends.torch._unsigned import promoted, unsigned_safe
 from ivy.backends.torch.creation import asarray
 
 # torch accepts ``axis`` for ``dim``: stack(arrays, axis=1), unbind(x, axis=1) (a tuple),
 # repeat_interleave(x, 2, axis=None) (flattens first, as numpy's repeat).
-permute_dims = torch.permute
-stack = torch.stack
 unstack = torch.unbind
-tile = torch.tile
-repeat = torch.repeat_interleave
+_tile = unsigned_safe(torch.tile, "tile", "move", (0,))
 swapaxes = torch.swapaxes
+
+
+def permute_dims(x, /, axes):
+    return torch.permute(x, axes)  # (torch names the argument dims)
+
+
+def repeat(x, repeats, /, *, axis=None):
+    if isinstance(repeats, torch.Tensor) and repeats.dtype is not torch.int64:
+        repeats = repeats.to(torch.int64)  # torch counts in int64 only
+    return torch.repeat_interleave(x, repeats, dim=axis)
 
 
 def reshape(x, /, shape, *, copy=None):
@@ -27,10 +36,30 @@ def transpose(x, /, axes=None):
     return x.permute(tuple(reversed(range(x.ndim))) if axes is None else axes)
 
 
+def _one_dtype(arrays):
+    """``arrays`` in their dtype promoted by ivy's rules (torch promotes none of uint16, uint32
+    and uint64, and stacks only one dtype)."""
+    arrays = [a if isinstance(a, torch.Tensor) else asarray(a) for a in arrays]
+    dtypes = {a.dtype for a in arrays}
+    if len(dtypes) <= 1:
+        return arrays
+    dtype = promoted(arrays)
+    return [a.to(dtype) for a in arrays]
+
+
 def concat(arrays, /, *, axis=0):
+    arrays = _one_dtype(arrays)
     if axis is None:
         return torch.cat([a.reshape(-1) for a in arrays])
     return torch.cat(arrays, dim=axis)
+
+
+def stack(arrays, /, *, axis=0):
+    return torch.stack(_one_dtype(arrays), dim=axis)
+
+
+def tile(x, repetitions, /):
+    return _tile(x, repetitions)
 
 
 def split(x, /, num_or_size_splits=None, *, axis=0):
@@ -58,23 +87,26 @@ def split(x, /, num_or_size_splits=None, *, axis=0):
 def squeeze(x, /, axis=None):
     if axis is None:
         return torch.squeeze(x)
-    axes = (axis,) if isinstance(axis, int) else tuple(axis)
-    if any(x.shape[a] != 1 for a in axes):  # torch would skip such axes silently
-        raise ValueError(
-            f"squeeze: cannot remove axis {axis} of shape {tuple(x.shape)}: only axes of size 1 "
-            f"can be removed."
-        )
-    return torch.squeeze(x, axes)
+    axes = normalize_axes(axis, x.ndim, "squeeze", "torch")
+    check_squeezable(x.shape, axes, axis, "torch")  # torch would skip such axes silently
+    return torch.squeeze(x, axes) if axes else x
 
 
-def expand_dims(x, /, *, axis=0):
-    return torch.unsqueeze(x, axis)
+def expand_dims(x, /, axis=0):
+    if isinstance(axis, int) and -x.ndim - 1 <= axis <= x.ndim:
+        return torch.unsqueeze(x, axis)
+    for position in new_axis_positions(axis, x.ndim, "expand_dims", "torch"):
+        x = torch.unsqueeze(x, position)
+    return x
+
+
+_flip = unsigned_safe(torch.flip, "flip", "move", (0,))
 
 
 def flip(x, /, *, axis=None):
     if axis is None:
-        return torch.flip(x, tuple(range(x.ndim)))
-    return torch.flip(x, (axis,) if isinstance(axis, int) else axis)
+        return _flip(x, tuple(range(x.ndim)))
+    return _flip(x, (axis,) if isinstance(axis, int) else axis)
 
 
 def roll(x, /, shift, *, axis=None):

@@ -6,10 +6,39 @@ from __future__ import annotations
 import torch
 
 from ivy.backends.torch._helpers import reduction_args
+from ivy.backends.torch._unsigned import WIDE_UNSIGNED, order_key, promoted, unsigned_safe
 
-argmax = torch.argmax
-argmin = torch.argmin
-where = torch.where
+
+def _arg_extreme(native, name: str):
+    """torch's argmax or argmin; bools (no torch kernel) as uint8, uint16+ by order keys."""
+
+    def fn(x, /, *, axis=None, keepdims=False):
+        if x.dtype is torch.bool:
+            x = x.to(torch.uint8)
+        elif x.dtype in WIDE_UNSIGNED:
+            x = order_key(x)
+        if axis is None and keepdims:
+            return native(x).reshape((1,) * x.ndim)
+        return native(x, dim=axis, keepdim=keepdims)
+
+    fn.__name__ = fn.__qualname__ = name
+    return fn
+
+
+argmax = _arg_extreme(torch.argmax, "argmax")
+argmin = _arg_extreme(torch.argmin, "argmin")
+_where = unsigned_safe(torch.where, "where", "move", (1, 2))
+
+
+def where(condition, x1, x2, /):
+    """Array API promotion of ``x1`` and ``x2`` (also of 0-d tensors, which torch promotes as
+    Python scalars); a condition of another dtype is read as ``condition != 0``."""
+    if isinstance(condition, torch.Tensor) and condition.dtype is not torch.bool:
+        condition = condition != 0
+    if isinstance(x1, torch.Tensor) and isinstance(x2, torch.Tensor) and x1.dtype is not x2.dtype:
+        dtype = promoted((x1, x2))
+        x1, x2 = x1.to(dtype), x2.to(dtype)
+    return _where(condition, x1, x2)
 
 
 def count_nonzero(x, /, *, axis=None, keepdims=False):
@@ -21,6 +50,8 @@ def count_nonzero(x, /, *, axis=None, keepdims=False):
 def nonzero(x, /):
     if x.ndim == 0:
         raise ValueError("nonzero needs an array of one or more dimensions, got a 0-d array.")
+    if x.dtype in WIDE_UNSIGNED:
+        x = x != 0  # torch has no nonzero kernel for them
     return torch.nonzero(x, as_tuple=True)
 
 
@@ -28,6 +59,8 @@ def searchsorted(x1, x2, /, *, side="left", sorter=None):
     if not isinstance(x2, torch.Tensor):
         x2 = torch.asarray(x2, device=x1.device)
     if x1.dtype != x2.dtype:  # torch wants one dtype
-        dtype = torch.promote_types(x1.dtype, x2.dtype)
+        dtype = promoted((x1, x2))
         x1, x2 = x1.to(dtype), x2.to(dtype)
+    if x1.dtype in WIDE_UNSIGNED:  # no torch kernel: their order keys
+        x1, x2 = order_key(x1), order_key(x2)
     return torch.searchsorted(x1, x2, side=side, sorter=sorter)

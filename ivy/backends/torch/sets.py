@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import torch
 
+from ivy.backends.torch._unsigned import WIDE_UNSIGNED, order_key, promoted
 from ivy.core._results import UniqueAllResult, UniqueCountsResult, UniqueInverseResult
 
 
@@ -34,4 +35,11 @@ def unique_values(x, /):
 
 
 def isin(x1, x2, /, *, invert=False):
+    if not isinstance(x2, torch.Tensor):
+        x2 = torch.as_tensor(x2, device=x1.device)
+    if x1.dtype is not x2.dtype:
+        dtype = promoted((x1, x2))
+        x1, x2 = x1.to(dtype), x2.to(dtype)
+    if x1.dtype in WIDE_UNSIGNED:  # no torch kernel: their order keys
+        x1, x2 = order_key(x1), order_key(x2)
     return torch.isin(x1, x2, invert=invert)

@@ -6,6 +6,7 @@ from __future__ import annotations
 import torch
 
 from ivy.backends._sample_args import top_k_axis
+from ivy.backends.torch._unsigned import SIGNED_OF, WIDE_UNSIGNED, order_key
 from ivy.core._results import TopKResult
 
 
@@ -23,7 +24,12 @@ def top_k(x, k, /, *, axis=-1, largest=True, sorted=True):
     that value and then the first ones equal to it, in index order; a stable sort of those k
     orders them."""
     dim = top_k_axis(x.shape, k, axis)
-    key = x.to(torch.uint8) if x.dtype is torch.bool else x  # torch has no topk of bools
+    if x.dtype is torch.bool:  # torch has no topk of bools
+        key = x.to(torch.uint8)
+    elif x.dtype in WIDE_UNSIGNED:  # nor of uint16, uint32, uint64: their order keys
+        key = order_key(x)
+    else:
+        key = x
     n = x.shape[dim]
     if k == 0:
         values = x.narrow(dim, 0, 0)
@@ -44,9 +50,11 @@ def top_k(x, k, /, *, axis=-1, largest=True, sorted=True):
     small = torch.int32 if 2 * n < 2**31 else torch.int64  # int32 keys: faster wheres
     rank = torch.arange(n, 0, -1, dtype=small, device=x.device).reshape(shape)  # earlier: larger
     # every better element (fewer than k) outranks every tied one, which outranks the rest
-    order_key = torch.where(better, rank + n, torch.where(tied, rank, 0))
-    indices = torch.topk(order_key, k, dim).indices
+    ranking = torch.where(better, rank + n, torch.where(tied, rank, 0))
+    indices = torch.topk(ranking, k, dim).indices
     if sorted:  # by value; equal values stay in index order
         by_value = torch.sort(key.gather(dim, indices), dim=dim, descending=largest, stable=True)
         indices = indices.gather(dim, by_value[1])
+    if x.dtype in WIDE_UNSIGNED:  # gather the same bits, seen as signed
+        return TopKResult(x.view(SIGNED_OF[x.dtype]).gather(dim, indices).view(x.dtype), indices)
     return TopKResult(x.gather(dim, indices), indices)

@@ -5,16 +5,40 @@ from __future__ import annotations
 import torch
 
 from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
+from ivy.backends.torch._unsigned import WIDE_UNSIGNED, unsigned_safe, work_dtype
+
+_UNSIGNED = (torch.uint8, torch.uint16, torch.uint32, torch.uint64)
+
+
+def _accumulator(x, dtype):
+    """``(work, final)``: the dtype to accumulate in and the result's. Unsigned integers give
+    uint64 (the default unsigned integer), accumulated in int64, whose wrap-around is the same
+    (torch would give int64, and has no uint64 kernels)."""
+    dtype = native_dtype(dtype)
+    if dtype is None and x.dtype in _UNSIGNED:
+        dtype = torch.uint64
+    return work_dtype(dtype), dtype
 
 
 def sum(x, /, *, axis=None, dtype=None, keepdims=False):
     x, dim, keepdim = reduction_args(x, axis, keepdims)
-    return torch.sum(x, dim=dim, keepdim=keepdim, dtype=native_dtype(dtype))
+    work, final = _accumulator(x, dtype)
+    if work is not final and x.dtype in WIDE_UNSIGNED:
+        x = x.to(torch.int64)
+    out = torch.sum(x, dim=dim, keepdim=keepdim, dtype=work)
+    return out if final is None or out.dtype is final else out.to(final)
 
 
 def prod(x, /, *, axis=None, dtype=None, keepdims=False):
     x, dim, keepdim = reduction_args(x, axis, keepdims)
-    dtype = native_dtype(dtype)
+    dtype, final = _accumulator(x, dtype)
+    if dtype is not final and x.dtype in WIDE_UNSIGNED:
+        x = x.to(torch.int64)
+    out = _prod(x, dim, keepdim, dtype)
+    return out if final is None or out.dtype is final else out.to(final)
+
+
+def _prod(x, dim, keepdim, dtype):
     if dim is None:
         out = torch.prod(x, dtype=dtype)
         return out.reshape((1,) * x.ndim) if keepdim else out
@@ -30,14 +54,18 @@ def mean(x, /, *, axis=None, keepdims=False):
     return torch.mean(x, dim=dim, keepdim=keepdim)
 
 
+_amin = unsigned_safe(torch.amin, "min", "order", (0,))
+_amax = unsigned_safe(torch.amax, "max", "order", (0,))
+
+
 def min(x, /, *, axis=None, keepdims=False):
     x, dim, keepdim = reduction_args(x, axis, keepdims)
-    return torch.amin(x, dim=dim, keepdim=keepdim)
+    return _amin(x, dim=dim, keepdim=keepdim)
 
 
 def max(x, /, *, axis=None, keepdims=False):
     x, dim, keepdim = reduction_args(x, axis, keepdims)
-    return torch.amax(x, dim=dim, keepdim=keepdim)
+    return _amax(x, dim=dim, keepdim=keepdim)
 
 
 def var(x, /, *, axis=None, correction=0.0, keepdims=False):
@@ -48,9 +76,6 @@ def var(x, /, *, axis=None, correction=0.0, keepdims=False):
 def std(x, /, *, axis=None, correction=0.0, keepdims=False):
     x, dim, keepdim = reduction_args(as_inexact(x), axis, keepdims)
     return torch.std(x, dim=dim, correction=correction, keepdim=keepdim)
-
-
-_UNSIGNED = (torch.uint8, torch.uint16, torch.uint32, torch.uint64)
 
 
 def _cumulative(native, initial, x, axis, dtype, include_initial, name):

@@ -159,17 +159,25 @@ LINSPACE = [
     ((2.0, 3.0, 1), {}),
     ((5.0, -5.0, 6), {"dtype": "float64"}),
     ((0.0, 1.0, 0), {}),
+    ((0j, 2 + 4j, 5), {}),  # complex bounds (the Array API allows them): complex64
+    ((1.0, -1 + 1j, 4), {"endpoint": False, "dtype": "complex128"}),
 ]
 
 
 @pytest.mark.parametrize("args, kwargs", LINSPACE, ids=[f"{a}-{k}" for a, k in LINSPACE])
 def test_linspace(backend, args, kwargs):
-    dtype = kwargs.get("dtype", "float32")
+    is_complex = any(isinstance(v, complex) for v in args[:2])
+    dtype = kwargs.get("dtype", "complex64" if is_complex else "float32")
     np_kwargs = {k: v for k, v in kwargs.items() if k != "dtype"}
     expected = cast(np.linspace(*args, **np_kwargs), dtype)
     for fn in api_f(backend, "linspace"):
         check(fn(*args, **kwargs), expected, backend)
     check(api_f(backend, "linspace")[0](args[0], args[1], num=args[2], **kwargs), expected, backend)
+
+
+def test_linspace_with_complex_bounds_and_a_real_dtype_raises(backend):
+    with pytest.raises(ivy.errors.DtypeError, match="complex dtype"):
+        ivy.linspace(0j, 1 + 1j, 3, dtype="float32", f=backend)
 
 
 LOGSPACE = [
@@ -186,7 +194,8 @@ LOGSPACE = [
 
 @pytest.mark.parametrize("args, kwargs", LOGSPACE, ids=[f"{a}-{k}" for a, k in LOGSPACE])
 def test_logspace(backend, args, kwargs):
-    dtype = kwargs.get("dtype", "float32")
+    is_complex = any(isinstance(v, complex) for v in args[:2])
+    dtype = kwargs.get("dtype", "complex64" if is_complex else "float32")
     np_kwargs = {k: v for k, v in kwargs.items() if k != "dtype"}
     expected = np.logspace(*(float(a) for a in args[:2]), args[2], **np_kwargs).astype(dtype)
     for fn in api_f(backend, "logspace"):

@@ -281,6 +281,17 @@ def test_can_cast_from_an_array(backend):
         assert not fn(x, "int64")
 
 
+def test_can_cast_never_crosses_kinds(backend):
+    """The Array API's table has no bool-to-integer nor integer-to-floating promotion (numpy's
+    own can_cast allows both)."""
+    for a, b in [("bool", "int8"), ("int64", "float64"), ("uint8", "float32"), ("bool", "float32")]:
+        for fn in api(backend, "can_cast")[1:]:
+            assert not fn(a, b), (a, b)
+        assert not ivy.can_cast(a, b)
+        assert not ivy.can_cast(_as(backend, a), b)
+    assert ivy.can_cast("float32", "complex64") and ivy.can_cast("float32", "complex128")
+
+
 def test_can_cast_never_narrows_nor_drops_the_imaginary_part(backend):
     for fn in api(backend, "can_cast")[1:]:
         for a, b in [("float64", "float32"), ("complex64", "float32"), ("float32", "int32")]:

@@ -1,0 +1,61 @@
+"""Axes as the Array API reads them, for the backends whose frameworks read them otherwise:
+negative axes count from the end, and an axis out of range or repeated raises
+:class:`ivy.errors.AxisError` naming the function, the argument and the backend."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from ivy.errors import AxisError, ShapeError
+
+
+def normalize_axis(
+    axis: int, ndim: int, function: str, backend: str, argument: str = "axis"
+) -> int:
+    """``axis`` as a non-negative position among ``ndim`` axes."""
+    if not -ndim <= axis < ndim:
+        raise AxisError(
+            f"axis {axis} is out of range for an array of {ndim} dimension"
+            f"{'' if ndim == 1 else 's'} (valid: {-ndim} to {ndim - 1}).",
+            function=function,
+            argument=argument,
+            backend=backend,
+        )
+    return axis % ndim
+
+
+def normalize_axes(
+    axes: int | Sequence[int], ndim: int, function: str, backend: str, argument: str = "axis"
+) -> tuple[int, ...]:
+    """``axes`` (an int or a sequence of them) as distinct non-negative positions."""
+    items = (axes,) if isinstance(axes, int) else tuple(axes)
+    out = tuple(normalize_axis(a, ndim, function, backend, argument) for a in items)
+    if len(set(out)) != len(out):
+        raise AxisError(
+            f"repeated axis in {items}.", function=function, argument=argument, backend=backend
+        )
+    return out
+
+
+def new_axis_positions(
+    axis: int | Sequence[int], ndim: int, function: str, backend: str
+) -> tuple[int, ...]:
+    """The positions, in the result, of the new axes of ``expand_dims(x, axis)`` for an ``x`` of
+    ``ndim`` dimensions (negative positions count from the end of the result), sorted."""
+    count = 1 if isinstance(axis, int) else len(axis)
+    return tuple(sorted(normalize_axes(axis, ndim + count, function, backend)))
+
+
+def check_squeezable(
+    shape: Sequence[int | None], axes: Sequence[int], axis: object, backend: str
+) -> None:
+    """Raise :class:`ivy.errors.ShapeError` if an axis of ``axes`` (normalized) has a size other
+    than 1 (``axis`` as given, for the message)."""
+    if any(shape[a] not in (1, None) for a in axes):
+        raise ShapeError(
+            f"cannot remove axis {axis} of an array of shape {tuple(shape)}: only axes of size 1 "
+            f"can be removed.",
+            function="squeeze",
+            argument="axis",
+            backend=backend,
+        )

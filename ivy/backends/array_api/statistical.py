@@ -1,0 +1,19 @@
+"""Reductions, written once against ``xp``, with the Array API's keywords (numpy's and jax's own
+``mean``, ``var`` and ``std`` take more, positionally). Integer and boolean inputs compute in
+float32 by the rule declared on the core's stubs."""
+
+from __future__ import annotations
+
+from ivy.backends.array_api._unbound import xp
+
+
+def mean(x, /, *, axis=None, keepdims=False):
+    return xp.mean(x, axis=axis, keepdims=keepdims)
+
+
+def var(x, /, *, axis=None, correction=0.0, keepdims=False):
+    return xp.var(x, axis=axis, correction=correction, keepdims=keepdims)
+
+
+def std(x, /, *, axis=None, correction=0.0, keepdims=False):
+    return xp.std(x, axis=axis, correction=correction, keepdims=keepdims)
