@@ -93,6 +93,14 @@ class AxisError(InvalidArgumentError, ValueError, IndexError):
     """An axis out of range for the array's number of dimensions, or repeated (a ValueError and
     an IndexError, as numpy's ``AxisError``)."""
 
+    @staticmethod
+    def out_of_range(axis: int, ndim: int) -> str:
+        """The message for ``axis`` outside an array of ``ndim`` dimensions."""
+        dims = f"{ndim} dimension{'' if ndim == 1 else 's'}"
+        if not ndim:
+            return f"axis {axis} is out of range: a 0-d array has no axis (give at least 1-d)."
+        return f"axis {axis} is out of range for an array of {dims} (valid: {-ndim} to {ndim - 1})."
+
 
 class IndexOutOfBoundsError(InvalidArgumentError, IndexError):
     """An index out of range for the axis it indexes (an IndexError). Raised in eager calls on

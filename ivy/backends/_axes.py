@@ -15,8 +15,7 @@ def normalize_axis(
     """``axis`` as a non-negative position among ``ndim`` axes."""
     if not -ndim <= axis < ndim:
         raise AxisError(
-            f"axis {axis} is out of range for an array of {ndim} dimension"
-            f"{'' if ndim == 1 else 's'} (valid: {-ndim} to {ndim - 1}).",
+            AxisError.out_of_range(axis, ndim),
             function=function,
             argument=argument,
             backend=backend,

@@ -5,15 +5,15 @@ from __future__ import annotations
 
 import operator
 
+from ivy.errors import AxisError
+
 
 def top_k_axis(shape, k, axis) -> int:
     """``axis`` of an array of ``shape`` as a non-negative int, after checking that ``k`` elements
     can be taken along it (a size that is unknown, None inside ``tf.function``, is not checked)."""
     ndim = len(shape)
-    if ndim == 0:
-        raise ValueError("top_k: x must have at least one axis; got a 0-d array.")
-    if not -ndim <= axis < ndim:
-        raise ValueError(f"top_k: axis {axis} is out of bounds for an array of {ndim} dimensions.")
+    if not -ndim <= axis < ndim:  # a 0-d array included: it has no axis
+        raise AxisError(AxisError.out_of_range(axis, ndim), function="top_k", argument="axis")
     axis %= ndim
     k = operator.index(k)
     size = shape[axis]

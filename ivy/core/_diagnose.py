@@ -287,8 +287,7 @@ def _axes(ns: Any, name: str, bound: dict, err: Exception) -> Exception | None:
         bad = [a for a in axes if not -rank <= a < rank]
         if bad:
             return AxisError(
-                f"axis {bad[0]} is out of range for an array of {rank} dimension"
-                f"{'s' if rank != 1 else ''} (valid: {-rank} to {rank - 1}).",
+                AxisError.out_of_range(bad[0], rank),
                 function=name,
                 argument=param,
                 backend=ns.backend,

@@ -144,7 +144,12 @@ def divide(x1, x2, /):
     """``x1 / x2``; integers and bools of two dtypes (int64 with uint64 promotes to float64)
     are divided in float32, as integers of one dtype are."""
     d1, d2 = getattr(x1, "dtype", None), getattr(x2, "dtype", None)
-    if d1 is not d2 and d1 is not None and d2 is not None and not _inexact(d1, d2):
+    if (
+        d1 is not d2
+        and isinstance(d1, torch.dtype)  # two tensors (a numpy scalar has a numpy dtype)
+        and isinstance(d2, torch.dtype)
+        and not _inexact(d1, d2)
+    ):
         x1, x2 = x1.to(torch.float32), x2.to(torch.float32)
     return _divide(x1, x2)
 
