@@ -24,9 +24,20 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from typing import Any
 
-import optree
-
 from ivy.typing import Nest
+
+try:
+    import optree
+except ModuleNotFoundError:  # a declared dependency: ``import ivy`` works without it, nests don't
+
+    class _MissingOptree:
+        def __getattr__(self, name: str) -> Any:
+            raise ModuleNotFoundError(
+                "ivy's nests (gradients, compile_fn, scan, stateful modules) need optree, a "
+                "dependency of ivy: install it with `pip install optree` (or reinstall ivy)."
+            )
+
+    optree = _MissingOptree()
 
 __all__ = [
     "map_nest",

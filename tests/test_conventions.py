@@ -170,3 +170,27 @@ def test_import_loads_no_framework(package):
         [sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True
     ).stdout.strip()
     assert out == "[]", f"import {package} imported {out}"
+
+
+def test_import_works_without_optree_and_nests_say_what_to_install():
+    """optree is a dependency of ivy, but ``import ivy`` (and array functions) must not need it;
+    the nest functions that do name the package to install."""
+    code = (
+        "import sys\n"
+        "class Block:\n"
+        "    def find_spec(self, name, path=None, target=None):\n"
+        "        if name.split('.')[0] == 'optree':\n"
+        "            raise ModuleNotFoundError(name)\n"
+        "sys.meta_path.insert(0, Block())\n"
+        "import numpy as np, ivy\n"
+        "print(ivy.add(np.ones(2), 1.0).tolist())\n"
+        "try:\n"
+        "    ivy.nest.map_nest(abs, [1])\n"
+        "except ModuleNotFoundError as e:\n"
+        "    print(e)\n"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True
+    ).stdout
+    assert out.startswith("[2.0, 2.0]\n")
+    assert "pip install optree" in out

@@ -33,8 +33,6 @@ import operator
 from collections.abc import Callable, Sequence
 from typing import Any
 
-import optree
-
 from ivy import framework_handler as _fh
 from ivy.core._by_hand import by_hand
 from ivy.core._dispatch import dispatch
@@ -270,7 +268,7 @@ def check_carry(name: str, before: Nest, after: Nest) -> None:
         if tuple(a.shape) != shape_b or a.dtype != dtype_b:
             problems.append((i, f"{a.dtype}{tuple(a.shape)} -> {dtype_b}{shape_b}"))
     if problems:  # the leaves' paths only for the message (they cost more than the check)
-        paths = optree.tree_paths(before, none_is_leaf=False)
+        paths = spec_before.paths()
         problems = [f"at {paths[i] or 'the root'}: {change}" for i, change in problems]
         raise TypeError(
             f"ivy.{name}: the body must keep the carry's shapes and dtypes (as jax and tensorflow "

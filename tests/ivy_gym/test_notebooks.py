@@ -19,8 +19,14 @@ SMALL = {
 }
 
 
-@pytest.mark.parametrize("name", ["gym_trajectory_optimisation", "gym_policy_optimisation"])
-def test_notebook_runs(name, request, monkeypatch):
+NOTEBOOKS = [
+    ROOT / "notebooks" / "gym_trajectory_optimisation.ipynb",
+    ROOT / "notebooks" / "gym_policy_optimisation.ipynb",
+]
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_notebook_runs(path, request, monkeypatch):
     # torch runs eagerly by default (no compilation): the quickest on a small budget
     backends = [b for b in ("torch", "jax", "tensorflow") if b in request.config.ivy_backends]
     if not backends:
@@ -28,7 +34,7 @@ def test_notebook_runs(name, request, monkeypatch):
     for key, value in {**SMALL, "IVY_GYM_NOTEBOOK_FRAMEWORK": backends[0]}.items():
         monkeypatch.setenv(key, value)
     monkeypatch.setenv("PYTHONPATH", os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]))
-    book = nbformat.read(ROOT / "notebooks" / f"{name}.ipynb", as_version=4)
+    book = nbformat.read(path, as_version=4)
     nbclient.NotebookClient(
         book, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(ROOT)}}
     ).execute()
