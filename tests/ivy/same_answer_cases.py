@@ -10,6 +10,7 @@ import os
 
 import numpy as np
 
+from ivy.dtypes import DTYPE_NAMES
 from tests.ivy.differential import C, Case, PerBackend
 
 # The full grid (every elementwise function on every dtype and dtype pair) runs with
@@ -19,22 +20,7 @@ FULL = bool(os.environ.get("IVY_SAME_ANSWER_FULL"))
 
 inf, nan = math.inf, math.nan
 
-ALL_DTYPES = (
-    "bool",
-    "int8",
-    "int16",
-    "int32",
-    "int64",
-    "uint8",
-    "uint16",
-    "uint32",
-    "uint64",
-    "float16",
-    "float32",
-    "float64",
-    "complex64",
-    "complex128",
-)
+ALL_DTYPES = DTYPE_NAMES  # every dtype ivy names
 INTEGERS = ("int8", "int16", "int32", "int64", "uint8", "uint16", "uint32", "uint64")
 FLOATS = ("float16", "float32", "float64")
 COMPLEX = ("complex64", "complex128")
