@@ -306,9 +306,16 @@ def load_backend(name: str) -> types.ModuleType:
     return _loaded[name]
 
 
-def register_loaded(name: str, ns: types.ModuleType, capabilities: Any = None) -> None:
+def register_loaded(
+    name: str, ns: types.ModuleType, capabilities: Any = None, array_types: Any = ()
+) -> None:
     """Record ``ns``, an assembled backend namespace, as backend ``name`` (called once, by
-    ``ivy.backends._assemble.assemble``), and run the load hooks on it."""
+    ``ivy.backends._assemble.assemble``), and run the load hooks on it.
+
+    The framework's ``array_types`` enter the dispatchers' table now, and with them numpy's
+    (ivy imports numpy anyway): the table then grows only when another framework loads or a
+    subclass is met, and a user's torch.compile of ivy code, which guards on the table's size,
+    does not recompile the first time a numpy array or a Parameter passes through ivy."""
     ns.backend = name
     ns.use = _Use(ns)
     ns.capabilities = capabilities if capabilities is not None else _BACKENDS[name].capabilities
@@ -319,6 +326,10 @@ def register_loaded(name: str, ns: types.ModuleType, capabilities: Any = None) -
     for key in keys:
         _by_f[key] = ns
         _fast_by_f[key] = _fast(ns)
+    for t in array_types:
+        _register_type(t, ns)
+    if "numpy" not in _loaded and "numpy" in _BACKENDS:
+        load_backend("numpy")
 
 
 def on_backend_load(hook: Callable[[types.ModuleType], None]) -> None:
@@ -368,10 +379,14 @@ def _classify(t: type) -> types.ModuleType | None:
     if name == "numpy" and issubclass(t, _numpy_generic()):
         _weak_types[id(t)] = t
     else:
-        _by_type[t] = ns
-        _by_type_id[id(t)] = ns
-        _fast_by_type[t] = _fast(ns)
+        _register_type(t, ns)
     return ns
+
+
+def _register_type(t: type, ns: types.ModuleType) -> None:
+    _by_type[t] = ns
+    _by_type_id[id(t)] = ns
+    _fast_by_type[t] = _fast(ns)
 
 
 def _numpy_generic() -> type:

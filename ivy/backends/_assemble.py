@@ -27,7 +27,7 @@ import importlib.util
 import inspect
 import sys
 import types
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 from ivy import framework_handler as _fh
@@ -75,6 +75,7 @@ def assemble(
     array_api_capabilities: Mapping[str, Any] | None = None,
     scalars_need_shims: bool = False,
     natives_in_namespace: bool = False,
+    array_types: Sequence[type] = (),
 ) -> types.ModuleType:
     """Fill ``namespace`` with the backend's public names and register it as backend ``backend``.
 
@@ -109,6 +110,8 @@ def assemble(
             a shim only adds Python-scalar promotion (numpy: ``ivy.numpy.add is numpy.add``, so
             ``ivy.numpy`` and ``set_framework('numpy')`` cost nothing); the shims stay in a view
             that ivy's dispatchers use for calls with Python scalars.
+        array_types: the framework's array types, registered for inference at once (see
+            ``framework_handler.register_loaded``); others (subclasses) as they are met.
 
     Returns:
         The namespace module, complete.
@@ -188,7 +191,7 @@ def assemble(
     if scalars is not module:
         scalars.__ivy_scalars__ = scalars
         scalars.__ivy_fast__ = fast
-    _fh.register_loaded(backend, module, capabilities)
+    _fh.register_loaded(backend, module, capabilities, array_types)
     return module
 
 

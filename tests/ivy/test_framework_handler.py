@@ -191,6 +191,38 @@ def test_types_seen_later_do_not_recompile_torch_compiled_inference(request):
     np.testing.assert_allclose(numpy_of(out), 0.5 * np.sin(1.0) * np.ones(2) * 3)
 
 
+def test_dispatchers_under_torch_compile_do_not_recompile_for_numpy_or_parameters(request):
+    """The generated dispatchers (``ivy.add(x, y)``) read the type table directly (an ``id()``
+    would cost every inferred call), so torch.compile guards on its size. Each backend registers
+    its array types, and numpy's, when it loads: a numpy array or a Parameter met after
+    compiling adds nothing to the table and compiles nothing again."""
+    if "torch" not in request.config.ivy_backends:
+        pytest.skip("torch is not among the tested backends")
+    import torch
+
+    graphs = []
+
+    def counting_backend(graph_module, example_inputs):
+        graphs.append(graph_module)
+        return graph_module.forward
+
+    def fn(x, y):
+        return ivy.multiply(ivy.sin(ivy.add(x, y)), 2.0)
+
+    x, y = torch.ones(3, dtype=torch.float64), torch.full((3,), 0.5, dtype=torch.float64)
+    fn(x, y)  # the backend loaded outside the compiled function
+    compiled = torch.compile(fn, backend=counting_backend, fullgraph=True)
+    compiled(x, y)
+    assert len(graphs) == 1
+    size = len(fh._by_type)
+    ivy.add(np.ones(2), np.ones(2))
+    ivy.add(torch.nn.Parameter(torch.ones(3, dtype=torch.float64)), y)
+    assert len(fh._by_type) == size
+    out = compiled(x, y)
+    assert len(graphs) == 1  # not compiled again
+    np.testing.assert_allclose(numpy_of(out), 2 * np.sin(1.5) * np.ones(3))
+
+
 # ---------------------------------------------------------------------------------------------
 # Explicit f
 # ---------------------------------------------------------------------------------------------

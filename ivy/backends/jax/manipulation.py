@@ -8,7 +8,9 @@ import jax.numpy as jnp
 import numpy as np
 
 reshape = jnp.reshape
-permute_dims = jnp.transpose  # jnp.permute_dims refuses negative axes, which the standard's tests pass
+permute_dims = (
+    jnp.transpose
+)  # jnp.permute_dims refuses negative axes, which the standard's tests pass
 transpose = jnp.transpose
 concat = jnp.concat
 stack = jnp.stack

@@ -23,4 +23,5 @@ assemble(
     reals=_reals.WRAPPERS,
     scalars_need_shims=True,
     natives_in_namespace=True,
+    array_types=(numpy.ndarray,),
 )

@@ -5,6 +5,7 @@ int32)."""
 import sys
 
 from ivy.backends._assemble import assemble
+from ivy.backends.tensorflow import _helpers
 from ivy.backends.tensorflow._helpers import NATIVE_DTYPES, REALS, devices
 
 assemble(
@@ -14,4 +15,5 @@ assemble(
     native_dtypes=NATIVE_DTYPES,
     reals=REALS,
     devices=devices,
+    array_types=_helpers.ARRAY_TYPES,
 )

@@ -26,6 +26,7 @@ TENSOR_TYPES = (tf.Tensor, tf.Variable)
 with tf.init_scope():  # eager even when the backend is first loaded inside a tf.function
     EAGER_TENSOR = type(tf.constant(0.0))
 FAST_TYPES = {EAGER_TENSOR, float, bool}
+ARRAY_TYPES = (EAGER_TENSOR,)  # registered for inference when the backend loads
 
 # Errors by which tf's functions refuse inputs (other dtypes, or a dtype without a kernel), eager
 # and inside tf.function.

@@ -3,6 +3,8 @@ torch.float32``); the default float dtype is float32, as on every backend."""
 
 import sys
 
+import torch
+
 from ivy.backends._assemble import assemble
 from ivy.backends.torch._helpers import NATIVE_DTYPES, REALS, devices
 
@@ -13,4 +15,5 @@ assemble(
     native_dtypes=NATIVE_DTYPES,
     reals=REALS,
     devices=devices,
+    array_types=(torch.Tensor, torch.nn.Parameter),
 )
