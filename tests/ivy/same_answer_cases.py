@@ -806,6 +806,10 @@ def _linalg() -> None:
         C(small("float64", (3, 2))),
         C(SINGULAR),
         C(a([[1 + 1j, 0], [0, 2]], "complex64")),
+        C(a(batch, "float32"), rtol=a([0.1, 0.9], "float64")),  # an rtol per matrix, as float64
+        C(a(np.zeros((2, 0)), "float32")),  # empty matrices and stacks
+        C(a(np.zeros((2, 2, 0)), "float32"), rtol=a([0.5, 0.5], "float64")),
+        C(a(np.zeros((0, 2, 1)), "float32"), rtol=0.5),
     ]
     CASES["matrix_rank"] = [C(MATRIX), C(SINGULAR), C(batch), C(SINGULAR, rtol=0.1)]
     CASES["matrix_power"] = [

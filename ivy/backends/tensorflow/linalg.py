@@ -162,6 +162,12 @@ def outer(x1, x2, /):
 
 def pinv(x, /, *, rtol=None):
     x = floating(x)
+    real = x.dtype.real_dtype
+    if x.shape.num_elements() == 0:  # tf's SVD refuses empty stacks and matrices
+        *batch, rows, cols = x.shape
+        return tf.zeros((*batch, cols, rows), x.dtype)
+    if rtol is not None:  # a Python float, or an array of any real dtype (one per matrix)
+        rtol = tf.cast(rtol, real)
     if rtol is None:  # numpy 2's default
         rows, cols = x.shape[-2:]
         if rows is None or cols is None:
@@ -171,7 +177,7 @@ def pinv(x, /, *, rtol=None):
         rtol = size * np.finfo(x.dtype.real_dtype.as_numpy_dtype).eps
     if x.dtype.is_complex:  # tf.linalg.pinv takes real matrices only: through the SVD
         s, u, v = tf.linalg.svd(x)
-        cutoff = tf.cast(rtol, s.dtype) * tf.math.reduce_max(s, axis=-1, keepdims=True)
+        cutoff = tf.cast(rtol, s.dtype)[..., None] * tf.math.reduce_max(s, axis=-1, keepdims=True)
         inverse = tf.where(s > cutoff, 1 / s, tf.zeros_like(s))
         return tf.linalg.matmul(v * tf.cast(inverse, x.dtype)[..., None, :], u, adjoint_b=True)
     return tf.linalg.pinv(x, rcond=rtol)
