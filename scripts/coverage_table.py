@@ -130,8 +130,10 @@ class Recorder:
             ns = getattr(ivy, backend)
             by_object: dict[int, list[str]] = defaultdict(list)
             for name in ns.__all__:
+                if name in DTYPE_NAMES:  # (jax without x64 has no 64-bit dtypes: no entry)
+                    continue
                 value = ns.__dict__[name]
-                if name in DTYPE_NAMES or isinstance(value, ExtensionNamespace):
+                if isinstance(value, ExtensionNamespace):
                     continue
                 if callable(value):
                     by_object[id(value)].append(name)
