@@ -77,9 +77,15 @@ class Recorder:
         from ivy.errors import UnsupportedError
 
         recorder = self
+        torch = sys.modules.get("torch")
+        # torch.compile traces Python: recording there would make it guard on the recorder's
+        # state and compile again (a test that counts compilations would fail here only)
+        tracing = torch.compiler.is_compiling if torch is not None else (lambda: False)
 
         @functools.wraps(fn)
         def wrapper(*args, **kwargs):
+            if tracing():
+                return fn(*args, **kwargs)
             calls = recorder.calls
             seen = names + recorder.active  # this function, and the compositions running it
             try:
@@ -128,21 +134,21 @@ class Recorder:
 
         for backend in backends:
             ns = getattr(ivy, backend)
-            by_object: dict[int, list[str]] = defaultdict(list)
-            for name in ns.__all__:
-                if name in DTYPE_NAMES:  # (jax without x64 has no 64-bit dtypes: no entry)
-                    continue
-                value = ns.__dict__[name]
-                if isinstance(value, ExtensionNamespace):
-                    continue
-                if callable(value):
-                    by_object[id(value)].append(name)
-            wrappers = {}
-            for names in by_object.values():
-                fn = ns.__dict__[names[0]]
-                wrappers[id(fn)] = self._recording(fn, names, backend)
-                for name in names:
-                    ns.__dict__[name] = wrappers[id(fn)]
+            # the namespace, and the views of it that the dispatchers call (the natives in place
+            # of shims, the shims for Python scalars): copies of its names, wrapped alike
+            views = {id(v): v for v in (ns, ns.__ivy_fast__, ns.__ivy_scalars__)}
+            for view in views.values():
+                by_object: dict[int, list[str]] = defaultdict(list)
+                for name in ns.__all__:
+                    if name in DTYPE_NAMES:  # (jax without x64 has no 64-bit dtypes: no entry)
+                        continue
+                    value = view.__dict__.get(name)
+                    if callable(value) and not isinstance(value, ExtensionNamespace):
+                        by_object[id(value)].append(name)
+                for names in by_object.values():
+                    wrapper = self._recording(view.__dict__[names[0]], names, backend)
+                    for name in names:
+                        view.__dict__[name] = wrapper
             for value in list(vars(ns).values()):
                 if isinstance(value, ExtensionNamespace):
                     own = value.__name__.rpartition(".")[2]
