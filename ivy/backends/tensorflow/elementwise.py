@@ -190,6 +190,9 @@ def _binary(native, name: str, fallback=promote, bools: bool = False):
     fn.__doc__ = (
         f"``tf.math.{native.__name__}`` with Python scalars on either side and dtype promotion."
     )
+    # For two tensors tf's native either answers as ivy would (same dtypes: tf never promotes)
+    # or refuses: the dispatchers call it directly and hand what it refuses to ``fn``.
+    fn.__ivy_native__ = native
     return fn
 
 
