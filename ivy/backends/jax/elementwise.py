@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import jax
 import jax.numpy as jnp
-import numpy as np
 
 from ivy.backends import _complex_special, _reals
 
@@ -19,7 +18,9 @@ _XP = _complex_special.namespace(jnp, complex=jax.lax.complex)
 
 
 def _fixed(name: str):
-    return _reals.unary(getattr(jnp, name), name, _complex_special.fixer(name, _XP))
+    # jitted: eager, its hundred small operations would each compile for every new shape
+    fix = jax.jit(_complex_special.fixer(name, _XP))
+    return _reals.unary(getattr(jnp, name), name, fix)
 
 
 acos = _fixed("acos")
@@ -34,7 +35,18 @@ log1p = _fixed("log1p")
 sinh = _fixed("sinh")
 sqrt = _fixed("sqrt")
 tanh = _fixed("tanh")
-# not a function of real numbers (integers keep their dtype): only the complex test
-sign = _complex_special.wrap(
-    jnp.sign, "sign", _XP, (np.dtype(np.complex64), np.dtype(np.complex128))
-)
+_fix_sign = _complex_special.fixer("sign", _XP)
+
+
+@jax.jit
+def sign(x, /):
+    """jax's sign, with the Array API's special values: ``sign(0j)`` is ``0 + 0j`` (jax's is
+    NaN) and ``sign(-0.0)`` is ``+0.0`` as on the other backends (jax's is -0.0). Jitted as jax's
+    own is: the dtype tests happen at trace time, so a call costs what ``jax.numpy.sign``'s
+    does."""
+    out = jnp.sign(x)
+    if jnp.iscomplexobj(out):
+        return _fix_sign(x, out)
+    if jnp.issubdtype(out.dtype, jnp.floating):
+        return jnp.where(out == 0, jnp.zeros_like(out), out)
+    return out
