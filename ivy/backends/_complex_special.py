@@ -6,9 +6,11 @@ functions with formulas that are right for finite numbers but give NaN, or the w
 zero, on many of those inputs (jax's ``exp(-inf + inf j)`` is NaN, not ``0 + 0j``).
 
 :func:`fixer` gives, for one function and one backend, ``fix(z, out)``: the native result ``out``
-of a complex ``z`` with the special inputs' elements replaced by the standard's values. Finite
-nonzero inputs keep the native's values, and its gradients: the replacement is a ``where``
-whose other branch only ever sees finite, harmless operands. Everything is elementwise array
+of a complex ``z`` with the special inputs' elements replaced by the standard's values: a part
+infinite or NaN, ``z = +-0 +-0j`` (only where the native's value or a zero's sign differs), and
+the poles the standard lists (``log1p(-1 + 0j)``, ``atanh(+-1 + 0j)``). Other finite inputs keep
+the native's values, and its gradients: the replacement is a ``where`` whose other branch only
+ever sees finite, harmless operands. Everything is elementwise array
 code (no Python branching on values), so it traces under ``jax.jit`` and ``tf.function``.
 
 The backend calls the fixer only for complex results: numpy and jax through the check their
@@ -33,9 +35,7 @@ __all__ = ["FUNCTIONS", "NEEDS", "fixer", "namespace", "wrap", "wrapper_for"]
 _PI = math.pi
 _INF = math.inf
 _NAN = math.nan
-NEEDS = (
-    "where isnan isinf isfinite real imag abs copysign cos sin full_like complex".split()
-)
+NEEDS = "where isnan isinf isfinite real imag abs copysign cos sin full_like complex".split()
 
 
 def namespace(module: Any = None, /, **functions: Callable) -> types.SimpleNamespace:
@@ -97,7 +97,7 @@ class _Parts:
 
 # Each rule takes the parts of z in the upper half plane (b >= 0; for the odd functions also
 # a >= 0) and returns (re, im) for the elements with an infinite or NaN part. The other half
-# planes follow from the symmetry the standard states (``SYMMETRY``).
+# planes follow from the symmetry the standard states (the second entry of ``_RULES``).
 
 
 def _exp_like(p: _Parts, shift: float) -> tuple[Any, Any]:
