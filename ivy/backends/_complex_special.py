@@ -174,13 +174,14 @@ def _tanh(p: _Parts) -> tuple[Any, Any]:  # a >= 0, b >= 0
     return re, im
 
 
-def _log_like(p: _Parts) -> tuple[Any, Any]:
-    """log and log1p agree on every input with an infinite or NaN part."""
+def _angles(p: _Parts, at_zero_nan: bool = False) -> Any:
+    """The angle that log's imaginary part, acos' real part and acosh's imaginary part share on
+    inputs with an infinite or NaN part (with ``at_zero_nan``: pi/2 at +-0 + NaN j too)."""
     inf_b = p.inf_b
-    re = p.pick(_NAN, [(inf_b, _INF), (p.inf_a, _INF)])
-    im = p.pick(
+    return p.pick(
         _NAN,
-        [
+        [(p.zero_a & p.nan_b, _PI / 2 if at_zero_nan else _NAN)]
+        + [
             (p.fin_a & inf_b, _PI / 2),
             (p.ninf_a & p.fin_b, _PI),
             (p.pinf_a & p.fin_b, 0.0),
@@ -188,7 +189,11 @@ def _log_like(p: _Parts) -> tuple[Any, Any]:
             (p.pinf_a & inf_b, _PI / 4),
         ],
     )
-    return re, im
+
+
+def _log_like(p: _Parts) -> tuple[Any, Any]:
+    """log and log1p agree on every input with an infinite or NaN part."""
+    return p.pick(_NAN, [(p.inf_b, _INF), (p.inf_a, _INF)]), _angles(p)
 
 
 def _sqrt(p: _Parts) -> tuple[Any, Any]:
@@ -199,37 +204,12 @@ def _sqrt(p: _Parts) -> tuple[Any, Any]:
 
 
 def _acos(p: _Parts) -> tuple[Any, Any]:
-    inf_b = p.inf_b
-    re = p.pick(
-        _NAN,
-        [
-            (p.zero_a & p.nan_b, _PI / 2),
-            (p.fin_a & inf_b, _PI / 2),
-            (p.ninf_a & p.fin_b, _PI),
-            (p.pinf_a & p.fin_b, 0.0),
-            (p.ninf_a & inf_b, 3 * _PI / 4),
-            (p.pinf_a & inf_b, _PI / 4),
-        ],
-    )
-    im = p.pick(_NAN, [(inf_b, -_INF), (p.inf_a & p.fin_b, -_INF), (p.inf_a, _INF)])
-    return re, im
+    im = p.pick(_NAN, [(p.inf_b, -_INF), (p.inf_a & p.fin_b, -_INF), (p.inf_a, _INF)])
+    return _angles(p, at_zero_nan=True), im
 
 
 def _acosh(p: _Parts) -> tuple[Any, Any]:
-    inf_b = p.inf_b
-    re = p.pick(_NAN, [(inf_b, _INF), (p.inf_a, _INF)])
-    im = p.pick(
-        _NAN,
-        [
-            (p.zero_a & p.nan_b, _PI / 2),
-            (p.fin_a & inf_b, _PI / 2),
-            (p.ninf_a & p.fin_b, _PI),
-            (p.pinf_a & p.fin_b, 0.0),
-            (p.ninf_a & inf_b, 3 * _PI / 4),
-            (p.pinf_a & inf_b, _PI / 4),
-        ],
-    )
-    return re, im
+    return p.pick(_NAN, [(p.inf_b, _INF), (p.inf_a, _INF)]), _angles(p, at_zero_nan=True)
 
 
 def _asinh(p: _Parts) -> tuple[Any, Any]:  # a >= 0, b >= 0
