@@ -300,3 +300,11 @@ def test_gradients_of_finite_inputs_are_the_natives(diff_backend, name):
     np.testing.assert_allclose(ours[0], own[0], rtol=1e-14, atol=0)
     for got, want in zip(ours[1], own[1]):
         np.testing.assert_allclose(got, want, rtol=1e-14, atol=1e-15)
+
+
+def test_sign_of_a_real_zero_is_positive_zero(backend):
+    """The standard's sign(+-0) is 0, read as +0 by the suite; jax's own gives -0.0 for -0.0."""
+    for fn in api(backend, "sign"):
+        got = _native_numpy(fn(native(np.array([-0.0, 0.0, -2.0], np.float32), backend)))
+        np.testing.assert_array_equal(got, [0.0, 0.0, -1.0])
+        assert not np.signbit(got[:2]).any()
