@@ -459,9 +459,9 @@ def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):
     return tf.where(tf.math.is_inf(x), tf.where(x > 0, big, small), x)
 
 
-# tf's complex expm1, log1p, sqrt and tanh miss some of the Array API's special values (expm1(inf + 0j),
-# log1p(inf + NaN j), sqrt(0 - 0j), tanh(inf + bj) = 1 - 0j...): tf's own, with those put back for complex
-# results (ivy/backends/_complex_special.py).
+# tf's complex expm1, log1p, sqrt and tanh miss some of the Array API's special values
+# (expm1(inf + 0j), log1p(inf + NaN j), sqrt(0 - 0j), tanh(inf + bj) = 1 - 0j...): tf's own, with
+# those put back for complex results (ivy/backends/_complex_special.py).
 def _fill_like(x, value):
     return tf.fill(tf.shape(x), tf.constant(value, x.dtype))
 

@@ -25,8 +25,8 @@ from ivy.backends.torch._unsigned import WIDE_UNSIGNED, unsigned_safe
 from ivy.backends.torch.creation import asarray
 from ivy.core import _dtype_rules as rules
 
-# torch's complex acos, expm1, log1p and tanh miss some of the Array API's special values (acos(0j),
-# expm1(inf + 0j)...): torch's own, with those put back for complex results.
+# torch's complex acos, expm1, log1p and tanh miss some of the Array API's special values
+# (acos(0j), expm1(inf + 0j)...): torch's own, with those put back for complex results.
 _standard_complex = wrapper_for(namespace(torch), (torch.complex64, torch.complex128))
 acos = _standard_complex(torch.acos, "acos")
 acosh = torch.acosh
