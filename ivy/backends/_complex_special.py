@@ -290,7 +290,8 @@ def _atanh_poles(xp, a, b):  # atanh(+-1 +- 0j) = +-inf +- 0j
 
 # name: (rule for inputs with an infinite or NaN part, symmetry, value at z = +-0 +-0j).
 # At zero the native's result is replaced only where it differs (its value or a zero's sign),
-# so that where it is right its gradient there stays. Symmetry: "conj" f(conj z) = conj f(z); "odd" also f(-z) = -f(z); "even" also f(-z) = f(z).
+# so that where it is right its gradient there stays. Symmetry: "conj" f(conj z) = conj f(z);
+# "odd" also f(-z) = -f(z); "even" also f(-z) = f(z); "sign" none (only NaN parts are special).
 _RULES: dict[str, tuple[Callable, str, Callable]] = {
     "exp": (_exp, "conj", _exp_zero),
     "expm1": (_expm1, "conj", _plus_zero_real),
