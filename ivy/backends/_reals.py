@@ -25,6 +25,7 @@ _INEXACT = "fc"  # numpy dtype kinds: floating, complex
 _PYTHON_SCALARS = frozenset({bool, int, float, complex})
 # The result dtypes that integer or boolean inputs can produce (float32 ones cannot).
 _F16, _F64, _C128 = np.dtype(np.float16), np.dtype(np.float64), np.dtype(np.complex128)
+_C64 = np.dtype(np.complex64)
 
 
 def _suspect(out) -> bool:
@@ -41,8 +42,12 @@ def _kind(x):
     return None if type(x) in _PYTHON_SCALARS else getattr(getattr(x, "dtype", None), "kind", None)
 
 
-def unary(native: Callable, name: str) -> Callable:
-    """``native(x)`` with an integer or boolean ``x`` converted to float32 first."""
+def unary(native: Callable, name: str, complex_fix: Callable | None = None) -> Callable:
+    """``native(x)`` with an integer or boolean ``x`` converted to float32 first; with
+    ``complex_fix``, a complex result ``out`` of ``x`` is ``complex_fix(x, out)`` (the standard's
+    special values, ``ivy/backends/_complex_special.py``)."""
+    if complex_fix is not None:
+        return _unary_fixing_complex(native, name, complex_fix)
 
     def fn(x, /):
         out = native(x)
@@ -52,6 +57,24 @@ def unary(native: Callable, name: str) -> Callable:
         kind = _kind(x)
         return out if kind is None or kind in _INEXACT else native(_float32(x))
 
+    return _named(fn, name, "inputs")
+
+
+def _unary_fixing_complex(native: Callable, name: str, fix: Callable) -> Callable:
+    """:func:`unary` whose complex results go through ``fix``: a real result pays one more
+    identity test of its dtype than :func:`unary`'s."""
+
+    def fn(x, /):
+        out = native(x)
+        dtype = out.dtype
+        if dtype is not _F64 and dtype is not _F16 and dtype is not _C128 and dtype is not _C64:
+            return out
+        if dtype is _C64 or dtype is _C128:
+            return fix(x, out)
+        kind = _kind(x)
+        return out if kind is None or kind in _INEXACT else native(_float32(x))
+
+    fn.__ivy_complex_native__ = native
     return _named(fn, name, "inputs")
 
 

@@ -20,6 +20,7 @@ import math
 import tensorflow as tf
 
 from ivy.backends._clip_args import clip_bounds
+from ivy.backends._complex_special import namespace, wrapper_for
 from ivy.backends.tensorflow._helpers import (
     FAST_TYPES,
     REFUSED,
@@ -41,18 +42,14 @@ conj = tf.math.conj
 cos = tf.math.cos
 cosh = tf.math.cosh
 exp = tf.math.exp
-expm1 = tf.math.expm1
 imag = tf.math.imag
 log = tf.math.log
-log1p = tf.math.log1p
 positive = tf.identity
 real = tf.math.real
 sin = tf.math.sin
 sinh = tf.math.sinh
-sqrt = tf.math.sqrt
 square = tf.math.square
 tan = tf.math.tan
-tanh = tf.math.tanh
 
 
 def round(x, /):  # noqa: A001 - the Array API name
@@ -463,3 +460,33 @@ def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):
     small = value(dt.min if neginf is None else neginf)
     x = tf.where(tf.math.is_nan(x), value(nan), x)
     return tf.where(tf.math.is_inf(x), tf.where(x > 0, big, small), x)
+
+
+# tf's complex expm1, log1p, sqrt and tanh miss some of the Array API's special values
+# (expm1(inf + 0j), log1p(inf + NaN j), sqrt(0 - 0j), tanh(inf + bj) = 1 - 0j...): tf's own, with
+# those put back for complex results (ivy/backends/_complex_special.py).
+def _fill_like(x, value):
+    return tf.fill(tf.shape(x), tf.constant(value, x.dtype))
+
+
+_standard_complex = wrapper_for(
+    namespace(
+        where=tf.where,
+        isnan=tf.math.is_nan,
+        isinf=tf.math.is_inf,
+        isfinite=tf.math.is_finite,
+        real=tf.math.real,
+        imag=tf.math.imag,
+        abs=tf.math.abs,
+        copysign=copysign,
+        cos=tf.math.cos,
+        sin=tf.math.sin,
+        full_like=_fill_like,
+        complex=tf.complex,
+    ),
+    (tf.complex64, tf.complex128),
+)
+expm1 = _standard_complex(tf.math.expm1, "expm1")
+log1p = _standard_complex(tf.math.log1p, "log1p")
+sqrt = _standard_complex(tf.math.sqrt, "sqrt")
+tanh = _standard_complex(tf.math.tanh, "tanh")

@@ -14,6 +14,7 @@ import numpy as np
 import torch
 
 from ivy.backends._clip_args import clip_bounds
+from ivy.backends._complex_special import namespace, wrapper_for
 from ivy.backends.torch._helpers import (
     NATIVE_DTYPES,
     as_inexact,
@@ -24,7 +25,10 @@ from ivy.backends.torch._unsigned import WIDE_UNSIGNED, unsigned_safe
 from ivy.backends.torch.creation import asarray
 from ivy.core import _dtype_rules as rules
 
-acos = torch.acos
+# torch's complex acos, expm1, log1p and tanh miss some of the Array API's special values
+# (acos(0j), expm1(inf + 0j)...): torch's own, with those put back for complex results.
+_standard_complex = wrapper_for(namespace(torch), (torch.complex64, torch.complex128))
+acos = _standard_complex(torch.acos, "acos")
 acosh = torch.acosh
 asin = torch.asin
 asinh = torch.asinh
@@ -35,14 +39,14 @@ conj = torch.conj_physical  # a new tensor, not a lazily conjugated view
 cos = torch.cos
 cosh = torch.cosh
 exp = torch.exp
-expm1 = torch.expm1
+expm1 = _standard_complex(torch.expm1, "expm1")
 floor = torch.floor
 isfinite = torch.isfinite
 isinf = torch.isinf
 isnan = torch.isnan
 log = torch.log
 log10 = torch.log10
-log1p = torch.log1p
+log1p = _standard_complex(torch.log1p, "log1p")
 log2 = torch.log2
 positive = torch.positive
 reciprocal = torch.reciprocal
@@ -60,7 +64,7 @@ sin = torch.sin
 sinh = torch.sinh
 sqrt = torch.sqrt
 tan = torch.tan
-tanh = torch.tanh
+tanh = _standard_complex(torch.tanh, "tanh")
 trunc = torch.trunc
 
 # What torch refuses for uint16, uint32 and uint64 is computed through int64 (``_unsigned.py``).

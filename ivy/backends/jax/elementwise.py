@@ -1,0 +1,52 @@
+"""jax backend: elementwise functions that differ from the shared layer's.
+
+jax's complex functions give NaN, or the wrong sign of a zero, for many inputs with an infinite
+or NaN part (``exp(-inf + inf j)`` is NaN, not ``0 + 0j``; ``sign(0j)`` is NaN): these are jax's
+own functions with the Array API's special values put back for complex results
+(``ivy/backends/_complex_special.py``). Real inputs take the path of every function of real
+numbers (``ivy/backends/_reals.py``), with one dtype test more.
+"""
+
+from __future__ import annotations
+
+import jax
+import jax.numpy as jnp
+
+from ivy.backends import _complex_special, _reals
+
+_XP = _complex_special.namespace(jnp, complex=jax.lax.complex)
+
+
+def _fixed(name: str):
+    # jitted: eager, its hundred small operations would each compile for every new shape
+    fix = jax.jit(_complex_special.fixer(name, _XP))
+    return _reals.unary(getattr(jnp, name), name, fix)
+
+
+acos = _fixed("acos")
+acosh = _fixed("acosh")
+asinh = _fixed("asinh")
+atanh = _fixed("atanh")
+cosh = _fixed("cosh")
+exp = _fixed("exp")
+expm1 = _fixed("expm1")
+log = _fixed("log")
+log1p = _fixed("log1p")
+sinh = _fixed("sinh")
+sqrt = _fixed("sqrt")
+tanh = _fixed("tanh")
+_fix_sign = _complex_special.fixer("sign", _XP)
+
+
+@jax.jit
+def sign(x, /):
+    """jax's sign, with the Array API's special values: ``sign(0j)`` is ``0 + 0j`` (jax's is
+    NaN) and ``sign(-0.0)`` is ``+0.0`` as on the other backends (jax's is -0.0). Jitted as jax's
+    own is: the dtype tests happen at trace time, so a call costs what ``jax.numpy.sign``'s
+    does."""
+    out = jnp.sign(x)
+    if jnp.iscomplexobj(out):
+        return _fix_sign(x, out)
+    if jnp.issubdtype(out.dtype, jnp.floating):
+        return jnp.where(out == 0, jnp.zeros_like(out), out)
+    return out

@@ -1,0 +1,32 @@
+"""numpy backend: elementwise functions that differ from the shared layer's.
+
+numpy's ``expm1`` of complex numbers misses the Array API's special values (``expm1(0j)``,
+``expm1(inf + 0j)``...), and its ``tanh(inf + bj)`` gives ``1 - 0j`` for some positive ``b``
+where the standard says ``1 + 0j``: the two are numpy's own with those values put back for
+complex results (``ivy/backends/_complex_special.py``). Every other function stays numpy's.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ivy.backends import _complex_special, _reals
+
+
+def _complex(re, im):
+    """A complex array of parts ``re`` and ``im`` (``re + 1j * im`` makes ``0 * inf`` NaN)."""
+    re, im = np.broadcast_arrays(re, im)
+    out = np.empty(re.shape, np.result_type(re.dtype, np.complex64))
+    out.real, out.imag = re, im
+    return out if out.ndim else out[()]
+
+
+_XP = _complex_special.namespace(np, complex=_complex)
+
+
+def _fixed(name: str):
+    return _reals.unary(getattr(np, name), name, _complex_special.fixer(name, _XP))
+
+
+expm1 = _fixed("expm1")
+tanh = _fixed("tanh")
