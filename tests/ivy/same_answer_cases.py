@@ -297,6 +297,9 @@ def _elementwise_extra() -> None:
         C(a([], "float64")),
     ]
     CASES["clip"] = clip
+    # half precision computed as in float32 (jax's own rounds the quotient: 2496, not 2498)
+    halves = a([[2.5], [-2.5], [100.0]], "float16"), a([[0.001, 0.003, 0.5]], "float16")
+    CASES["floor_divide"] = CASES["floor_divide"] + [C(*halves)]
     CASES["nan_to_num"] = _unary_cases() + [C(NAN_TIES, nan=-1.0, posinf=9.0, neginf=-9.0)]
 
 

@@ -50,3 +50,19 @@ def sign(x, /):
     if jnp.issubdtype(out.dtype, jnp.floating):
         return jnp.where(out == 0, jnp.zeros_like(out), out)
     return out
+
+
+_HALF = (jnp.float16, jnp.bfloat16)
+
+
+def _floor_divide(x1, x2, /):
+    """jax's, with half-precision floats computed in float32 as numpy and torch do (jax's own
+    float16 result rounds the quotient: 2.5 // 0.001 is 2496 there, 2498 elsewhere)."""
+    out = jnp.floor_divide(x1, x2)
+    if out.dtype in _HALF:
+        wide = jnp.floor_divide(jnp.asarray(x1, jnp.float32), jnp.asarray(x2, jnp.float32))
+        return wide.astype(out.dtype)
+    return out
+
+
+floor_divide = _reals.scalar_operands(_floor_divide, "floor_divide")

@@ -163,7 +163,22 @@ def _inexact(*dtypes) -> bool:
 
 
 pow = _binary(torch.pow, "pow", "arith")
-floor_divide = _binary(torch.floor_divide, "floor_divide", "divide")
+_HALF = (torch.float16, torch.bfloat16)
+
+
+def _floor_divide(x1, x2, /):
+    """torch's, with half-precision floats computed in float32 as numpy does (torch's own
+    float16 result rounds the quotient: -2.5 // 0.003 is -835 there, -834 in numpy)."""
+    out = torch.floor_divide(x1, x2)
+    if out.dtype in _HALF:
+        wide = torch.floor_divide(
+            *(v.float() if isinstance(v, torch.Tensor) else v for v in (x1, x2))
+        )
+        return wide.to(out.dtype)
+    return out
+
+
+floor_divide = _binary(_floor_divide, "floor_divide", "divide")
 remainder = _binary(torch.remainder, "remainder", "divide")
 bitwise_and = _binary(torch.bitwise_and, "bitwise_and", "arith")
 bitwise_or = _binary(torch.bitwise_or, "bitwise_or", "arith")
