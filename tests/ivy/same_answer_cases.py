@@ -355,6 +355,7 @@ def _creation() -> None:
         C(1, 2, 2, dtype="float64"),
     ]
     CASES["eye"] = [C(3), C(2, 4, k=1), C(3, 2, k=-1, dtype="int32"), C(0), C(2, k=5)]
+    CASES["eye"] += [C(0, k=2**63), C(3, 4, k=-(2**63)), C(3, 4, k=10**20)]  # far diagonals
     for name in ("zeros_like", "ones_like"):
         CASES[name] = [
             C(F32),

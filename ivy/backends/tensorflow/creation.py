@@ -103,6 +103,7 @@ def eye(n_rows, n_cols=None, /, *, k=0, dtype=None, device=None):
     with placed(device):
         if k == 0:
             return tf.eye(n_rows, n_cols, dtype=dt)
+        k = max(-n_rows, min(k, n_cols))  # (beyond the matrix every diagonal is empty)
         rows = tf.range(n_rows, dtype=tf.int64)[:, None]
         return tf.cast(tf.equal(rows + k, tf.range(n_cols, dtype=tf.int64)), dt)
 

@@ -138,6 +138,7 @@ def eye(n_rows, n_cols=None, /, *, k=0, dtype=None, device=None):
     n_cols = n_rows if n_cols is None else n_cols
     if k == 0 and dtype not in WIDE_UNSIGNED:
         return torch.eye(n_rows, n_cols, dtype=dtype, device=device)
+    k = max(-n_rows, min(k, n_cols))  # (beyond the matrix every diagonal is empty)
     rows = torch.arange(n_rows, device=device)[:, None]
     return (torch.arange(n_cols, device=device) - rows == k).to(dtype)
 
