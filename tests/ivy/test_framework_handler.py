@@ -153,11 +153,8 @@ def test_type_cache_is_filled_once():
     assert fh._by_type_id[id(np.ndarray)] is ivy.numpy
 
 
-def test_types_seen_later_do_not_recompile_torch_compiled_inference(request):
-    """torch.compile guards on what the traced Python read: inference (``get_framework``, as
-    the applied libraries call it) reads its tables by a type's id, so a compiled function
-    depends on its own input types only, not on every type that ivy meets later (it used to
-    recompile on each new array type: a guard on the length of the type table)."""
+def _torch_compile_counting(request, fn):
+    """``fn`` under torch.compile (fullgraph), and the list of graphs it has compiled so far."""
     if "torch" not in request.config.ivy_backends:
         pytest.skip("torch is not among the tested backends")
     import torch
@@ -168,11 +165,22 @@ def test_types_seen_later_do_not_recompile_torch_compiled_inference(request):
         graphs.append(graph_module)
         return graph_module.forward
 
+    return torch.compile(fn, backend=counting_backend, fullgraph=True), graphs
+
+
+def test_types_seen_later_do_not_recompile_torch_compiled_inference(request):
+    """torch.compile guards on what the traced Python read: inference (``get_framework``, as
+    the applied libraries call it) reads its tables by a type's id, so a compiled function
+    depends on its own input types only, not on every type that ivy meets later (it used to
+    recompile on each new array type: a guard on the length of the type table)."""
+
     def fn(v, x):
         xp = ivy.get_framework(v, x)
         return xp.sum(xp.multiply(xp.sin(x), v["w"][0]), axis=0)
 
-    compiled = torch.compile(fn, backend=counting_backend, fullgraph=True)
+    compiled, graphs = _torch_compile_counting(request, fn)
+    import torch
+
     x, w = torch.ones(3, 2, dtype=torch.float64), torch.full((2,), 0.5, dtype=torch.float64)
     ivy.get_framework(x), ivy.get_framework(np.ones(1))  # loaded outside the compiled function
     compiled({"w": [w]}, x)
@@ -196,22 +204,15 @@ def test_dispatchers_under_torch_compile_do_not_recompile_for_numpy_or_parameter
     would cost every inferred call), so torch.compile guards on its size. Each backend registers
     its array types, and numpy's, when it loads: a numpy array or a Parameter met after
     compiling adds nothing to the table and compiles nothing again."""
-    if "torch" not in request.config.ivy_backends:
-        pytest.skip("torch is not among the tested backends")
-    import torch
-
-    graphs = []
-
-    def counting_backend(graph_module, example_inputs):
-        graphs.append(graph_module)
-        return graph_module.forward
 
     def fn(x, y):
         return ivy.multiply(ivy.sin(ivy.add(x, y)), 2.0)
 
+    compiled, graphs = _torch_compile_counting(request, fn)
+    import torch
+
     x, y = torch.ones(3, dtype=torch.float64), torch.full((3,), 0.5, dtype=torch.float64)
     fn(x, y)  # the backend loaded outside the compiled function
-    compiled = torch.compile(fn, backend=counting_backend, fullgraph=True)
     compiled(x, y)
     assert len(graphs) == 1
     size = len(fh._by_type)
