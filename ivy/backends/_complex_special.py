@@ -30,7 +30,7 @@ import types
 from collections.abc import Callable
 from typing import Any
 
-__all__ = ["FUNCTIONS", "NEEDS", "fixer", "namespace", "wrap", "wrapper_for"]
+__all__ = ["FUNCTIONS", "NEEDS", "fixer", "namespace", "wrap"]
 
 _PI = math.pi
 _INF = math.inf
@@ -51,15 +51,6 @@ def namespace(module: Any = None, /, **functions: Callable) -> types.SimpleNames
     if missing:
         raise TypeError(f"complex special values need {missing} from the backend")
     return types.SimpleNamespace(**found)
-
-
-def wrapper_for(xp: Any, complex_dtypes: tuple[Any, Any]) -> Callable[[Callable, str], Callable]:
-    """``wrapper(native, name)``: :func:`wrap` with a backend's namespace and complex dtypes."""
-
-    def wrapper(native: Callable, name: str) -> Callable:
-        return wrap(native, name, xp, complex_dtypes)
-
-    return wrapper
 
 
 class _Parts:
@@ -380,7 +371,7 @@ def wrap(native: Callable, name: str, xp: Any, complex_dtypes: tuple[Any, Any]) 
         complex_dtypes: the framework's complex64 and complex128 dtype objects.
 
     Returns:
-        The wrapped function, carrying ``native`` as ``__ivy_complex_native__``.
+        The wrapped function.
     """
     fix = fixer(name, xp)
     c64, c128 = complex_dtypes
@@ -394,5 +385,4 @@ def wrap(native: Callable, name: str, xp: Any, complex_dtypes: tuple[Any, Any]) 
 
     fn.__name__ = fn.__qualname__ = name
     fn.__doc__ = f"{name}, with the Array API's special values for complex input."
-    fn.__ivy_complex_native__ = native
     return fn

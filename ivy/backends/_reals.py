@@ -74,7 +74,6 @@ def _unary_fixing_complex(native: Callable, name: str, fix: Callable) -> Callabl
         kind = _kind(x)
         return out if kind is None or kind in _INEXACT else native(_float32(x))
 
-    fn.__ivy_complex_native__ = native
     return _named(fn, name, "inputs")
 
 

@@ -15,12 +15,13 @@ are read from the bits, so -0.0 and negative NaNs count as negative.
 
 from __future__ import annotations
 
+import functools
 import math
 
 import tensorflow as tf
 
 from ivy.backends._clip_args import clip_bounds
-from ivy.backends._complex_special import namespace, wrapper_for
+from ivy.backends._complex_special import namespace, wrap
 from ivy.backends.tensorflow._helpers import (
     FAST_TYPES,
     REFUSED,
@@ -469,8 +470,9 @@ def _fill_like(x, value):
     return tf.fill(tf.shape(x), tf.constant(value, x.dtype))
 
 
-_standard_complex = wrapper_for(
-    namespace(
+_standard_complex = functools.partial(
+    wrap,
+    xp=namespace(
         where=tf.where,
         isnan=tf.math.is_nan,
         isinf=tf.math.is_inf,
@@ -484,7 +486,7 @@ _standard_complex = wrapper_for(
         full_like=_fill_like,
         complex=tf.complex,
     ),
-    (tf.complex64, tf.complex128),
+    complex_dtypes=(tf.complex64, tf.complex128),
 )
 expm1 = _standard_complex(tf.math.expm1, "expm1")
 log1p = _standard_complex(tf.math.log1p, "log1p")

@@ -8,13 +8,14 @@ operand work where torch rejects it (``torch.maximum(x, 2.0)`` fails).
 
 from __future__ import annotations
 
+import functools
 import operator
 
 import numpy as np
 import torch
 
 from ivy.backends._clip_args import clip_bounds
-from ivy.backends._complex_special import namespace, wrapper_for
+from ivy.backends._complex_special import namespace, wrap
 from ivy.backends.torch._helpers import (
     NATIVE_DTYPES,
     as_inexact,
@@ -27,7 +28,9 @@ from ivy.core import _dtype_rules as rules
 
 # torch's complex acos, expm1, log1p and tanh miss some of the Array API's special values
 # (acos(0j), expm1(inf + 0j)...): torch's own, with those put back for complex results.
-_standard_complex = wrapper_for(namespace(torch), (torch.complex64, torch.complex128))
+_standard_complex = functools.partial(
+    wrap, xp=namespace(torch), complex_dtypes=(torch.complex64, torch.complex128)
+)
 acos = _standard_complex(torch.acos, "acos")
 acosh = torch.acosh
 asin = torch.asin
