@@ -6,6 +6,7 @@ import sys
 
 from ivy.backends._assemble import assemble
 from ivy.backends.tensorflow import _helpers
+from ivy.backends.tensorflow._array_object import add_array_methods
 from ivy.backends.tensorflow._helpers import NATIVE_DTYPES, REALS, devices
 
 assemble(
@@ -16,4 +17,10 @@ assemble(
     reals=REALS,
     devices=devices,
     array_types=_helpers.ARRAY_TYPES,
+    # (tf converts Python scalars itself, but caches them by value: -0.0 could come back as 0.0,
+    # and ints out of a dtype's range would wrap; the shims convert them, see ``_helpers.fast``)
+    scalars_need_shims=True,
 )
+
+# tf.Tensor as the standard's array object: the attributes it lacks (``_array_object.py``).
+add_array_methods(sys.modules[__name__])

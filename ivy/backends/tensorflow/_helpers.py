@@ -19,13 +19,13 @@ NATIVE_DTYPES = {name: tf.as_dtype(name) for name in DTYPE_NAMES}
 
 TENSOR_TYPES = (tf.Tensor, tf.Variable)
 
-# Types that tf's own binary functions convert correctly next to a tensor. Python ints are safe
-# only while small (tf wraps an out-of-range int silently: int8 * 300); numpy objects are not safe
-# (tf casts them to the tensor's dtype silently: int64 * np.float64(2.5)). Tensor types are added
-# as they are met.
+# Types that tf's own binary functions convert correctly next to a tensor (see :func:`fast` for
+# Python ints and floats, which are safe only for some values); numpy objects are not safe (tf
+# casts them to the tensor's dtype silently: int64 * np.float64(2.5)). Tensor types are added as
+# they are met.
 with tf.init_scope():  # eager even when the backend is first loaded inside a tf.function
     EAGER_TENSOR = type(tf.constant(0.0))
-FAST_TYPES = {EAGER_TENSOR, float, bool}
+FAST_TYPES = {EAGER_TENSOR, bool}
 ARRAY_TYPES = (EAGER_TENSOR,)  # registered for inference when the backend loads
 
 # Errors by which tf's functions refuse inputs (other dtypes, or a dtype without a kernel), eager
@@ -119,8 +119,12 @@ def result_type(*values) -> tf.DType:
 
 
 def fast(value) -> bool:
-    """True when tf's own functions convert ``value`` correctly next to a tensor."""
-    return type(value) in FAST_TYPES or (type(value) is int and 0 <= value < 128)
+    """True when tf's own functions convert ``value`` correctly next to a tensor: tensors, bools,
+    ints while small (tf wraps an out-of-range int silently: int8 * 300) and floats but zeros.
+    tf caches the tensors it makes of Python scalars by value, and -0.0 == 0.0: whichever zero
+    was made first comes back for both (``x * -0.0`` was ``x * 0.0`` once tf had made a 0.0)."""
+    t = type(value)
+    return t in FAST_TYPES or (t is int and 0 <= value < 128) or (t is float and value != 0.0)
 
 
 def promote(*values) -> list:
@@ -156,6 +160,8 @@ def to_tensor(obj, dtype: tf.DType | None = None):
     if not isinstance(obj, (np.ndarray, np.generic)) and hasattr(obj, "__dlpack__"):
         obj = _from_other_framework(obj)
     if has_own_dtype(obj):
+        if isinstance(obj, np.generic):  # (as an array: tf caches scalars by value, -0.0 as 0.0)
+            obj = np.asarray(obj)
         x = tf.convert_to_tensor(obj)  # numpy data, or a list of tensors (packed)
         return x if dtype is None or x.dtype is dtype else tf.cast(x, dtype)
     if dtype is not None:

@@ -23,10 +23,10 @@ import tensorflow as tf
 from ivy.backends._clip_args import clip_bounds
 from ivy.backends._complex_special import namespace, wrap
 from ivy.backends.tensorflow._helpers import (
-    FAST_TYPES,
     REFUSED,
     TENSOR_TYPES,
     as_inexact,
+    fast,
     promote,
     tensor,
     tensor_of,
@@ -169,11 +169,9 @@ def _binary(native, name: str, fallback=promote, bools: bool = False):
     with ``bools``, booleans (which tf has no kernel for) compute exactly through int8."""
 
     def fn(x1, x2, /):
-        # Fast path: tensors, Python floats and bools, and ints that fit every dtype (but not
-        # two ints, which tf would make int32).
-        if (type(x1) in FAST_TYPES or (type(x1) is int and 0 <= x1 < 128)) and (
-            type(x2) in FAST_TYPES or (type(x2) is int and 0 <= x2 < 128 and type(x1) is not int)
-        ):
+        # Fast path: what tf converts as ivy would (``fast``), but not two ints, which tf would
+        # make int32.
+        if fast(x1) and fast(x2) and not (type(x1) is int and type(x2) is int):
             try:
                 return native(x1, x2)
             except REFUSED:

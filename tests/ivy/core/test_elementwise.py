@@ -39,6 +39,7 @@ from tests.helpers import (
     check,
     check_gradients,
     native,
+    numpy_of,
     reference,
 )
 from tests.ivy.strategies import (
@@ -721,3 +722,38 @@ def test_nan_to_num_gradients(diff_backend):
         return ivy.nan_to_num(x) * x
 
     check_gradients(diff_backend, fn, [np.random.default_rng(16).standard_normal((2, 3))])
+
+
+# ----------------------------------------------------------------------------------------------
+# Zeros given as Python or numpy scalars keep their sign
+# ----------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("met_first", [0.0, -0.0], ids=["+0 met first", "-0 met first"])
+def test_scalar_zeros_keep_their_sign(backend, met_first):
+    """Whichever zero the framework made first: tensorflow caches the tensors it makes of Python
+    scalars by value, and -0.0 == 0.0, so ``x * -0.0`` once computed ``x * 0.0``."""
+    zero = -met_first  # the other zero
+    a = np.array([1.0, 2.0], np.float32)
+    neg = -a
+    for fn in api(backend, "multiply") + api(backend, "add") + api(backend, "maximum"):
+        fn(ivy.asarray(a, f=backend), met_first)  # the framework meets ``met_first`` first
+    ivy.asarray(np.float64(met_first), f=backend)
+    ivy.asarray(np.complex128(complex(met_first, met_first)), f=backend)
+    x, m = ivy.asarray(a, f=backend), ivy.asarray(neg, f=backend)
+    for multiply, add, maximum, where in zip(
+        api(backend, "multiply"),
+        api(backend, "add"),
+        api(backend, "maximum"),
+        api(backend, "where"),
+    ):
+        product = multiply(x, zero)
+        check(product, a * zero, backend, signed_zeros=True)
+        check(add(zero, product), zero + a * zero, backend, signed_zeros=True)
+        check(maximum(m, zero), np.maximum(neg, np.float32(zero)), backend, signed_zeros=True)
+        yes = ivy.asarray(np.array([True, True]), f=backend)
+        check(where(yes, zero, x), np.where(True, np.float32(zero), a), backend, signed_zeros=True)
+    check(ivy.asarray(np.float64(zero), f=backend), np.float64(zero), backend, signed_zeros=True)
+    c = numpy_of(ivy.asarray(np.complex128(complex(zero, zero)), f=backend))
+    assert c.dtype == np.complex128
+    assert np.signbit(c.real) == np.signbit(c.imag) == np.signbit(zero)
