@@ -450,14 +450,18 @@ dispatch_globals["_infer"] = _infer
 
 def _mixed(ns: Any, objs: tuple, name: str) -> Any:
     """The namespace for a call whose array arguments are not all of one type: that of the
-    first when the others are Python scalars (``__ivy_scalars__``: the backend's functions that
-    promote Python scalars by ivy's rules), else inferred from all of them."""
+    first when the others are Python scalars, else inferred from all of them; its
+    ``__ivy_scalars__`` (the backend's functions that promote Python scalars by ivy's rules)
+    where a Python scalar is among them, on either side."""
     first = type(objs[0])
     for obj in objs[1:]:
         t = type(obj)
         if t is not first and t not in _PASSIVE:
-            return _infer(*objs, name=name)
-    return ns.__ivy_scalars__
+            ns = _infer(*objs, name=name)
+            break
+    else:
+        return ns.__ivy_scalars__
+    return ns.__ivy_scalars__ if any(type(obj) in _PASSIVE for obj in objs) else ns
 
 
 dispatch_globals["_mixed"] = _mixed

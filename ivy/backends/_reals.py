@@ -21,6 +21,8 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ivy.backends import _int_scalars
+
 _INEXACT = "fc"  # numpy dtype kinds: floating, complex
 _PYTHON_SCALARS = frozenset({bool, int, float, complex})
 # The result dtypes that integer or boolean inputs can produce (float32 ones cannot).
@@ -98,6 +100,8 @@ def binary(native: Callable, name: str) -> Callable:
     neither operand is floating, else to the floating operand's dtype."""
 
     def fn(x1, x2, /):
+        if type(x1) is int or type(x2) is int:  # beyond the array's dtype: as a float
+            x1, x2 = _int_scalars.operands(native, name, x1, x2)
         out = native(x1, x2)
         dtype = out.dtype  # inlined _suspect, as in unary
         if dtype is not _F64 and dtype is not _F16 and dtype is not _C128:
@@ -135,11 +139,16 @@ WRAPPERS = {"unary": unary, "binary": binary, "options": with_options}
 def scalar_operands(native: Callable, name: str) -> Callable:
     """``native(x1, x2)`` with a Python float (or complex) next to an integer or boolean array
     computed as ivy says: in float32 (complex64), the default dtype, where numpy and jax (with
-    64-bit types) give float64 (complex128). Two arrays are the native's business: the function
+    64-bit types) give float64 (complex128); a Python int beyond the array's dtype as
+    ``_int_scalars`` says (jax would wrap it around). Two arrays are the native's business: the function
     carries it as ``__ivy_native__``, which ivy's dispatchers call when no Python scalar is
     involved."""
 
     def fn(x1, x2, /):
+        if type(x1) is int or type(x2) is int:  # beyond the array's dtype?
+            x1, x2 = _int_scalars.operands(native, name, x1, x2)
+            if x2 is None:
+                return x1  # a comparison's answer
         out = native(x1, x2)
         if type(x1) not in _PYTHON_SCALARS and type(x2) not in _PYTHON_SCALARS:
             return out

@@ -122,6 +122,8 @@ def _infer_block(name: str, arrays: list[str], indent: str) -> str:
             "        ns = ns.__ivy_scalars__",
             "    else:",
             f"        ns = {slow}",
+            "        if t in _passive:",
+            "            ns = ns.__ivy_scalars__",
         ]
     elif rest:
         mismatch = " or ".join(f"type({p}) is not t" for p in rest)

@@ -14,19 +14,24 @@ from ivy.backends.array_api._unbound import backend_ns, xp
 NATIVE = {
     name: name
     for name in (
-        "abs acos acosh asin asinh atan atanh bitwise_and bitwise_invert "
-        "bitwise_left_shift bitwise_or bitwise_right_shift bitwise_xor ceil conj copysign cos "
-        "cosh divide equal exp expm1 floor greater greater_equal hypot imag isfinite "
-        "isinf isnan less less_equal log log10 log1p log2 logaddexp logical_and logical_not "
-        "logical_or logical_xor negative nextafter not_equal positive "
+        "abs acos acosh asin asinh atan atanh bitwise_invert ceil conj copysign cos "
+        "cosh divide exp expm1 floor hypot imag isfinite "
+        "isinf isnan log log10 log1p log2 logaddexp logical_and logical_not "
+        "logical_or logical_xor negative nextafter positive "
         "real round sign signbit sin sinh sqrt square tan tanh trunc"
     ).split()
 }
 # Natives that promote a Python float next to an integer array to float64 (numpy, and jax with
-# 64-bit types): wrapped so that it is float32, as ivy says (``_reals.scalar_operands``).
+# 64-bit types), or wrap a Python int beyond the array's dtype around (jax): wrapped so that the
+# float is float32 and the int answered as ``ivy/backends/_int_scalars.py`` says
+# (``_reals.scalar_operands``).
 SCALAR_OPERANDS = {
     name: name
-    for name in "add subtract multiply floor_divide remainder pow maximum minimum".split()
+    for name in (
+        "add subtract multiply floor_divide remainder pow maximum minimum "
+        "bitwise_and bitwise_or bitwise_xor bitwise_left_shift bitwise_right_shift "
+        "equal not_equal less less_equal greater greater_equal"
+    ).split()
 }
 
 

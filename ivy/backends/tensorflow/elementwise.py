@@ -20,6 +20,7 @@ import math
 
 import tensorflow as tf
 
+from ivy.backends import _int_scalars
 from ivy.backends._clip_args import clip_bounds
 from ivy.backends._complex_special import namespace, wrap
 from ivy.backends.tensorflow._helpers import (
@@ -176,6 +177,10 @@ def _binary(native, name: str, fallback=promote, bools: bool = False):
                 return native(x1, x2)
             except REFUSED:
                 pass
+        if type(x1) is int or type(x2) is int:  # beyond the tensor's dtype?
+            x1, x2 = _int_scalars.operands(native, name, x1, x2)
+            if x2 is None:
+                return x1
         args = fallback(x1, x2)
         if bools and args[0].dtype is tf.bool:
             out = native(*(tf.cast(v, tf.int8) for v in args))
@@ -421,6 +426,8 @@ def nextafter(x1, x2, /):
 def _real_operands(*values):
     """``values`` promoted to one dtype, floating: float32 unless one of them is floating
     (integers of two dtypes too: int64 with uint64 promotes to float64)."""
+    if len(values) == 2 and (type(values[0]) is int or type(values[1]) is int):
+        values = _int_scalars.operands(None, "divide", *values)  # beyond the dtype: a float
     tensors = promote(*values)
     if any(isinstance(v, (float, complex)) or _is_inexact(v) for v in values):
         return _floating(*tensors)

@@ -14,6 +14,7 @@ import operator
 import numpy as np
 import torch
 
+from ivy.backends import _int_scalars
 from ivy.backends._clip_args import clip_bounds
 from ivy.backends._complex_special import namespace, wrap
 from ivy.backends.torch._helpers import (
@@ -109,6 +110,10 @@ def _binary(native, name: str, kind: str):
             if x1.dtype is x2.dtype:
                 return native(x1, x2)
         except AttributeError:  # a Python scalar
+            if type(x1) is int or type(x2) is int:  # beyond the tensor's dtype?
+                x1, x2 = _int_scalars.operands(wide, name, x1, x2)
+                if x2 is None:
+                    return x1
             return wide(*with_tensor_operands(x1, x2)) if not _scalar_ok(x1, x2) else wide(x1, x2)
         except _REFUSED:
             return wide(x1, x2)
@@ -242,6 +247,8 @@ def _extremum(native, bound: str, name: str):
         if isinstance(x1, torch.Tensor) and isinstance(x2, torch.Tensor):
             return tensors(x1, x2)
         x, scalar = (x1, x2) if isinstance(x1, torch.Tensor) else (x2, x1)
+        if type(scalar) is int:
+            _int_scalars.operands(native, name, x1, x2)  # (raises beyond x's dtype)
         if x.dtype is torch.bool or x.dtype.is_complex or not isinstance(scalar, (int, float)):
             return tensors(*with_tensor_operands(x1, x2))
         if isinstance(scalar, float) and not (x.is_floating_point()):

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import operator
 
 import numpy as np
 import pytest
@@ -38,6 +39,7 @@ from tests.helpers import (
     cast,
     check,
     check_gradients,
+    dtype_name,
     native,
     numpy_of,
     reference,
@@ -757,3 +759,88 @@ def test_scalar_zeros_keep_their_sign(backend, met_first):
     c = numpy_of(ivy.asarray(np.complex128(complex(zero, zero)), f=backend))
     assert c.dtype == np.complex128
     assert np.signbit(c.real) == np.signbit(c.imag) == np.signbit(zero)
+
+
+# ----------------------------------------------------------------------------------------------
+# Python ints beyond the integer array's dtype (ivy/backends/_int_scalars.py), as numpy 2 answers
+# ----------------------------------------------------------------------------------------------
+
+_BEYOND = [("int8", 300), ("int8", -129), ("uint8", -1), ("int16", 40000), ("uint32", -5)]
+_RAISING = (
+    "add subtract multiply floor_divide remainder pow maximum minimum bitwise_and bitwise_or "
+    "bitwise_xor bitwise_left_shift bitwise_right_shift"
+).split()
+_COMPARING = {
+    "equal": operator.eq,
+    "not_equal": operator.ne,
+    "less": operator.lt,
+    "less_equal": operator.le,
+    "greater": operator.gt,
+    "greater_equal": operator.ge,
+}
+_REALS = {
+    "divide": np.divide,
+    "atan2": np.arctan2,
+    "copysign": np.copysign,
+    "hypot": np.hypot,
+    "logaddexp": np.logaddexp,
+}
+
+
+@pytest.mark.parametrize("dtype, value", _BEYOND)
+@pytest.mark.parametrize("left", [False, True], ids=["array op int", "int op array"])
+def test_python_ints_beyond_the_dtype(backend, dtype, value, left):
+    """Arithmetic raises OverflowError (torch, jax and tensorflow would wrap the int around:
+    int8 + 300 added 44); comparisons answer exactly; functions of real numbers take the int as
+    a float."""
+    a = np.array([1, 2, 5], dtype=dtype)
+    x = ivy.asarray(a, f=backend)
+
+    def call(fn):
+        return fn(value, x) if left else fn(x, value)
+
+    for name in _RAISING:
+        for fn in api(backend, name):
+            with pytest.raises(OverflowError):
+                call(fn)
+    for name, op in _COMPARING.items():
+        expected = np.array([op(value, int(v)) if left else op(int(v), value) for v in a])
+        for fn in api(backend, name):
+            check(call(fn), expected, backend)
+    for name, ref in _REALS.items():
+        wide = a.astype(np.float64)
+        expected = (ref(float(value), wide) if left else ref(wide, float(value))).astype("float32")
+        for fn in api(backend, name):
+            check(call(fn), expected, backend, rtol=1e-6)
+
+
+@pytest.mark.parametrize("dtype, value", [("int8", 127), ("int8", -128), ("uint8", 255)])
+def test_python_ints_at_the_dtypes_bounds_compute(backend, dtype, value):
+    a = np.array([0, 1], dtype=dtype)
+    for fn in api(backend, "add"):
+        check(
+            fn(ivy.asarray(a, f=backend), value),
+            (a.astype(np.int64) + value).astype(dtype),
+            backend,
+        )
+    for fn in api(backend, "less"):
+        check(fn(value, ivy.asarray(a, f=backend)), value < a.astype(np.int64), backend)
+
+
+@pytest.mark.parametrize("name", ["add", "multiply", "maximum", "divide"])
+def test_a_python_float_on_the_left_promotes_as_on_the_right(backend, name):
+    """``ivy.add(2.5, int8_array)`` is float32 as ``ivy.add(int8_array, 2.5)`` (on numpy the
+    left-hand float went to numpy's own function, which gives float64). array_api_strict
+    refuses a float next to an integer array on either side."""
+    a = np.array([1, 2], dtype="int8")
+    fn = getattr(ivy, name)
+    expected = getattr(np, name)(np.float32(2.5), a.astype(np.float32))
+    try:
+        right = fn(ivy.asarray(a, f=backend), 2.5)
+    except TypeError:
+        with pytest.raises(TypeError):
+            fn(2.5, ivy.asarray(a, f=backend))
+        return
+    assert dtype_name(right) == "float32"
+    check(fn(2.5, ivy.asarray(a, f=backend)), expected, backend)
+    check(fn(2.5, ivy.asarray(a, f=backend), f=backend), expected, backend)
