@@ -58,3 +58,26 @@ def check_squeezable(
             argument="axis",
             backend=backend,
         )
+
+
+def too_few_for_correction(
+    shape: Sequence[int | None], axis: int | Sequence[int] | None, correction: float
+) -> bool | None:
+    """True where ``var``/``std`` over ``axis`` of an array of ``shape`` has ``N - correction <= 0``
+    (N: the elements per result), whose result the standard says is NaN (numpy and torch give
+    inf, tensorflow a negative number); None where a size is unknown (inside ``tf.function``).
+    Axes out of range are left to the framework's own error."""
+    ndim = len(shape)
+    if axis is None:
+        sizes = list(shape)
+    else:
+        items = (axis,) if isinstance(axis, int) else tuple(axis)
+        if any(not -ndim <= a < ndim for a in items):
+            return False
+        sizes = [shape[a] for a in items]
+    if any(s is None for s in sizes):
+        return None
+    count = 1
+    for s in sizes:
+        count *= s
+    return count - correction <= 0

@@ -229,7 +229,9 @@ def _atanh(p: _Parts) -> tuple[Any, Any]:  # a >= 0, b >= 0
 
 
 def _sign(p: _Parts) -> tuple[Any, Any]:
-    return p.const(_NAN), p.const(_NAN)  # only inputs with a NaN part reach it (``_SPECIAL``)
+    # inputs with a NaN or an infinite part: z / |z| is NaN + NaN j by the standard's rules of
+    # complex division (infinite / infinite has no recovery case in C99 Annex G)
+    return p.const(_NAN), p.const(_NAN)
 
 
 # The value at z = +-0 +-0j, from (xp, a, b) there, built from constants and the parts
@@ -282,7 +284,7 @@ def _atanh_poles(xp, a, b):  # atanh(+-1 +- 0j) = +-inf +- 0j
 # name: (rule for inputs with an infinite or NaN part, symmetry, value at z = +-0 +-0j).
 # At zero the native's result is replaced only where it differs (its value or a zero's sign),
 # so that where it is right its gradient there stays. Symmetry: "conj" f(conj z) = conj f(z);
-# "odd" also f(-z) = -f(z); "even" also f(-z) = f(z); "sign" none (only NaN parts are special).
+# "odd" also f(-z) = -f(z); "even" also f(-z) = f(z); "sign" none.
 _RULES: dict[str, tuple[Callable, str, Callable]] = {
     "exp": (_exp, "conj", _exp_zero),
     "expm1": (_expm1, "conj", _plus_zero_real),
@@ -336,7 +338,7 @@ def fixer(name: str, xp: Any) -> Callable[[Any, Any], Any]:
         a, b = xp.real(z), xp.imag(z)
         neg_a, neg_b = _negative(xp, a), _negative(xp, b)
         if symmetry == "sign":
-            special = xp.isnan(a) | xp.isnan(b)
+            special = ~(xp.isfinite(a) & xp.isfinite(b))
             re, im = rule(_Parts(xp, a, b))
         else:
             odd_or_even = symmetry != "conj"

@@ -43,18 +43,18 @@ def gelu(x, /, approximate=False):
 def sigmoid(x, /):
     x = as_inexact(x)
     if _expit is not None:
-        return _expit(x)
+        return _like(_expit(x), x)  # (scipy's float16 expit is float64)
     z = np.exp(-np.abs(x))  # pragma: no cover
     return _like(np.where(x >= 0, 1 / (1 + z), z / (1 + z)), x)  # pragma: no cover
 
 
 def softmax(x, /, axis=-1):
     x = as_inexact(x)
-    e = np.exp(x - np.max(x, axis=axis, keepdims=True))
+    e = np.exp(x - np.max(x, axis=axis, keepdims=True, initial=-np.inf))  # (-inf: empty rows)
     return e / np.sum(e, axis=axis, keepdims=True)
 
 
 def log_softmax(x, /, axis=-1):
     x = as_inexact(x)
-    shifted = x - np.max(x, axis=axis, keepdims=True)
+    shifted = x - np.max(x, axis=axis, keepdims=True, initial=-np.inf)
     return shifted - np.log(np.sum(np.exp(shifted), axis=axis, keepdims=True))

@@ -3,7 +3,9 @@
 numpy's ``expm1`` of complex numbers misses the Array API's special values (``expm1(0j)``,
 ``expm1(inf + 0j)``...), and its ``tanh(inf + bj)`` gives ``1 - 0j`` for some positive ``b``
 where the standard says ``1 + 0j``: the two are numpy's own with those values put back for
-complex results (``ivy/backends/_complex_special.py``). Every other function stays numpy's.
+complex results (``ivy/backends/_complex_special.py``); so is its ``sign`` of a complex number
+with an infinite part (numpy gives the direction, ``sign(inf + 1j) = 1``; the standard's rules of
+complex division, and every other backend, NaN + NaN j). Every other function stays numpy's.
 """
 
 from __future__ import annotations
@@ -29,4 +31,5 @@ def _fixed(name: str):
 
 
 expm1 = _fixed("expm1")
+sign = _fixed("sign")
 tanh = _fixed("tanh")

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import tensorflow as tf
 
 from ivy.backends.tensorflow._helpers import (
@@ -80,7 +82,9 @@ def var(x, /, *, axis=None, correction=0.0, keepdims=False):
     if None in n:  # shapes unknown inside tf.function
         n = tf.size(x), tf.size(out)
     count = tf.cast(n[0], out.dtype) / tf.cast(n[1], out.dtype)  # elements per result
-    return out * count / (count - correction)
+    out = out * count / (count - correction)
+    # NaN where N - correction <= 0, as the standard says (the formula gives inf or below 0)
+    return tf.where(count - correction > 0, out, tf.constant(math.nan, out.dtype))
 
 
 def std(x, /, *, axis=None, correction=0.0, keepdims=False):

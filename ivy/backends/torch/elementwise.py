@@ -272,7 +272,11 @@ def sign(x, /):
         return (x != 0).to(x.dtype)
     if x.dtype is torch.bool:
         return x.clone()
-    return torch.sgn(x)  # complex: x / |x|, as numpy 2 and the Array API
+    return _complex_sign(x)  # complex: x / |x|, as numpy 2 and the Array API
+
+
+# (NaN + NaN j wherever a part is infinite or NaN: torch.sgn gives 0 + NaN j for some)
+_complex_sign = _standard_complex(torch.sgn, "sign")
 
 
 _clamp = unsigned_safe(torch.clamp, "clip", "order", (0, 1, 2))

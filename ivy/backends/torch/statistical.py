@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+import math
+
 import torch
 
+from ivy.backends._axes import too_few_for_correction
 from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
 from ivy.backends.torch._unsigned import WIDE_UNSIGNED, unsigned_safe, work_dtype
 
@@ -69,13 +72,21 @@ def max(x, /, *, axis=None, keepdims=False):
 
 
 def var(x, /, *, axis=None, correction=0.0, keepdims=False):
-    x, dim, keepdim = reduction_args(as_inexact(x), axis, keepdims)
-    return torch.var(x, dim=dim, correction=correction, keepdim=keepdim)
+    return _spread(torch.var, x, axis, correction, keepdims)
 
 
 def std(x, /, *, axis=None, correction=0.0, keepdims=False):
-    x, dim, keepdim = reduction_args(as_inexact(x), axis, keepdims)
-    return torch.std(x, dim=dim, correction=correction, keepdim=keepdim)
+    return _spread(torch.std, x, axis, correction, keepdims)
+
+
+def _spread(native, x, axis, correction, keepdims):
+    """torch's var or std; NaN where ``N - correction <= 0``, as the standard says (torch: inf)."""
+    x = as_inexact(x)
+    too_few = too_few_for_correction(x.shape, axis, correction)
+    x, dim, keepdim = reduction_args(x, axis, keepdims)
+    if too_few:  # (the shape of the result, without torch's warning)
+        return torch.full_like(native(x, dim=dim, correction=0, keepdim=keepdim), math.nan)
+    return native(x, dim=dim, correction=correction, keepdim=keepdim)
 
 
 def _cumulative(native, initial, x, axis, dtype, include_initial, name):

@@ -20,6 +20,7 @@ import numpy as np
 import pytest
 
 import ivy
+from tests.conftest import require
 from tests.helpers import (
     api,
     check,
@@ -83,6 +84,30 @@ def test_activation(backend, dtype, case):
     expected = reference(ref, x.astype(np.float64)).astype(dtype)
     for fn in api(backend, name):
         check(fn(native(x, backend), **kwargs), expected, backend)
+
+
+@pytest.mark.parametrize("case", sorted(REFERENCES))
+def test_activation_keeps_float16(backend, case):
+    """float16 in, float16 out (numpy's sigmoid and silu were float64: scipy's expit)."""
+    require(backend, "float16")
+    name = case.removesuffix("_alpha").removesuffix("_tanh").removesuffix("_axis0")
+    ref, kwargs = REFERENCES[case]
+    x = np.linspace(-6, 6, 12).reshape(3, 4).astype("float16")
+    expected = reference(ref, x.astype(np.float64)).astype("float16")
+    for fn in api(backend, name):
+        check(fn(native(x, backend), **kwargs), expected, backend, rtol=4e-3, atol=4e-3)
+
+
+@pytest.mark.parametrize("name", ["softmax", "log_softmax"])
+@pytest.mark.parametrize("shape, axis", [((0,), -1), ((2, 0), -1), ((0, 3), 0), ((0, 3), -1)])
+def test_softmax_of_an_empty_axis_is_empty(backend, name, shape, axis):
+    """(numpy raised: the max of an empty row)"""
+    for fn in api(backend, name):
+        check(
+            fn(native(np.zeros(shape, "float32"), backend), axis=axis),
+            np.zeros(shape, "float32"),
+            backend,
+        )
 
 
 @pytest.mark.parametrize(

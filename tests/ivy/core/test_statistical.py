@@ -470,3 +470,38 @@ def test_cumulative_needs_an_axis_beyond_one_dimension(backend, name):
     for fn in api(backend, name):
         with pytest.raises(ValueError):
             fn(native(np.ones((2, 2)), backend))
+
+
+def _spread_reference(a: np.ndarray, axis, correction: float, keepdims: bool, root: bool):
+    """var (or std) written from the standard: sum of squared deviations / (N - correction), NaN
+    where N - correction <= 0."""
+    a = a.astype(np.float64)
+    axes = tuple(range(a.ndim)) if axis is None else (axis if isinstance(axis, tuple) else (axis,))
+    n = int(np.prod([a.shape[i] for i in axes]))
+    squares = ((a - a.mean(axis=axes, keepdims=True)) ** 2).sum(axis=axes, keepdims=keepdims)
+    out = squares / (n - correction) if n - correction > 0 else np.full_like(squares, np.nan)
+    return np.sqrt(out) if root else out
+
+
+@pytest.mark.parametrize("name", ["var", "std"])
+@pytest.mark.parametrize(
+    "axis, correction, keepdims",
+    [
+        (None, 3, False),
+        (None, 4, False),
+        (None, 5.5, True),
+        (1, 2, False),
+        ((0, 1), 6, True),
+        (0, 1, False),
+    ],
+)
+def test_var_and_std_are_nan_where_too_few_elements_remain(
+    backend, name, axis, correction, keepdims
+):
+    """N - correction <= 0 gives NaN, as the standard says (numpy and torch gave inf,
+    tensorflow a negative variance)."""
+    a = np.array([[1.0, 2.0], [3.0, 5.0]], np.float32)
+    expected = _spread_reference(a, axis, correction, keepdims, root=name == "std")
+    for fn in api(backend, name):
+        out = fn(ivy.asarray(a, f=backend), axis=axis, correction=correction, keepdims=keepdims)
+        check(out, expected.astype(np.float32), backend)
