@@ -37,3 +37,31 @@ def check_fill_value(fill_value, dtype_name: str, backend: str) -> None:
             f"{fill_value} is out of bounds for {dtype_name} ({info.min} to {info.max}); use a "
             "wider dtype."
         )
+
+
+def beyond_int64(backend: str) -> OverflowError:
+    """The error of ``asarray`` given, without a dtype, Python ints beyond int64, the default
+    integer dtype: numpy would make them uint64 (or float64 beside negative ones, or objects),
+    torch and jax refuse them."""
+    return OverflowError(
+        f"ivy.asarray ({backend} backend), argument 'obj': a Python integer is beyond int64, the "
+        "default integer dtype. Give dtype='uint64' for values up to 2**64 - 1."
+    )
+
+
+def check_python_data(data, backend: str) -> None:
+    """Raise :func:`beyond_int64`'s error where numpy read Python data (no dtype of its own) as
+    ``data`` of uint64 or objects, which only Python ints beyond int64 give. (A list that mixes
+    such an int with smaller ones, ``[1, 2**63]``, numpy reads as float64: telling it from a
+    list of floats would cost a pass over every float list, and it is left as numpy reads it.)"""
+    if data.dtype.kind in "uO":
+        raise beyond_int64(backend)
+
+
+def has_int_beyond_int64(obj) -> bool:
+    """Whether the Python data ``obj`` (nested lists and tuples) holds an int beyond int64."""
+    if type(obj) is int:
+        return not -(2**63) <= obj < 2**63
+    if isinstance(obj, (list, tuple)):
+        return any(has_int_beyond_int64(v) for v in obj)
+    return False

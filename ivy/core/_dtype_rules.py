@@ -187,6 +187,12 @@ def result_type(names, scalars=()) -> str:
     return _DEFAULT_OF_KIND[top]
 
 
+def default_of(scalars) -> str:
+    """The dtype of Python ``scalars`` alone: the default dtype of the highest kind among them
+    (``where(c, 1.5, 2)`` is float32)."""
+    return _DEFAULT_OF_KIND[max(_scalar_kind(s) for s in scalars)]
+
+
 def can_cast(from_: str, to: str) -> bool:
     """True when promoting ``from_`` with ``to`` by the Array API's table gives ``to``: within a
     kind, or a real floating dtype to a complex one. Across kinds (``bool`` to ``int8``,

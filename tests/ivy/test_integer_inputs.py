@@ -144,3 +144,30 @@ def test_nextafter_of_integers_steps_in_float32(backend):
     expected = np.nextafter(a.astype(np.float32), b.astype(np.float32))
     for fn in api(backend, "nextafter"):
         check(fn(_native(a, backend), _native(b, backend)), expected, backend, rtol=0, atol=0)
+
+
+def test_boolean_products_are_any_of_the_ands(backend):
+    """numpy's (and jax's) products of booleans, on every backend: torch and tensorflow have no
+    boolean kernels, so ivy counts the true products and compares with 0."""
+    a = np.array([[True, False, False], [True, True, False], [False, False, False]])
+    v = np.array([True, False, True])
+
+    def any_of_ands(p, q):  # written out: p @ q over (or, and)
+        return np.array(
+            [
+                [any(p[i, k] and q[k, j] for k in range(p.shape[1])) for j in range(q.shape[1])]
+                for i in range(p.shape[0])
+            ]
+        )
+
+    x, y = _native(a, backend), _native(v, backend)
+    for fn in api(backend, "matmul"):
+        check(fn(x, x), any_of_ands(a, a), backend)
+        check(fn(x, y), any_of_ands(a, v[:, None])[:, 0], backend)
+    for fn in api(backend, "tensordot"):
+        check(fn(x, x, axes=1), any_of_ands(a, a), backend)
+    for fn in api(backend, "vecdot"):
+        check(fn(x, x), np.array([any(r & r) for r in a]), backend)
+    for fn in api(backend, "matrix_power"):
+        check(fn(x, 3), any_of_ands(any_of_ands(a, a), a), backend)
+        check(fn(x, 0), np.eye(3, dtype=bool), backend)

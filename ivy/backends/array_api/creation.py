@@ -3,7 +3,7 @@ Python values keep ivy's default dtypes (bool, int64, float32, complex64)."""
 
 from __future__ import annotations
 
-from ivy.backends._creation_args import linspace_dtype
+from ivy.backends._creation_args import beyond_int64, has_int_beyond_int64, linspace_dtype
 from ivy.backends._dlpack import exportable
 from ivy.backends.array_api._unbound import backend_name, native_device, native_dtype, xp
 
@@ -31,8 +31,15 @@ def asarray(obj, /, *, dtype=None, device=None, copy=None):
         return xp.asarray(obj, dtype=native_dtype(dtype), device=device, copy=copy)
     if not _has_own_dtype(obj) and hasattr(obj, "__dlpack__"):
         obj = xp.from_dlpack(obj)
-    x = xp.asarray(obj, device=device, copy=copy)
+    try:
+        x = xp.asarray(obj, device=device, copy=copy)
+    except (OverflowError, TypeError, ValueError):
+        if not _has_own_dtype(obj) and has_int_beyond_int64(obj):
+            raise beyond_int64(backend_name) from None
+        raise
     if not _has_own_dtype(obj):
+        if x.dtype == xp.uint64 and has_int_beyond_int64(obj):
+            raise beyond_int64(backend_name)  # (read as uint64, as numpy does)
         if x.dtype == xp.float64:
             return xp.astype(x, xp.float32)
         if x.dtype == xp.complex128:

@@ -6,7 +6,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ivy.backends._creation_args import check_fill_value, linspace_dtype
+from ivy.backends._creation_args import beyond_int64, check_fill_value, linspace_dtype
 from ivy.backends.jax._helpers import (
     check_x64_of,
     default_dtype_of_value,
@@ -36,7 +36,10 @@ def asarray(obj, /, *, dtype=None, device=None, copy=None):
             check_x64_of(obj)
         return jnp.asarray(obj, dtype=dtype, copy=copy, device=device)
     # Python values: float32 / complex64 / the default int, and not weakly typed.
-    x = jnp.asarray(obj, copy=copy, device=device)
+    try:
+        x = jnp.asarray(obj, copy=copy, device=device)
+    except OverflowError:  # ("Python int too large to convert to C long")
+        raise beyond_int64("jax") from None
     return jnp.asarray(x, dtype=_DOWNCAST.get(x.dtype, x.dtype))
 
 

@@ -20,10 +20,9 @@ def where(condition, x1, x2, /):
     64-bit types on."""
     if type(x1) in _PYTHON_SCALARS or type(x2) in _PYTHON_SCALARS:
         arrays = [rules.name_of(v.dtype) for v in (x1, x2) if hasattr(v, "dtype")]
-        if arrays:
-            scalars = [v for v in (x1, x2) if type(v) in _PYTHON_SCALARS]
-            dtype = rules.result_type(arrays, scalars)
-            x1, x2 = jnp.asarray(x1, dtype=dtype), jnp.asarray(x2, dtype=dtype)
+        scalars = [v for v in (x1, x2) if type(v) in _PYTHON_SCALARS]
+        dtype = rules.result_type(arrays, scalars) if arrays else rules.default_of(scalars)
+        x1, x2 = jnp.asarray(x1, dtype=dtype), jnp.asarray(x2, dtype=dtype)
     return jnp.where(condition, x1, x2)
 
 

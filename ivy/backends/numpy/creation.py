@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ivy.backends._creation_args import linspace_dtype
+from ivy.backends._creation_args import check_python_data, linspace_dtype
 from ivy.backends._dlpack import exportable
 from ivy.backends.numpy._helpers import (
     check_device,
@@ -23,8 +23,10 @@ def asarray(obj, /, *, dtype=None, device=None, copy=None):
     if dtype is not None:
         return np.asarray(obj, dtype=native_dtype(dtype), copy=copy)
     x = np.asarray(obj, copy=copy)
-    if not has_own_dtype(obj) and x.dtype in _DOWNCAST:
-        return x.astype(_DOWNCAST[x.dtype])
+    if not has_own_dtype(obj):
+        check_python_data(x, "numpy")
+        if x.dtype in _DOWNCAST:
+            return x.astype(_DOWNCAST[x.dtype])
     return x
 
 

@@ -23,10 +23,9 @@ def where(condition, x1, x2, /):
     float32, not float64)."""
     if type(x1) in _PYTHON_SCALARS or type(x2) in _PYTHON_SCALARS:
         arrays = [v.dtype.name for v in (x1, x2) if hasattr(v, "dtype")]
-        if arrays:
-            scalars = [v for v in (x1, x2) if type(v) in _PYTHON_SCALARS]
-            dtype = rules.result_type(arrays, scalars)
-            x1, x2 = np.asarray(x1, dtype=dtype), np.asarray(x2, dtype=dtype)
+        scalars = [v for v in (x1, x2) if type(v) in _PYTHON_SCALARS]
+        dtype = rules.result_type(arrays, scalars) if arrays else rules.default_of(scalars)
+        x1, x2 = np.asarray(x1, dtype=dtype), np.asarray(x2, dtype=dtype)
     return np.where(condition, x1, x2)
 
 

@@ -12,6 +12,7 @@ import contextlib
 import numpy as np
 import tensorflow as tf
 
+from ivy.backends._creation_args import check_python_data
 from ivy.core import _dtype_rules as rules
 from ivy.dtypes import DTYPE_NAMES
 
@@ -167,6 +168,7 @@ def to_tensor(obj, dtype: tf.DType | None = None):
     if dtype is not None:
         return tf.constant(np.asarray(obj, dtype=dtype.as_numpy_dtype))
     data = np.asarray(obj)
+    check_python_data(data, "tensorflow")
     if data.dtype in _DOWNCAST:
         data = data.astype(_DOWNCAST[data.dtype])
     return tf.constant(data)

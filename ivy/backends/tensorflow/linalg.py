@@ -50,6 +50,8 @@ _NO_MATMUL = frozenset({tf.int8, tf.int16, tf.uint8, tf.uint16, tf.uint32, tf.ui
 
 def _integer_safe(native, a, b, **kwargs):
     dtype = a.dtype
+    if dtype is tf.bool:  # numpy's product of booleans (any of the ands): the count above 0
+        return native(tf.cast(a, tf.float32), tf.cast(b, tf.float32), **kwargs) > 0
     if dtype not in _NO_MATMUL:
         return native(a, b, **kwargs)
     if dtype is tf.uint64:
@@ -254,6 +256,8 @@ def vecdot(x1, x2, /, *, axis=-1):
         )
     if x1.dtype.is_complex:
         x1 = tf.math.conj(x1)
+    if x1.dtype is tf.bool:  # (numpy's: any of the ands)
+        return tf.math.reduce_any(tf.math.logical_and(x1, x2), axis=axis)
     return tf.math.reduce_sum(x1 * x2, axis=axis)
 
 

@@ -18,6 +18,8 @@ from ivy.backends.tensorflow._helpers import (
 
 def stack(arrays, /, *, axis=0):
     """tf.stack, with mixed dtypes promoted (tf would refuse them)."""
+    if not len(arrays):  # (tf stacks nothing into an empty float32 array)
+        raise ValueError("stack needs at least one array.")
     if all(type(a) in FAST_TYPES for a in arrays):
         try:
             return tf.stack(arrays, axis)
@@ -44,6 +46,8 @@ def transpose(x, /, axes=None):
 
 
 def concat(arrays, /, *, axis=0):
+    if not len(arrays):
+        raise ValueError("concat needs at least one array.")
     if axis is None:
         arrays, axis = [tf.reshape(tensor(a), [-1]) for a in arrays], 0
     if all(type(a) in FAST_TYPES for a in arrays):

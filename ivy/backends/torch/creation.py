@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import torch
 
-from ivy.backends._creation_args import check_fill_value
+from ivy.backends._creation_args import beyond_int64, check_fill_value
 from ivy.backends._dlpack import exportable
 from ivy.backends.torch._helpers import (
     default_dtype_of_value,
@@ -36,7 +36,12 @@ def asarray(obj, /, *, dtype=None, device=None, copy=None):
         hasattr(obj, "__dlpack__") or hasattr(obj, "__array__")
     ):
         obj = _from_other_framework(obj)
-    x = torch.asarray(obj, dtype=dtype, device=device, copy=copy)
+    try:
+        x = torch.asarray(obj, dtype=dtype, device=device, copy=copy)
+    except (ValueError, RuntimeError) as err:  # ("Overflow when unpacking long long")
+        if dtype is None and "Overflow" in str(err) and not has_own_dtype(obj):
+            raise beyond_int64("torch") from None
+        raise
     if dtype is None and x.dtype in _DOWNCAST and not has_own_dtype(obj):
         return x.to(_DOWNCAST[x.dtype])
     return x

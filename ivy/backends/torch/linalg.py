@@ -24,7 +24,16 @@ _cross = unsigned_safe(torch.linalg.cross, "cross", "arith")
 def matmul(x1, x2, /):
     """``torch.matmul`` with mixed dtypes promoted (torch refuses them) and uint16+ computed
     through int64."""
-    return _matmul(*_promoted(x1, x2))
+    x1, x2 = _promoted(x1, x2)
+    if x1.dtype is torch.bool:
+        return _boolean(_matmul, x1, x2)
+    return _matmul(x1, x2)
+
+
+def _boolean(native, x1, x2, **kwargs):
+    """A product of boolean matrices as numpy computes it (any of the ands), which torch has no
+    kernel for: whether the count of true products is above 0 (in float32: no wrap-around)."""
+    return native(x1.to(torch.float32), x2.to(torch.float32), **kwargs) > 0
 
 
 def outer(x1, x2, /):
@@ -81,6 +90,8 @@ _matrix_power = unsigned_safe(torch.linalg.matrix_power, "matrix_power", "arith"
 
 def matrix_power(x, n, /):
     """Integer matrices stay integer for ``n >= 0``; a negative ``n`` inverts in float32."""
+    if x.dtype is torch.bool and n >= 0:  # (as matmul: whether the count is above 0)
+        return _matrix_power(x.to(torch.float32), n) > 0
     return _matrix_power(x if n >= 0 else as_inexact(x), n)
 
 
@@ -125,6 +136,8 @@ def svdvals(x, /):
 
 def tensordot(x1, x2, /, *, axes=2):
     x1, x2 = _promoted(x1, x2)
+    if x1.dtype is torch.bool:
+        return _boolean(_tensordot, x1, x2, dims=axes)
     return _tensordot(x1, x2, dims=axes)
 
 

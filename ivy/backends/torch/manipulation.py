@@ -48,6 +48,8 @@ def _one_dtype(arrays):
 
 
 def concat(arrays, /, *, axis=0):
+    if not len(arrays):
+        raise ValueError("concat needs at least one array.")
     arrays = _one_dtype(arrays)
     if axis is None:
         return torch.cat([a.reshape(-1) for a in arrays])
@@ -55,6 +57,8 @@ def concat(arrays, /, *, axis=0):
 
 
 def stack(arrays, /, *, axis=0):
+    if not len(arrays):
+        raise ValueError("stack needs at least one array.")
     return torch.stack(_one_dtype(arrays), dim=axis)
 
 

@@ -380,3 +380,12 @@ def test_broadcast_arrays_refuses_incompatible_shapes(backend):
 def test_broadcast_arrays_with_f(backend):
     out = ivy.broadcast_arrays(np.zeros((2, 1)), np.ones(3), f=backend)
     _exact_manipulation_api(out[1], np.ones((2, 3)), backend)
+
+
+@pytest.mark.parametrize("name", ["stack", "concat"])
+def test_nothing_to_join_raises(backend, name):
+    """(tensorflow stacked no arrays into an empty float32 array)"""
+    with pytest.raises(ValueError):
+        getattr(ivy, name)([], f=backend)
+    with pytest.raises(ValueError):
+        getattr(getattr(ivy, backend), name)([])

@@ -191,3 +191,20 @@ def test_count_nonzero(backend, data):
             expected[target] += 1
     for fn in api(backend, "count_nonzero"):
         check(fn(native(a, backend), axis=axis, keepdims=keepdims), expected, backend)
+
+
+@pytest.mark.parametrize(
+    "x1, x2, dtype",
+    [
+        (1.5, 2, "float32"),
+        (1, 2, "int64"),
+        (True, False, "bool"),
+        (1j, 2, "complex64"),
+        (0.5, 2.5, "float32"),
+    ],
+)
+def test_where_of_two_python_scalars_is_of_the_default_dtype(backend, x1, x2, dtype):
+    """(numpy and jax made ``where(c, 1.5, 2)`` float64)"""
+    c = np.array([True, False])
+    for fn in api(backend, "where"):
+        check(fn(native(c, backend), x1, x2), np.where(c, x1, x2).astype(dtype), backend)
