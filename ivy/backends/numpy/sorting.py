@@ -6,11 +6,14 @@ from __future__ import annotations
 
 import numpy as np
 
+from ivy.backends._axes import normalize_axis
 from ivy.backends._sample_args import top_k_axis
 from ivy.core._results import TopKResult
 
 
 def argsort(x, /, *, axis=-1, descending=False, stable=True):
+    if np.ndim(x) == 0:  # (numpy's argsort of a 0-d array is [0], its sort raises)
+        normalize_axis(axis, 0, "argsort", "numpy")
     kind = "stable" if stable else None
     if not descending:
         return np.argsort(x, axis=axis, kind=kind)

@@ -23,8 +23,28 @@ def max(x, /, *, axis=None, keepdims=False):
     return np.max(x, axis=axis, keepdims=keepdims)
 
 
-cumulative_sum = np.cumulative_sum
-cumulative_prod = np.cumulative_prod
+def cumulative_sum(x, /, *, axis=None, dtype=None, include_initial=False):
+    _check_rank(x, axis, "cumulative_sum")
+    return np.cumulative_sum(
+        x, axis=axis, dtype=native_dtype(dtype), include_initial=include_initial
+    )
+
+
+def cumulative_prod(x, /, *, axis=None, dtype=None, include_initial=False):
+    _check_rank(x, axis, "cumulative_prod")
+    return np.cumulative_prod(
+        x, axis=axis, dtype=native_dtype(dtype), include_initial=include_initial
+    )
+
+
+def _check_rank(x, axis, name: str) -> None:
+    """``axis=None`` needs a one-dimensional array, as on the other backends (numpy's would
+    accumulate a 0-d array into shape (1,))."""
+    if axis is None and np.ndim(x) == 0:
+        raise ValueError(
+            f"{name}: axis is required for arrays of 0 dimensions (None is allowed for "
+            "one-dimensional arrays only)."
+        )
 
 
 def logsumexp(x, /, *, axis=None, keepdims=False):

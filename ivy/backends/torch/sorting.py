@@ -5,16 +5,21 @@ from __future__ import annotations
 
 import torch
 
+from ivy.backends._axes import normalize_axis
 from ivy.backends._sample_args import top_k_axis
 from ivy.backends.torch._unsigned import SIGNED_OF, WIDE_UNSIGNED, order_key
 from ivy.core._results import TopKResult
 
 
 def argsort(x, /, *, axis=-1, descending=False, stable=True):
+    if x.ndim == 0:  # (torch sorts a 0-d tensor along axis -1; the other backends raise)
+        normalize_axis(axis, 0, "argsort", "torch")
     return torch.argsort(x, dim=axis, descending=descending, stable=stable)
 
 
 def sort(x, /, *, axis=-1, descending=False, stable=True):
+    if x.ndim == 0:
+        normalize_axis(axis, 0, "sort", "torch")
     return torch.sort(x, dim=axis, descending=descending, stable=stable).values
 
 

@@ -164,3 +164,14 @@ def test_top_k_gradients(diff_backend):
         return ivy.top_k(x, 2, axis=0, largest=False).values
 
     check_gradients(diff_backend, fn, [a])
+
+
+@pytest.mark.parametrize("name", ["sort", "argsort"])
+def test_sorting_a_0d_array_raises_axis_error(backend, name):
+    """axis -1 does not exist in a 0-d array (torch sorted it; numpy's argsort gave [0]): ivy's
+    AxisError from ``ivy.<name>``, a ValueError (the framework's own) from the namespace."""
+    x = native(np.array(3.0, np.float32), backend)
+    with pytest.raises(ivy.errors.AxisError):
+        getattr(ivy, name)(x)
+    with pytest.raises(ValueError):
+        getattr(getattr(ivy, backend), name)(x)

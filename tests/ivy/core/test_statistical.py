@@ -505,3 +505,11 @@ def test_var_and_std_are_nan_where_too_few_elements_remain(
     for fn in api(backend, name):
         out = fn(ivy.asarray(a, f=backend), axis=axis, correction=correction, keepdims=keepdims)
         check(out, expected.astype(np.float32), backend)
+
+
+@pytest.mark.parametrize("name", ["cumulative_sum", "cumulative_prod"])
+def test_cumulative_of_a_0d_array_needs_an_axis(backend, name):
+    """(numpy accumulated a 0-d array into shape (1,), the others raised)"""
+    for fn in api(backend, name):
+        with pytest.raises(ValueError):
+            fn(ivy.asarray(np.array(3.0, np.float32), f=backend))
