@@ -171,3 +171,23 @@ def test_boolean_products_are_any_of_the_ands(backend):
     for fn in api(backend, "matrix_power"):
         check(fn(x, 3), any_of_ands(any_of_ands(a, a), a), backend)
         check(fn(x, 0), np.eye(3, dtype=bool), backend)
+
+
+@pytest.mark.parametrize("dtype", ["int8", "uint8", "int16", "uint32", "bool"])
+def test_einsum_of_small_integers_and_booleans(backend, dtype):
+    """(tensorflow has einsum kernels for int32, int64 and floats only: it raised NotFoundError)"""
+    a = np.array([[100, 3], [7, 200]]).astype(dtype)
+    if dtype == "bool":
+        expected = np.array(
+            [[any(a[i, k] and a[k, j] for k in range(2)) for j in range(2)] for i in range(2)]
+        )
+    else:  # Python ints, wrapped into the dtype as the framework's integers wrap
+        wide = a.astype(object)
+        expected = np.array((wide @ wide).tolist(), dtype=object)
+        expected = np.array(
+            [[int(v) % 2 ** (8 * a.itemsize) for v in row] for row in expected], np.uint64
+        )
+        expected = expected.astype(dtype)
+    x = _native(a, backend)
+    for fn in (ivy.einsum, getattr(ivy, backend).einsum):
+        check(fn("ij,jk->ik", x, x), expected, backend)
