@@ -7,6 +7,8 @@ import itertools
 import jax.numpy as jnp
 import numpy as np
 
+from ivy.backends._axes import new_axis_positions
+
 reshape = jnp.reshape
 permute_dims = (
     jnp.transpose
@@ -45,7 +47,11 @@ def split(x, /, num_or_size_splits=None, *, axis=0):
 
 
 def expand_dims(x, /, axis=0):
-    return jnp.expand_dims(x, axis)
+    try:
+        return jnp.expand_dims(x, axis)
+    except ValueError:  # jax's is a ValueError: ivy's AxisError is an IndexError too
+        new_axis_positions(axis, jnp.ndim(x), "expand_dims", "jax")
+        raise
 
 
 broadcast_arrays = jnp.broadcast_arrays  # a list, as the Array API (2023.12) says

@@ -389,3 +389,11 @@ def test_nothing_to_join_raises(backend, name):
         getattr(ivy, name)([], f=backend)
     with pytest.raises(ValueError):
         getattr(getattr(ivy, backend), name)([])
+
+
+@pytest.mark.parametrize("axis", [2, -3, 5])
+def test_expand_dims_of_an_axis_out_of_range_raises_index_error(backend, axis):
+    """As the standard's tests ask (jax's own raised ValueError): ivy's AxisError is both."""
+    for fn in api(backend, "expand_dims"):
+        with pytest.raises(IndexError):
+            fn(native(np.zeros((3,), np.float32), backend), axis=axis)
