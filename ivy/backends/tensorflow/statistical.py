@@ -13,6 +13,7 @@ from ivy.backends.tensorflow._helpers import (
     static_rank,
     tensor,
 )
+from ivy.backends.tensorflow.cumulative import cumprod_native
 from ivy.errors import InvalidValueError
 
 
@@ -115,7 +116,7 @@ def cumulative_sum(x, /, *, axis=None, dtype=None, include_initial=False):
 
 
 def cumulative_prod(x, /, *, axis=None, dtype=None, include_initial=False):
-    return _cumulative(tf.math.cumprod, 1, x, axis, dtype, include_initial, "cumulative_prod")
+    return _cumulative(cumprod_native, 1, x, axis, dtype, include_initial, "cumulative_prod")
 
 
 def logsumexp(x, /, *, axis=None, keepdims=False):

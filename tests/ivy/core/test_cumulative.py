@@ -22,6 +22,7 @@ from tests.helpers import (
     HYPOTHESIS,
     api,
     check,
+    check_gradients,
     native,
     tolerance,
 )
@@ -88,3 +89,30 @@ def test_the_docstring_examples(backend):
     check(ivy.cumsum(x, exclusive=True), np.array([0, 1, 3], np.int64), backend)
     check(ivy.cumprod(x, reverse=True), np.array([6, 6, 3], np.int64), backend)
     check(ivy.cumsum(x, exclusive=True, reverse=True), np.array([5, 3, 0], np.int64), backend)
+
+
+@pytest.mark.parametrize(
+    "a",
+    [
+        [2.0, 0.0, 3.0],
+        [0.0, 0.0, 2.0],
+        [1.0, 2.0, 0.0],
+        [[2.0, 0.0, 3.0, 4.0], [0.0, 1.5, 0.0, 2.0]],
+    ],
+    ids=["one zero", "two zeros", "last zero", "2-d"],
+)
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda x: ivy.cumulative_prod(x, axis=-1),
+        lambda x: ivy.cumulative_prod(x, axis=-1, include_initial=True),
+        lambda x: ivy.cumprod(x, axis=-1, exclusive=True),
+        lambda x: ivy.cumprod(x, axis=-1, reverse=True),
+        lambda x: ivy.cumprod(x, axis=-1, exclusive=True, reverse=True),
+    ],
+    ids=["cumulative_prod", "include_initial", "exclusive", "reverse", "exclusive reverse"],
+)
+def test_gradients_of_products_through_zeros(diff_backend, a, call):
+    """A product is a polynomial: its gradient at a zero is finite (d/dx1 of
+    sum(cumprod([2, x1, 3])) at 0 is 8). tensorflow's own divides by x there and gave 0."""
+    check_gradients(diff_backend, call, [np.array(a)], n_directions=3)
