@@ -66,7 +66,35 @@ def cross(x1, x2, /, *, axis=-1):
 
 
 def det(x, /):
-    return torch.linalg.det(as_inexact(x))
+    x = as_inexact(x)
+    if x.requires_grad and not x.is_complex():
+        return _Det.apply(x)
+    return torch.linalg.det(x)
+
+
+class _Det(torch.autograd.Function):
+    """det with the gradient that is right for singular matrices too, the transposed adjugate
+    (torch's own gave zeros for a singular 2x2 matrix: d det/dA of [[1, 2], [2, 4]] is
+    [[4, -2], [-2, 1]]). From the SVD A = U S V^T: adj(A)^T = det(U) det(V) U diag(c) V^T,
+    c_i the product of the singular values but the i-th (no division, so no singularity)."""
+
+    @staticmethod
+    def forward(ctx, x):
+        ctx.save_for_backward(x)
+        return torch.linalg.det(x)
+
+    @staticmethod
+    def backward(ctx, g):
+        (x,) = ctx.saved_tensors
+        u, s, vh = torch.linalg.svd(x)
+        ones = torch.ones_like(s[..., :1])
+        before = torch.cumprod(torch.cat([ones, s[..., :-1]], -1), -1)
+        after = torch.flip(
+            torch.cumprod(torch.cat([ones, torch.flip(s, [-1])[..., :-1]], -1), -1), [-1]
+        )
+        sign = torch.linalg.det(u) * torch.linalg.det(vh)
+        adjugate_t = (u * (before * after)[..., None, :]) @ vh
+        return (g * sign)[..., None, None] * adjugate_t
 
 
 def eigh(x, /):

@@ -22,6 +22,7 @@ from hypothesis import strategies as st
 
 import ivy
 from ivy.core import linalg as core_linalg
+from tests.conftest import require
 from tests.helpers import (
     HYPOTHESIS,
     api,
@@ -624,3 +625,29 @@ def test_integer_inputs_of_decompositions_are_computed_in_float32(backend):
         for part in getattr(ivy, name)(a):
             assert dtype_name(part) == "float32", name
     assert dtype_name(ivy.matrix_rank(a)) == "int64"
+
+
+@pytest.mark.parametrize(
+    "a",
+    [[[2.0, 1.0], [1.0, 3.0]], [[1.0, 2.0], [2.0, 4.0]], np.zeros((3, 3))],
+    ids=["regular", "rank 1", "zero"],
+)
+def test_gradient_of_det_is_the_adjugate(backend, a):
+    """d det(A) / dA is the transposed adjugate, finite for singular matrices too (torch's own
+    gradient gave zeros for a rank-1 2x2 matrix)."""
+    require(backend, "autodiff")
+    a = np.asarray(a, np.float64)
+    n = a.shape[0]
+    cofactors = np.array(
+        [
+            [
+                (-1) ** (i + j) * np.linalg.det(np.delete(np.delete(a, i, 0), j, 1))
+                if n > 1
+                else 1.0
+                for j in range(n)
+            ]
+            for i in range(n)
+        ]
+    )
+    grad = ivy.grad(lambda x: ivy.det(x))(native(a, backend))
+    np.testing.assert_allclose(numpy_of(grad), cofactors, atol=1e-9)
