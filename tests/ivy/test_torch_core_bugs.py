@@ -55,3 +55,13 @@ def test_take_with_1d_indices_is_index_select(dtype):
     np.testing.assert_array_equal(out.numpy(), np.take(x.numpy(), [3, -1, 0], axis=1))
     with pytest.raises(IndexError, match="out of bounds"):
         ivy.take(x, torch.as_tensor([4]), axis=1)
+
+
+def test_max_pool_of_64_bit_integers_raises_unsupported():
+    """torch has no integer max pool: integers of up to 32 bits go through float64, which holds
+    them exactly (tests/ivy/core/test_pooling.py); 64-bit ones cannot, and raise a clear error."""
+    x = torch.arange(12, dtype=torch.int64).reshape(1, 4, 3)
+    with pytest.raises(ivy.errors.UnsupportedError, match="64-bit"):
+        ivy.max_pool1d(x, 2, 2, "VALID")
+    with pytest.raises(ivy.errors.UnsupportedError, match="64-bit"):
+        ivy.torch.max_pool1d(x, 2, 2, "VALID")

@@ -16,6 +16,8 @@ from ivy.backends import _nn_args as A
 
 def pool_general(x, kernel, strides, padding, /, *, reduction="max"):
     x = jnp.asarray(x)
+    if A.averages(reduction) and not jnp.issubdtype(x.dtype, jnp.inexact):
+        x = x.astype(jnp.float32)  # an average of integers is float32 on every backend
     window, steps = (1, *kernel, 1), (1, *strides, 1)
     full_pads = ((0, 0), *padding, (0, 0))
     if A.averages(reduction):
@@ -24,5 +26,7 @@ def pool_general(x, kernel, strides, padding, /, *, reduction="max"):
             counts = A.window_counts(x.shape[1:-1], kernel, strides, padding)[None, ..., None]
             return total / jnp.asarray(counts, total.dtype)
         return total / math.prod(kernel)
-    low = -jnp.inf if jnp.issubdtype(x.dtype, jnp.floating) else jnp.iinfo(x.dtype).min
+    if jnp.issubdtype(x.dtype, jnp.floating):  # (a Python -inf: jax's gradient of max pools)
+        return lax.reduce_window(x, -jnp.inf, lax.max, window, steps, full_pads)
+    low = jnp.asarray(jnp.iinfo(x.dtype).min, x.dtype)  # (of the input's dtype, not weak)
     return lax.reduce_window(x, low, lax.max, window, steps, full_pads)

@@ -31,10 +31,24 @@ def _native(x, k, s, padding, average):
     return op(x, k, s, padding)
 
 
+def _through_int64(x, kernel, strides, padding):
+    """The max pool of a uint32, uint64 or bool ``x`` through int64, in the same order: uint64
+    with its top bit flipped, read as int64, orders as uint64 does."""
+    if x.dtype is tf.uint64:
+        flip = tf.constant(-(2**63), tf.int64)
+        y = pool_general(tf.bitcast(x, tf.int64) ^ flip, kernel, strides, padding)
+        return tf.bitcast(y ^ flip, tf.uint64)
+    return tf.cast(pool_general(tf.cast(x, tf.int64), kernel, strides, padding), x.dtype)
+
+
 def pool_general(x, kernel, strides, padding, /, *, reduction="max"):
     x = tf.convert_to_tensor(x)
     average = A.averages(reduction)
-    fill = 0 if average else float("-inf")
+    if average and not (x.dtype.is_floating or x.dtype.is_complex):
+        x = tf.cast(x, tf.float32)  # an average of integers is float32 on every backend
+    if not average and x.dtype in (tf.uint32, tf.uint64, tf.bool):  # no max pool kernels
+        return _through_int64(x, kernel, strides, padding)
+    fill = 0 if average else (x.dtype.min if x.dtype.is_integer else float("-inf"))
     padded, tf_padding = native_padding(x, padding, kernel, strides, fill)
     y = _native(padded, kernel, strides, tf_padding, average)
     if average and padded is not x:  # tf counted the padding: divide by the real entries

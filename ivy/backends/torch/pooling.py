@@ -14,14 +14,31 @@ import torch.nn.functional as F
 
 from ivy.backends import _nn_args as A
 from ivy.backends.torch.convolutions import channels_first, channels_last, tensors, torch_pads
+from ivy.errors import UnsupportedError
 
 _MAX = {1: F.max_pool1d, 2: F.max_pool2d, 3: F.max_pool3d}
+# Integer dtypes whose every value float64 holds exactly (int64 and uint64 do not).
+_EXACT_IN_FLOAT64 = frozenset(
+    {torch.int8, torch.int16, torch.int32, torch.uint8, torch.uint16, torch.uint32, torch.bool}
+)
 _AVG = {1: F.avg_pool1d, 2: F.avg_pool2d, 3: F.avg_pool3d}
 
 
 def pool_general(x, kernel, strides, padding, /, *, reduction="max"):
     (x,) = tensors(x)
     average = A.averages(reduction)
+    if not (x.is_floating_point() or x.is_complex()):
+        if average:  # an average of integers is float32 on every backend
+            x = x.to(torch.float32)
+        elif x.dtype in _EXACT_IN_FLOAT64:  # torch has no integer max pools: exact in float64
+            out = pool_general(x.to(torch.float64), kernel, strides, padding, reduction=reduction)
+            return out.to(x.dtype)
+        else:
+            raise UnsupportedError(
+                f"torch has no max pool of {str(x.dtype)[6:]}: ivy computes integers of up to 32 "
+                "bits through float64, which holds them exactly, but not 64-bit ones. Cast to "
+                "float64 first (exact up to 2**53), or use another backend."
+            )
     nd = len(kernel)
     xc = channels_first(x, nd)
     if all(lo == hi and 2 * lo <= k for (lo, hi), k in zip(padding, kernel)):

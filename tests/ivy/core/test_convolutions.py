@@ -314,3 +314,24 @@ def test_conv_general_with_feature_groups(backend, dtype, groups):
         native(x, backend), native(w, backend), (2, 1), pads, (1, 2), groups=groups
     )
     check(out, expected.astype(dtype), backend, **tolerance(dtype, 10))
+
+
+@pytest.mark.parametrize(
+    "name, x_shape, w_shape, args",
+    [
+        ("conv1d", (5, 3), (2, 3, 4), (1, "VALID")),
+        ("conv2d", (5, 5, 2), (3, 3, 2, 4), (2, "SAME")),
+        ("conv2d_transpose", (5, 5, 2), (3, 3, 4, 2), (2, "VALID")),
+        ("depthwise_conv2d", (5, 5, 2), (3, 3, 2), (1, "VALID")),
+    ],
+)
+def test_an_empty_batch_gives_an_empty_batch_of_the_output_shape(
+    backend, name, x_shape, w_shape, args
+):
+    """(tensorflow's convolutions gave back their input for an empty batch)"""
+    rng = np.random.default_rng(3)
+    w = native(rng.standard_normal(w_shape).astype("float32"), backend)
+    fn = getattr(ivy, name)
+    one = fn(native(np.ones((1, *x_shape), "float32"), backend), w, *args)
+    out = fn(native(np.ones((0, *x_shape), "float32"), backend), w, *args)
+    assert tuple(out.shape) == (0, *tuple(one.shape)[1:])

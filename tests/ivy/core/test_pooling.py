@@ -99,3 +99,18 @@ def test_pool_general(backend, reduction):
     check(out, expected, backend)
     with pytest.raises(ValueError, match="reduction must be 'max' or 'mean'"):
         ivy.pool_general(native(x, backend), (2, 3), (2, 1), pads, reduction="avg")
+
+
+@pytest.mark.parametrize("dtype", ["int8", "uint8", "int32", "uint32"])
+@pytest.mark.parametrize("nd", [1, 2])
+def test_pools_of_integers(backend, dtype, nd):
+    """Max pools keep the integer dtype, average pools are float32, on every backend (torch had
+    no integer kernels, jax's max refused them, numpy's average was float64)."""
+    for x_shape, kernel, strides, padding in POOL_CASES[nd]:  # (explicit padding included)
+        a = (np.random.default_rng(5).integers(0, 100, x_shape)).astype(dtype)
+        flat = a.reshape(-1, *x_shape[-nd - 1 :])
+        for kind, average, want in (("max", False, dtype), ("avg", True, "float32")):
+            fn = getattr(ivy, f"{kind}_pool{nd}d")
+            expected = ref_pool(flat, kernel, strides, padding, average).astype(want)
+            expected = expected.reshape(x_shape[: -nd - 1] + expected.shape[1:])
+            check(fn(native(a, backend), kernel, strides, padding), expected, backend)
