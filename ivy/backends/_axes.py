@@ -4,6 +4,7 @@ negative axes count from the end, and an axis out of range or repeated raises
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
 from ivy.errors import AxisError, ShapeError
@@ -77,7 +78,17 @@ def too_few_for_correction(
         sizes = [shape[a] for a in items]
     if any(s is None for s in sizes):
         return None
-    count = 1
-    for s in sizes:
-        count *= s
-    return count - correction <= 0
+    return math.prod(sizes) - correction <= 0
+
+
+def cumulative_axis(axis: int | None, ndim: int, name: str) -> int:
+    """The axis of ``cumulative_sum``/``cumulative_prod``: ``None`` is allowed for
+    one-dimensional arrays only (numpy would accumulate a 0-d array into shape (1,))."""
+    if axis is not None:
+        return axis
+    if ndim != 1:
+        raise ValueError(
+            f"{name}: axis is required for arrays of {ndim} dimensions (None is allowed for "
+            "one-dimensional arrays only)."
+        )
+    return 0

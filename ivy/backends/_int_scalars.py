@@ -52,8 +52,6 @@ def resolve(name: str, x1: Any, x2: Any, dtype: str) -> tuple[Any, Any] | bool:
         OverflowError: for every other function, where the int does not fit ``dtype``.
     """
     value = x1 if type(x1) is int else x2
-    if 0 <= value <= 127:
-        return x1, x2
     bounds = _RANGES.get(dtype)
     if bounds is None or bounds[0] <= value <= bounds[1] or type(x1) is type(x2):
         return x1, x2
@@ -95,7 +93,7 @@ def dtype_name(dtype: Any) -> str:
 
 def answer_of(compare: Callable[[Any, Any], Any], name: str, array: Any, answer: bool) -> Any:
     """``answer`` for every element of ``array``, made by the backend's comparison ``compare``
-    itself (so in the array's framework, shape and device): ``x == x`` is true for integers,
-    which have no NaN, and ``x != x`` false."""
+    itself (so in the array's framework, shape and device): ``x op x`` holds everywhere or
+    nowhere, integers having no NaN, as ``0 op 0`` does."""
     same = compare(array, array)
-    return same if answer is (name in ("equal", "less_equal", "greater_equal")) else ~same
+    return same if answer is COMPARISONS[name](0, 0) else ~same

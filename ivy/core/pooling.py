@@ -246,5 +246,7 @@ def _pool(xp, x, kernel, strides, padding, nd, fn, reduction):
     k = A.as_tuple(kernel, nd, "kernel", fn)
     s = A.as_tuple(strides, nd, "strides", fn)
     pads = A.pool_pads(padding, shape[len(shape) - nd - 1 : -1], k, s, fn)
+    if A.averages(reduction) and not xp.isdtype(x.dtype, ("real floating", "complex floating")):
+        x = xp.astype(x, xp.float32)  # an average of integers is float32, on every backend
     x, lead = _fold_batch(xp, x, nd)
     return _unfold_batch(xp, xp.pool_general(x, k, s, pads, reduction=reduction), lead)

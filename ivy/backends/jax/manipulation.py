@@ -10,9 +10,8 @@ import numpy as np
 from ivy.backends._axes import new_axis_positions
 
 reshape = jnp.reshape
-permute_dims = (
-    jnp.transpose
-)  # jnp.permute_dims refuses negative axes, which the standard's tests pass
+# (jnp.permute_dims refuses negative axes, which the standard's tests pass)
+permute_dims = jnp.transpose
 transpose = jnp.transpose
 concat = jnp.concat
 stack = jnp.stack

@@ -16,8 +16,6 @@ from ivy.backends import _nn_args as A
 
 def pool_general(x, kernel, strides, padding, /, *, reduction="max"):
     x = jnp.asarray(x)
-    if A.averages(reduction) and not jnp.issubdtype(x.dtype, jnp.inexact):
-        x = x.astype(jnp.float32)  # an average of integers is float32 on every backend
     window, steps = (1, *kernel, 1), (1, *strides, 1)
     full_pads = ((0, 0), *padding, (0, 0))
     if A.averages(reduction):

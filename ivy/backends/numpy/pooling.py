@@ -10,8 +10,6 @@ from ivy.backends.numpy.convolutions import windows
 
 def pool_general(x, kernel, strides, padding, /, *, reduction="max"):
     x = np.asarray(x)
-    if A.averages(reduction) and x.dtype.kind not in "fc":
-        x = x.astype(np.float32)  # an average of integers is float32 on every backend
     nd = len(kernel)
     sizes = x.shape[1:-1]
     out_sizes = tuple(

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ivy.backends._axes import cumulative_axis
 from ivy.backends.numpy._helpers import native_dtype
 
 
@@ -24,27 +25,21 @@ def max(x, /, *, axis=None, keepdims=False):
 
 
 def cumulative_sum(x, /, *, axis=None, dtype=None, include_initial=False):
-    _check_rank(x, axis, "cumulative_sum")
     return np.cumulative_sum(
-        x, axis=axis, dtype=native_dtype(dtype), include_initial=include_initial
+        x,
+        axis=cumulative_axis(axis, np.ndim(x), "cumulative_sum"),
+        dtype=native_dtype(dtype),
+        include_initial=include_initial,
     )
 
 
 def cumulative_prod(x, /, *, axis=None, dtype=None, include_initial=False):
-    _check_rank(x, axis, "cumulative_prod")
     return np.cumulative_prod(
-        x, axis=axis, dtype=native_dtype(dtype), include_initial=include_initial
+        x,
+        axis=cumulative_axis(axis, np.ndim(x), "cumulative_prod"),
+        dtype=native_dtype(dtype),
+        include_initial=include_initial,
     )
-
-
-def _check_rank(x, axis, name: str) -> None:
-    """``axis=None`` needs a one-dimensional array, as on the other backends (numpy's would
-    accumulate a 0-d array into shape (1,))."""
-    if axis is None and np.ndim(x) == 0:
-        raise ValueError(
-            f"{name}: axis is required for arrays of 0 dimensions (None is allowed for "
-            "one-dimensional arrays only)."
-        )
 
 
 def logsumexp(x, /, *, axis=None, keepdims=False):

@@ -44,8 +44,6 @@ def _through_int64(x, kernel, strides, padding):
 def pool_general(x, kernel, strides, padding, /, *, reduction="max"):
     x = tf.convert_to_tensor(x)
     average = A.averages(reduction)
-    if average and not (x.dtype.is_floating or x.dtype.is_complex):
-        x = tf.cast(x, tf.float32)  # an average of integers is float32 on every backend
     if not average and x.dtype in (tf.uint32, tf.uint64, tf.bool):  # no max pool kernels
         return _through_int64(x, kernel, strides, padding)
     fill = 0 if average else (x.dtype.min if x.dtype.is_integer else float("-inf"))

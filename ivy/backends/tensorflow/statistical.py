@@ -6,6 +6,7 @@ import math
 
 import tensorflow as tf
 
+from ivy.backends._axes import cumulative_axis
 from ivy.backends.tensorflow._helpers import (
     floating,
     native_dtype,
@@ -96,14 +97,7 @@ def _cumulative(native, initial, x, axis, dtype, include_initial, name):
     """``native`` (cumsum, cumprod) along ``axis``, accumulating as :func:`sum` does."""
     x = _accumulator(x, dtype)
     rank = static_rank(x, name)
-    if axis is None:
-        if rank != 1:
-            raise ValueError(
-                f"{name}: axis is required for arrays of {rank} dimensions (None is allowed "
-                f"for one-dimensional arrays only)."
-            )
-        axis = 0
-    axis = normalize_axis(axis, rank)
+    axis = normalize_axis(cumulative_axis(axis, rank, name), rank)
     out = native(x, axis=axis)
     if include_initial:
         shape = tf.tensor_scatter_nd_update(tf.shape(out), [[axis]], [1])

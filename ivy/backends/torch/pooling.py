@@ -27,10 +27,9 @@ _AVG = {1: F.avg_pool1d, 2: F.avg_pool2d, 3: F.avg_pool3d}
 def pool_general(x, kernel, strides, padding, /, *, reduction="max"):
     (x,) = tensors(x)
     average = A.averages(reduction)
-    if not (x.is_floating_point() or x.is_complex()):
-        if average:  # an average of integers is float32 on every backend
-            x = x.to(torch.float32)
-        elif x.dtype in _EXACT_IN_FLOAT64:  # torch has no integer max pools: exact in float64
+    if not (average or x.is_floating_point() or x.is_complex()):
+        # (the core computes averages of integers in float32, ``ivy/core/pooling.py``)
+        if x.dtype in _EXACT_IN_FLOAT64:  # torch has no integer max pools: exact in float64
             out = pool_general(x.to(torch.float64), kernel, strides, padding, reduction=reduction)
             return out.to(x.dtype)
         else:

@@ -6,7 +6,7 @@ import math
 
 import torch
 
-from ivy.backends._axes import too_few_for_correction
+from ivy.backends._axes import cumulative_axis, too_few_for_correction
 from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
 from ivy.backends.torch._unsigned import WIDE_UNSIGNED, unsigned_safe, work_dtype
 
@@ -93,13 +93,7 @@ def _cumulative(native, initial, x, axis, dtype, include_initial, name):
     """``native`` (cumsum, cumprod) along ``axis``. Bools and signed integers accumulate in int64,
     unsigned integers in uint64 (computed in int64, whose wrap-around is the same, since torch
     has no uint64 kernels)."""
-    if axis is None:
-        if x.ndim != 1:
-            raise ValueError(
-                f"{name}: axis is required for arrays of {x.ndim} dimensions (None is allowed "
-                f"for one-dimensional arrays only)."
-            )
-        axis = 0
+    axis = cumulative_axis(axis, x.ndim, name)
     out_dtype = native_dtype(dtype)
     if out_dtype is None:
         if x.dtype in _UNSIGNED:
