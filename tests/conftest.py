@@ -156,3 +156,14 @@ def _no_global_framework():
     yield
     while ivy.current_framework() is not None:
         ivy.unset_framework()
+
+
+#: The device the test run targets: ``IVY_TEST_DEVICE`` (``'cpu'``, ``'gpu:0'``), default ``'cpu'``.
+TARGET_DEVICE = os.environ.get("IVY_TEST_DEVICE", "cpu")
+
+
+@pytest.fixture
+def target_device() -> str:
+    """The device the test run targets (``IVY_TEST_DEVICE``, default ``'cpu'``): tests that
+    check where arrays are placed ask for this device, never for ``'cpu'`` by name."""
+    return TARGET_DEVICE
