@@ -128,9 +128,7 @@ def test_facade_reset_draws_gymnasiums_initial_state(task):
         obs, _ = ours.reset(seed=seed)
         expected, _ = theirs.reset(seed=seed)
         np.testing.assert_allclose(obs, expected, rtol=1e-7, atol=1e-7)  # theirs is float32
-        state = theirs.unwrapped.state
-        if task == "MountainCarContinuous":  # the core keeps the float32 state from the start
-            state = np.asarray(state, np.float32)
+        state = theirs.unwrapped.state  # float64 at reset, MountainCarContinuous's included
         np.testing.assert_array_equal(ours.unwrapped.state, np.asarray(state, np.float64))
 
 
