@@ -291,7 +291,8 @@ class Env:
                 tasks compute with it as Gymnasium does), other values are converted to the
                 state's dtype.
             f: framework name or namespace; by default inferred from ``state`` and ``action``
-                (arrays of two frameworks raise ``ivy.errors.MixedFrameworksError``).
+                (arrays of two frameworks raise ``ivy.errors.MixedFrameworksError``); when
+                given, the state and action are converted to it.
 
         Returns:
             ``(state, observation, reward, terminated)``: the next state ``(*batch,
@@ -306,6 +307,8 @@ class Env:
         xp = ivy.get_framework(state, action, self.param_arrays, f=f)
         name = f"{type(self).__name__}.step"
         check_state(self, state, name)
+        if f is not None:  # the chosen framework: convert, as the core's functions do
+            state = xp.asarray(state)
         action = check_action(self, xp, action, state, name)
         return self.kernel_step(xp, state, action)
 
@@ -318,6 +321,8 @@ class Env:
         """
         xp = ivy.get_framework(state, self.param_arrays, f=f)
         check_state(self, state, f"{type(self).__name__}.observe")
+        if f is not None:
+            state = xp.asarray(state)
         return self.kernel_observe(xp, state)
 
     # ------------------------------------------------------------------------------------------

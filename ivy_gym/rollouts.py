@@ -86,10 +86,12 @@ def rollout(
         horizon: number of steps with ``policy``.
         autoreset: restart terminated environments from fresh initial states.
         window: cut gradients every ``window`` steps.
-        f: framework name or namespace; by default inferred from ``state``.
+        f: framework name or namespace (the state and actions are converted to it); by
+            default inferred from ``state``, ``actions``, ``v`` and the environment's array
+            parameters, which must be of one framework (else ``ivy.errors.MixedFrameworksError``).
 
     Returns:
-        A :class:`Trajectory`.
+        A :class:`Trajectory` on the state's device.
 
     Example:
         >>> env = ivy_gym.CartPoleSwingUp()
@@ -101,6 +103,8 @@ def rollout(
     if (actions is None) == (policy is None):
         raise ValueError("rollout: give either actions (open loop) or policy= (closed loop).")
     check_state(env, state, "rollout")
+    if f is not None:  # the chosen framework: convert, as the core's functions do
+        state = xp.asarray(state)
     batch_shape = tuple(state.shape[:-1])
     if actions is not None:
         # the state's framework; a floating dtype is kept (the kernels follow Gymnasium's

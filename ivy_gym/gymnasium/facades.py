@@ -36,7 +36,10 @@ _KEPT_ACTION_DTYPES = (np.dtype("float32"), np.dtype("float64"))
 
 
 def _dtype_name(dtype: Dtype) -> str:
-    name = np.dtype(str(dtype).replace("torch.", "")).name
+    try:
+        name = np.dtype(dtype).name  # names, numpy and jax dtypes
+    except TypeError:  # another framework's dtype object: its name (tf) or its last word (torch)
+        name = getattr(dtype, "name", None) or str(dtype).rpartition(".")[2]
     if name not in _FLOATS:
         raise ValueError(f"ivy_gym: dtype must be 'float32' or 'float64', got {dtype!r}.")
     return name
@@ -136,6 +139,12 @@ class _Facade:
         # Gymnasium does (its action spaces sample float32)
         dtype = a.dtype if a.dtype in _KEPT_ACTION_DTYPES else self.dtype
         return self.xp.asarray(a, dtype=dtype, device=self.device)
+
+    @property
+    def backend_state(self):
+        """The core's state as an array of the facade's backend, on its device (None before
+        ``reset``): what the physics steps, without a copy to the host."""
+        return self._state
 
     def _frame(self, state_row) -> np.ndarray:
         return self.core.render(state_row)

@@ -14,6 +14,7 @@ from gymnasium.utils.env_checker import check_env
 from gymnasium.vector import AutoresetMode
 
 import ivy_gym
+import ivy_gym.gymnasium  # registers the ivy_gym/... ids
 from tests.helpers import native, numpy_of
 
 pytestmark = pytest.mark.filterwarnings(
