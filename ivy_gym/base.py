@@ -91,18 +91,19 @@ class Env:
         self._update_constants()
 
     def _update_constants(self) -> None:
-        """The boxes as tuples of Python floats, made once, outside any trace (constants that
-        every compiler takes as they are), and the parameters that are arrays."""
+        """The boxes as numpy float64 arrays, made once (``xp.constant`` brings them into
+        kernels, compiled ones included), and the parameters that are arrays."""
         low, high = self.initial_bounds()
         action_low, action_high = self.action_bounds()
-        self._boxes = {
-            "reset_low": tuple(float(v) for v in low),
-            "reset_width": tuple(float(v) for v in high - low),
-            "action_low": tuple(float(v) for v in action_low),
-            "action_high": tuple(float(v) for v in action_high),
-            "action_mid": tuple(float(v) for v in (action_high + action_low) / 2),
-            "action_half": tuple(float(v) for v in (action_high - action_low) / 2),
+        boxes = {
+            "reset_low": low,
+            "reset_width": high - low,
+            "action_low": action_low,
+            "action_high": action_high,
+            "action_mid": (action_high + action_low) / 2,
+            "action_half": (action_high - action_low) / 2,
         }
+        self._constants = {k: np.array(v, dtype=np.float64) for k, v in boxes.items()}
         self._array_params = ()
 
     # ------------------------------------------------------------------------------------------
@@ -199,9 +200,8 @@ class Env:
     def action_box(
         self, xp, *, dtype: Dtype = "float32", device: str | None = None
     ) -> tuple[Array, Array]:
-        """``(low, high)`` of the action space as arrays of ``xp`` ``(action_dim,)``, built from
-        Python numbers so that every compiler (torch.compile included) traces them as
-        constants.
+        """``(low, high)`` of the action space as arrays of ``xp`` ``(action_dim,)``: constants
+        (``xp.constant``) that every compiler traces, torch.compile included.
 
         Args:
             xp: the backend namespace (``ivy.torch``...).
@@ -213,9 +213,9 @@ class Env:
             >>> high
             array([2.])
         """
-        b = self._boxes
-        low = xp.asarray(b["action_low"], dtype=dtype, device=device)
-        return low, xp.asarray(b["action_high"], dtype=dtype, device=device)
+        c = self._constants
+        low = xp.constant(c["action_low"], dtype=dtype, device=device)
+        return low, xp.constant(c["action_high"], dtype=dtype, device=device)
 
     def squash(self, xp, logits: Array) -> Array:
         """Actions in the action box from unbounded logits: ``mid + half_width *
@@ -225,9 +225,9 @@ class Env:
             >>> ivy_gym.Pendulum().squash(ivy.numpy, np.zeros((3, 1)))
             array([[0.], [0.], [0.]])
         """
-        device = xp.dev(logits)
-        mid = xp.asarray(self._boxes["action_mid"], dtype=logits.dtype, device=device)
-        half = xp.asarray(self._boxes["action_half"], dtype=logits.dtype, device=device)
+        dtype, device = logits.dtype, xp.dev(logits)
+        mid = xp.constant(self._constants["action_mid"], dtype=dtype, device=device)
+        half = xp.constant(self._constants["action_half"], dtype=dtype, device=device)
         return mid + half * xp.tanh(logits)
 
     # ------------------------------------------------------------------------------------------
@@ -276,8 +276,8 @@ class Env:
         """
         xp = ivy.get_framework(f=f)
         batch_shape = _shape(batch_shape)
-        low = xp.asarray(self._boxes["reset_low"], dtype=dtype, device=device)
-        width = xp.asarray(self._boxes["reset_width"], dtype=dtype, device=device)
+        low = xp.constant(self._constants["reset_low"], dtype=dtype, device=device)
+        width = xp.constant(self._constants["reset_width"], dtype=dtype, device=device)
         u = xp.random_uniform(shape=(*batch_shape, self.state_dim), dtype=dtype, device=device)
         return self.kernel_initial(xp, low + width * u)
 

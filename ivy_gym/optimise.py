@@ -9,10 +9,12 @@
 
 Both optimisers take ``discount``, ``window`` (truncated gradients: the state is cut from the
 graph every ``window`` steps, as in short-horizon actor-critic methods) and ``max_grad_norm``,
-run each iteration as one compiled function (``ivy.compile_fn``; by default on jax and
-tensorflow, eagerly on torch, whose compiler unrolls the loop and takes minutes for a
-100-step rollout with its gradients), and return the history: the return and the gradient's norm
-at every iteration.
+run their iterations through ``ivy.compiled_scan`` (by default where the compiler keeps loops:
+on jax and tensorflow all the iterations are one compiled loop, or one compiled iteration per
+call with a ``callback``; torch runs eagerly by default, because torch.compile unrolls the
+rollout and takes minutes for 100 steps and their gradients; ``compile=True`` compiles each
+iteration there), and return the history: the return and the gradient's norm at every
+iteration.
 
 Example:
     >>> result = ivy_gym.optimise_actions(ivy_gym.PendulumSmooth(), 100, 200, f="jax")
@@ -55,7 +57,9 @@ class OptimisationResult:
         grad_norms: ``(iterations,)`` numpy: the global norm of each iteration's gradient
             (before clipping).
         final_return: the mean return after the last update.
-        seconds: wall time of all iterations; ``first_seconds`` of the first one (it compiles).
+        seconds: wall time of all iterations; ``first_seconds`` of the first call of the
+            compiled loop, its compilation included: the first iteration with a callback, else
+            all of them where the compiler keeps loops (jax, tensorflow).
         actions: the optimised actions ``(T, *B, action_dim)`` (:func:`optimise_actions`).
         initial_state: the initial states of the action sequence (:func:`optimise_actions`).
     """
@@ -119,23 +123,47 @@ def _compile_by_default(xp) -> bool:
 
 
 def _run(xp, step, carry, iterations, compile, callback=None, to_user=lambda v: v):
-    """Call ``carry = step(*carry)`` ``iterations`` times (compiled if asked), or until
-    ``callback(iteration, variables)`` returns True; returns the final carry, the returns, the
-    gradient norms and the timings."""
-    fn = ivy.compile_fn(step, f=xp) if compile else step
+    """Run ``ret, norm, *carry = step(*carry)`` ``iterations`` times, or until ``callback(
+    iteration, variables)`` returns True; returns the final carry, the returns, the gradient
+    norms and the timings (all, and of the first call).
+
+    Compiled, the iterations are an ``ivy.compiled_scan``: where the compiler keeps loops (jax,
+    tensorflow) all of them are one compiled loop (one iteration per call with a callback);
+    where it unrolls loops (torch.compile) each iteration is compiled on its own and a host
+    loop calls it. Eager, a host loop calls ``step``."""
+    carry = tuple(carry)
+    if iterations == 0:
+        return carry, np.zeros(0), np.zeros(0), 0.0, 0.0
+
+    def body(carry, _):
+        ret, norm, *carry = step(*carry)
+        return tuple(carry), (ret, norm)
+
+    block = iterations if callback is None else 1
+    if compile:
+        run = ivy.compiled_scan(body, length=block, f=xp)
+    else:
+
+        def run(carry, _):
+            outs = []
+            for _ in range(block):
+                carry, out = body(carry, None)
+                outs.append(out)
+            return carry, tuple(xp.stack(list(column)) for column in zip(*outs))
+
     returns, norms = [], []
     start = time.perf_counter()
-    first = 0.0
-    for i in range(iterations):
-        ret, norm, *carry = fn(*carry)
+    first = None
+    for i in range(0, iterations, block):
+        carry, (ret, norm) = run(carry, None)
         returns.append(ret)
         norms.append(norm)
-        if i == 0:
+        if first is None:
             first = time.perf_counter() - start
         if callback is not None and callback(i, to_user(carry[0])):
             break
-    returns = np.array([float(ivy.to_numpy(r)) for r in returns])
-    norms = np.array([float(ivy.to_numpy(n)) for n in norms])
+    returns = np.concatenate([np.asarray(ivy.to_numpy(r), np.float64) for r in returns])
+    norms = np.concatenate([np.asarray(ivy.to_numpy(n), np.float64) for n in norms])
     return carry, returns, norms, time.perf_counter() - start, first
 
 

@@ -214,6 +214,7 @@ def discounted_return(rewards: Array, discount: float = 1.0, *, f: Framework = N
     if discount == 1.0:
         return xp.sum(rewards, axis=0)
     steps = rewards.shape[0]
-    weights = xp.asarray([discount**t for t in range(steps)], dtype=rewards.dtype)
+    t = xp.arange(steps, dtype=rewards.dtype, device=xp.dev(rewards))
+    weights = discount**t
     weights = xp.reshape(weights, (steps, *([1] * (len(rewards.shape) - 1))))
     return xp.sum(rewards * weights, axis=0)

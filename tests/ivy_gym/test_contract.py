@@ -162,6 +162,17 @@ def test_float_actions_keep_their_dtype_and_others_take_the_states(backend):
     np.testing.assert_allclose(numpy_of(f32[0])[0, 1], speed, **TOL)
 
 
+def test_render_trajectory_says_how_to_index_the_batch():
+    env = ivy_gym.PendulumSmooth()
+    with pytest.raises(ValueError, match=r"drop index= \(the trajectory is unbatched\)"):
+        ivy_gym.render_trajectory(env, np.zeros((3, 2)), index=0)
+    with pytest.raises(ValueError, match=r"index=\(0, 0\)"):
+        ivy_gym.render_trajectory(env, np.zeros((3, 2, 4, 2)), index=1)
+    with pytest.raises(ValueError, match=r"\(T, \*batch, 2\)"):
+        ivy_gym.render_trajectory(env, np.zeros((3, 5)))
+    assert len(ivy_gym.render_trajectory(env, np.zeros((3, 2)), width=8, height=8)) == 3
+
+
 # ----------------------------------------------------------------------------------------------
 # Devices
 # ----------------------------------------------------------------------------------------------
