@@ -110,10 +110,20 @@ def _case(name, action_dtype=np.float64):
     return task, kwargs, state, trajectory
 
 
-#: (case, action dtype): every case with float64 actions, and with float32 actions (as
-#: Gymnasium's action spaces sample them) where the action is continuous.
+#: The cases that reach every branch of the arithmetic of float32 actions (clipped and
+#: unclipped actions, clipped speeds, the wall, a float64 state from a reset).
+FLOAT32_CASES = (
+    "pendulum-clipped-torque",
+    "pendulum-clipped-speed",
+    "mountaincar-from-reset",
+    "mountaincar-clipped-action",
+    "mountaincar-clipped-speed",
+    "mountaincar-wall",
+)
+#: (case, action dtype): every case with float64 actions, and those with float32 actions (as
+#: Gymnasium's action spaces sample them).
 DTYPE_CASES = [(name, "float64") for name in sorted(CASES)] + [
-    (name, "float32") for name in sorted(CASES) if CASES[name][0] != "CartPole"
+    (name, "float32") for name in FLOAT32_CASES
 ]
 
 
