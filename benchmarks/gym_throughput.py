@@ -42,6 +42,7 @@ import numpy as np
 
 import ivy
 import ivy_gym
+import ivy_gym.gymnasium  # noqa: F401  (registers the ivy_gym/... ids)
 
 sys.path.insert(0, str(Path(__file__).parent))
 from _timing import interleaved_samples, median  # noqa: E402

@@ -4,7 +4,9 @@ Each environment is a pure, batched core (``ivy_gym.Env``): ``state = env.reset(
 f=...)`` and ``state, obs, reward, terminated = env.step(state, action)``, differentiable and
 compilable on torch, jax and tensorflow (numpy runs them too). ``ivy_gym.rollout`` runs many
 steps as one ``ivy.scan``; :mod:`ivy_gym.optimise` optimises actions and policies through
-rollouts; Gymnasium facades are registered as ``ivy_gym/<Task>-v<N>`` on import.
+rollouts. The Gymnasium facades live in :mod:`ivy_gym.gymnasium` (which imports gymnasium);
+``import ivy_gym`` needs neither gymnasium nor a framework, and registers the
+``ivy_gym/<Task>-v<N>`` ids only when gymnasium is already imported.
 
 Example:
     >>> import ivy_gym
@@ -13,33 +15,41 @@ Example:
     >>> traj = ivy_gym.rollout(env, state, torch.zeros(100, 64, 1))
 """
 
+import sys
+
 from ivy_gym import (
-    base,
     cartpole,
-    facades,
     mountain_car,
     optimise,
     pendulum,
     reacher,
-    registration,
     rendering,
     rollouts,
     swimmer,
 )
-from ivy_gym.base import *  # noqa: F403
+from ivy_gym.base import Env
 from ivy_gym.cartpole import *  # noqa: F403
-from ivy_gym.facades import *  # noqa: F403
 from ivy_gym.mountain_car import *  # noqa: F403
 from ivy_gym.optimise import *  # noqa: F403
 from ivy_gym.pendulum import *  # noqa: F403
 from ivy_gym.reacher import *  # noqa: F403
-from ivy_gym.registration import *  # noqa: F403
 from ivy_gym.rendering import *  # noqa: F403
 from ivy_gym.rollouts import *  # noqa: F403
 from ivy_gym.swimmer import *  # noqa: F403
 
+#: Names of :mod:`ivy_gym.gymnasium` also reachable as ``ivy_gym.<name>`` (importing gymnasium
+#: on first use), as before the facades moved there.
+_GYMNASIUM_NAMES = (
+    "GymnasiumEnv",
+    "GymnasiumVectorEnv",
+    "TASKS",
+    "make_env",
+    "make_vector_env",
+    "register_envs",
+)
+
 __all__ = [
-    *base.__all__,
+    "Env",
     *cartpole.__all__,
     *pendulum.__all__,
     *mountain_car.__all__,
@@ -48,8 +58,16 @@ __all__ = [
     *rollouts.__all__,
     *optimise.__all__,
     *rendering.__all__,
-    *facades.__all__,
-    *registration.__all__,
 ]
 
-registration.register_envs()
+
+def __getattr__(name: str):
+    if name in _GYMNASIUM_NAMES:
+        import ivy_gym.gymnasium as facades
+
+        return getattr(facades, name)
+    raise AttributeError(f"module 'ivy_gym' has no attribute {name!r}")
+
+
+if "gymnasium" in sys.modules:  # gymnasium.make("ivy_gym:ivy_gym/...") imports ivy_gym
+    import ivy_gym.gymnasium  # noqa: F401  (registers the ids)

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ivy_gym.base import Env, scalar_action, unstack_last
+from ivy_gym.base import Env, cast_like, scalar_action, unstack_last
 from ivy_gym.rendering import reward_color
 
 __all__ = ["CartPole", "CartPoleSwingUp", "CartPoleParams"]
@@ -108,9 +108,10 @@ class CartPole(_CartPoleBase):
         high = np.array([p.x_threshold * 2, np.inf, p.theta_threshold_radians * 2, np.inf])
         return -high, high
 
-    def _step(self, xp, p, state, action):
+    def kernel_step(self, xp, state, action):
+        p = self.params
         x, x_dot, theta, theta_dot = unstack_last(xp, state)
-        force = p.force_mag * scalar_action(xp, action)
+        force = p.force_mag * scalar_action(xp, cast_like(xp, action, state))
         xacc, thetaacc = _accelerations(xp, p, x_dot, theta, theta_dot, force)
         x = x + p.tau * x_dot
         x_dot = x_dot + p.tau * xacc
@@ -121,7 +122,7 @@ class CartPole(_CartPoleBase):
         terminated = (xp.abs(x) > p.x_threshold) | (xp.abs(theta) > p.theta_threshold_radians)
         return state, state, xp.ones_like(x), terminated
 
-    def _observe(self, xp, p, state):
+    def kernel_observe(self, xp, state):
         return state
 
     def _draw(self, canvas, s):
@@ -155,9 +156,10 @@ class CartPoleSwingUp(_CartPoleBase):
         high = np.array([np.inf, np.inf, 1.0, 1.0, np.inf])
         return -high, high
 
-    def _step(self, xp, p, state, action):
+    def kernel_step(self, xp, state, action):
+        p = self.params
         x, x_dot, theta, theta_dot = unstack_last(xp, state)
-        force = p.force_mag * scalar_action(xp, action)
+        force = p.force_mag * scalar_action(xp, cast_like(xp, action, state))
         xacc, thetaacc = _accelerations(xp, p, x_dot, theta, theta_dot, force)
         x_dot = x_dot + p.tau * xacc
         x = x + p.tau * x_dot
@@ -169,7 +171,7 @@ class CartPoleSwingUp(_CartPoleBase):
         obs = xp.stack([x, x_dot, cos, sin, theta_dot], axis=-1)
         return state, obs, reward, xp.zeros_like(x) > 0
 
-    def _observe(self, xp, p, state):
+    def kernel_observe(self, xp, state):
         x, x_dot, theta, theta_dot = unstack_last(xp, state)
         return xp.stack([x, x_dot, xp.cos(theta), xp.sin(theta), theta_dot], axis=-1)
 

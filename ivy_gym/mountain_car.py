@@ -8,11 +8,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from functools import partial
 
 import numpy as np
 
-from ivy_gym.base import Env, scalar_action, unstack_last
+from ivy_gym.base import Env, cast_like, scalar_action, unstack_last
 from ivy_gym.rendering import reward_color
 
 __all__ = [
@@ -58,7 +57,7 @@ class _MountainCarBase(Env):
     def action_bounds(self):
         return np.array([-1.0]), np.array([1.0])
 
-    def _observe(self, xp, p, state):
+    def kernel_observe(self, xp, state):
         return state
 
     def _view(self, s):
@@ -99,12 +98,12 @@ class MountainCarContinuous(_MountainCarBase):
     100 at termination, minus ``0.1 * action**2`` (of the action as given). Initial state:
     position uniform in [-0.6, -0.4], velocity 0. Time limit (registered task): 999 steps.
 
-    Gymnasium keeps this task's state in float32 between steps, and numpy's scalar types then
-    decide the precision of each operation (``3 * position`` is float32; a clipped action or a
-    clipped speed, Python floats, make the velocity or position update float32; the rest is
-    float64). With ``float32_state=True`` (the default) a float64 core rounds at the same
-    places, so that it follows Gymnasium exactly (float64 actions; a float32 core computes in
-    float32 throughout).
+    Gymnasium draws its initial state in float64 and stores the state in float32 after every
+    step; numpy 2's scalar types then decide the precision of each operation, from the state's
+    and the action's dtypes (float32 for its action space's samples). With
+    ``float32_state=True`` (the default) a float64 core rounds at the same places, so that it
+    follows Gymnasium exactly for float32 and float64 actions (see ``_gymnasium_step``; a
+    float32 core computes in float32 throughout).
     ``smooth=True`` drops the speed clip, the position clip and the wall (the track continues),
     so that the dynamics are smooth; set ``float32_state=False`` too for exact float64
     gradients.
@@ -148,39 +147,64 @@ class MountainCarContinuous(_MountainCarBase):
         return np.array([p.min_position, -p.max_speed]), np.array([p.max_position, p.max_speed])
 
     def _round(self, xp, x):
-        if not self.float32_state or x.dtype == xp.float32:
-            return x
+        """``x`` rounded to float32, in ``x``'s dtype."""
         return xp.astype(xp.astype(x, "float32"), x.dtype)
 
-    def _initial(self, xp, state):
-        return self._round(xp, state)
-
-    def _step(self, xp, p, state, action):
+    def kernel_step(self, xp, state, action):
+        p = self.params
         position, velocity = unstack_last(xp, state)
         a = scalar_action(xp, action)
-        force = xp.clip(a, p.min_action, p.max_action)
-        increment = force * p.power - 0.0025 * xp.cos(self._round(xp, 3 * position))
         if self.float32_state and state.dtype != xp.float32:
-            return self._gymnasium_rounding(xp, p, position, velocity, a, increment)
-        velocity = velocity + increment
+            return self._gymnasium_step(xp, p, position, velocity, a)
+        a = cast_like(xp, a, position)
+        force = xp.clip(a, p.min_action, p.max_action)
+        velocity = velocity + (force * p.power - 0.0025 * xp.cos(3 * position))
         if not self.smooth:
             velocity = xp.clip(velocity, -p.max_speed, p.max_speed)
-        position = position + velocity
-        return self._finish(xp, p, position, velocity, a)
+        state, reward, terminated = self._finish(xp, p, position + velocity, velocity, a)
+        return state, state, reward, terminated
 
-    def _gymnasium_rounding(self, xp, p, position, velocity, a, increment):
-        """The step as Gymnasium computes it on its float32 state, with numpy's scalar types:
-        the velocity and position updates run in float64, except that a clipped action (a
-        Python float) makes the velocity update float32, and a clipped speed (a Python float)
-        makes the position update float32."""
-        r = partial(self._round, xp)
+    def _gymnasium_step(self, xp, p, position, velocity, a):
+        """The step as Gymnasium computes it with numpy 2's scalar types, on a float64 core.
+
+        Gymnasium's state is float64 after ``reset`` and float32 after every step; a state
+        whose position is a float32 number is taken as float32 (a float64 draw is one with
+        probability 2**-29). Python floats (a clipped action or speed, the cosine's term) take
+        the dtype of the array they meet; float32 meets float64 in float64. So the velocity
+        update rounds to float32 on a float32 state when the action is float32 or clipped, and
+        the position update when the velocity was rounded or clipped; the stored state is
+        rounded to float32 (at every step, as Gymnasium stores it).
+        """
+        r = self._round
+        typed32 = r(xp, position) == position  # Gymnasium's state is float32 (after a step)
+        action32 = a.dtype == xp.float32  # Gymnasium's action space samples float32
+        a = cast_like(xp, a, position)  # exact
         clipped_action = xp.logical_or(a < p.min_action, a > p.max_action)
-        velocity = xp.where(clipped_action, r(velocity + r(increment)), velocity + increment)
+        force = xp.clip(a, p.min_action, p.max_action)  # a clipped action: a Python float
+        cos_term = 0.0025 * xp.cos(xp.where(typed32, r(xp, 3 * position), 3 * position))
+        increment = force * p.power - cos_term  # float64: a float64 or a clipped action
+        if action32:  # a float32 action: float32 * power - cos_term, all in float32
+            power32 = float(np.float32(p.power))
+            in_float32 = r(xp, r(xp, a * power32) - r(xp, cos_term))
+            increment = xp.where(clipped_action, increment, in_float32)
+            rounded_velocity = typed32
+        else:
+            rounded_velocity = xp.logical_and(typed32, clipped_action)
+        velocity = xp.where(
+            rounded_velocity, r(xp, velocity + r(xp, increment)), velocity + increment
+        )
+        rounded_position = rounded_velocity
         if not self.smooth:
             clipped_speed = xp.logical_or(velocity > p.max_speed, velocity < -p.max_speed)
             velocity = xp.clip(velocity, -p.max_speed, p.max_speed)
-            velocity = xp.where(clipped_speed, r(velocity), velocity)
-        return self._finish(xp, p, position + velocity, velocity, a)
+            rounded_position = xp.logical_or(
+                rounded_velocity, xp.logical_and(typed32, clipped_speed)
+            )
+        position = xp.where(
+            rounded_position, r(xp, position + r(xp, velocity)), position + velocity
+        )
+        state, reward, terminated = self._finish(xp, p, position, velocity, a)
+        return state, state, reward, terminated
 
     def _finish(self, xp, p, position, velocity, a):
         """The position clip, the wall, termination, reward and the stored state."""
@@ -190,8 +214,10 @@ class MountainCarContinuous(_MountainCarBase):
             velocity = xp.where(at_wall, xp.zeros_like(velocity), velocity)
         terminated = xp.logical_and(position >= p.goal_position, velocity >= p.goal_velocity)
         reward = xp.where(terminated, xp.full_like(a, 100.0), xp.zeros_like(a)) - (a * a) * 0.1
-        state = self._round(xp, xp.stack([position, velocity], axis=-1))
-        return state, state, reward, terminated
+        state = xp.stack([position, velocity], axis=-1)
+        if self.float32_state and state.dtype != xp.float32:
+            state = self._round(xp, state)
+        return state, reward, terminated
 
     def _draw(self, canvas, s):
         self._draw_scene(canvas, s[0], self.params.goal_position, (0, 0, 0))
@@ -217,9 +243,10 @@ class MountainCarShaped(_MountainCarBase):
     def reset_bounds(self):
         return np.array([-0.9, 0.0]), np.array([-0.2, 0.0])
 
-    def _step(self, xp, p, state, action):
+    def kernel_step(self, xp, state, action):
+        p = self.params
         x, v = unstack_last(xp, state)
-        acc = p.torque_scale * scalar_action(xp, action) - p.g * xp.cos(3 * x)
+        acc = p.torque_scale * scalar_action(xp, cast_like(xp, action, state)) - p.g * xp.cos(3 * x)
         v = v + p.dt * acc
         x = x + p.dt * v
         d = x - p.goal_position

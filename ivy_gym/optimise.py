@@ -9,10 +9,12 @@
 
 Both optimisers take ``discount``, ``window`` (truncated gradients: the state is cut from the
 graph every ``window`` steps, as in short-horizon actor-critic methods) and ``max_grad_norm``,
-run each iteration as one compiled function (``ivy.compile_fn``; by default on jax and
-tensorflow, eagerly on torch, whose compiler unrolls the loop and takes minutes for a
-100-step rollout with its gradients), and return the history: the return and the gradient's norm
-at every iteration.
+run their iterations through ``ivy.compiled_scan`` (by default where the compiler keeps loops:
+on jax and tensorflow all the iterations are one compiled loop, or one compiled iteration per
+call with a ``callback``; torch runs eagerly by default, because torch.compile unrolls the
+rollout and takes minutes for 100 steps and their gradients; ``compile=True`` compiles each
+iteration there), and return the history: the return and the gradient's norm at every
+iteration.
 
 Example:
     >>> result = ivy_gym.optimise_actions(ivy_gym.PendulumSmooth(), 100, 200, f="jax")
@@ -31,7 +33,7 @@ import numpy as np
 import ivy
 from ivy.errors import UnsupportedError
 from ivy.typing import Array, Dtype, Framework, Nest
-from ivy_gym.base import Env
+from ivy_gym.base import Env, check_state
 from ivy_gym.rollouts import discounted_return, rollout
 
 __all__ = [
@@ -55,7 +57,9 @@ class OptimisationResult:
         grad_norms: ``(iterations,)`` numpy: the global norm of each iteration's gradient
             (before clipping).
         final_return: the mean return after the last update.
-        seconds: wall time of all iterations; ``first_seconds`` of the first one (it compiles).
+        seconds: wall time of all iterations; ``first_seconds`` of the first call of the
+            compiled loop, its compilation included: the first iteration with a callback, else
+            all of them where the compiler keeps loops (jax, tensorflow).
         actions: the optimised actions ``(T, *B, action_dim)`` (:func:`optimise_actions`).
         initial_state: the initial states of the action sequence (:func:`optimise_actions`).
     """
@@ -86,9 +90,13 @@ def squash_actions(logits: Array, env: Env, *, f: Framework = None) -> Array:
         array([[0.], [0.], [0.]])
     """
     xp = ivy.get_framework(logits, f=f)
-    mid = xp.asarray(env._boxes["action_mid"], dtype=logits.dtype)
-    half = xp.asarray(env._boxes["action_half"], dtype=logits.dtype)
-    return mid + half * xp.tanh(logits)
+    return env.squash(xp, logits)
+
+
+def _device_of(xp, nest) -> str | None:
+    """The device of the first array in ``nest`` (None when it has none)."""
+    leaves = ivy.nest.nest_leaves(nest) if nest is not None else []
+    return xp.dev(leaves[0]) if leaves else None
 
 
 def _global_norm(xp, grads) -> Array:
@@ -98,32 +106,64 @@ def _global_norm(xp, grads) -> Array:
 
 def _differentiable(f: Framework, name: str):
     xp = ivy.get_framework(f=f)
-    if xp.backend == "numpy":
+    if not xp.capabilities.autodiff:
         raise UnsupportedError(
-            f"ivy_gym.{name} needs gradients, which the numpy backend does not have; pass "
-            f"f='torch', 'jax' or 'tensorflow'."
+            f"ivy_gym.{name} needs gradients, which the {xp.backend} backend does not have; "
+            f"pass a framework with automatic differentiation (f='torch', 'jax' or "
+            f"'tensorflow')."
         )
     return xp
 
 
+def _compile_by_default(xp) -> bool:
+    """Whether an iteration (a rollout and its gradient) is compiled when ``compile=None``:
+    where the compiler keeps loops (jax, tensorflow). A compiler that unrolls them
+    (torch.compile) takes minutes for a 100-step rollout and its backward pass."""
+    return xp.capabilities.compilation and xp.capabilities.compiled_loops
+
+
 def _run(xp, step, carry, iterations, compile, callback=None, to_user=lambda v: v):
-    """Call ``carry = step(*carry)`` ``iterations`` times (compiled if asked), or until
-    ``callback(iteration, variables)`` returns True; returns the final carry, the returns, the
-    gradient norms and the timings."""
-    fn = ivy.compile_fn(step, f=xp) if compile else step
+    """Run ``ret, norm, *carry = step(*carry)`` ``iterations`` times, or until ``callback(
+    iteration, variables)`` returns True; returns the final carry, the returns, the gradient
+    norms and the timings (all, and of the first call).
+
+    Compiled, the iterations are an ``ivy.compiled_scan``: where the compiler keeps loops (jax,
+    tensorflow) all of them are one compiled loop (one iteration per call with a callback);
+    where it unrolls loops (torch.compile) each iteration is compiled on its own and a host
+    loop calls it. Eager, a host loop calls ``step``."""
+    carry = tuple(carry)
+    if iterations == 0:
+        return carry, np.zeros(0), np.zeros(0), 0.0, 0.0
+
+    def body(carry, _):
+        ret, norm, *carry = step(*carry)
+        return tuple(carry), (ret, norm)
+
+    block = iterations if callback is None else 1
+    if compile:
+        run = ivy.compiled_scan(body, length=block, f=xp)
+    else:
+
+        def run(carry, _):
+            outs = []
+            for _ in range(block):
+                carry, out = body(carry, None)
+                outs.append(out)
+            return carry, tuple(xp.stack(list(column)) for column in zip(*outs))
+
     returns, norms = [], []
     start = time.perf_counter()
-    first = 0.0
-    for i in range(iterations):
-        ret, norm, *carry = fn(*carry)
+    first = None
+    for i in range(0, iterations, block):
+        carry, (ret, norm) = run(carry, None)
         returns.append(ret)
         norms.append(norm)
-        if i == 0:
+        if first is None:
             first = time.perf_counter() - start
         if callback is not None and callback(i, to_user(carry[0])):
             break
-    returns = np.array([float(ivy.to_numpy(r)) for r in returns])
-    norms = np.array([float(ivy.to_numpy(n)) for n in norms])
+    returns = np.concatenate([np.asarray(ivy.to_numpy(r), np.float64) for r in returns])
+    norms = np.concatenate([np.asarray(ivy.to_numpy(n), np.float64) for n in norms])
     return carry, returns, norms, time.perf_counter() - start, first
 
 
@@ -154,6 +194,7 @@ def optimise_actions(
     dtype: Dtype = "float32",
     compile: bool | None = None,
     callback: Callable[[int, Array], bool | None] | None = None,
+    device: str | None = None,
     f: Framework = None,
 ) -> OptimisationResult:
     """Optimise an open-loop action sequence through a differentiable rollout (Adam).
@@ -176,9 +217,12 @@ def optimise_actions(
             or numpy), e.g. the same on every backend.
         seed: ``ivy.seed`` for the backend first (None: leave the generator as it is).
         dtype: dtype of the states and actions.
-        compile: run each iteration compiled; by default on jax and tensorflow.
+        compile: run each iteration compiled; by default where the compiler keeps loops
+            (jax, tensorflow; torch.compile unrolls them, see the module's docstring).
         callback: ``callback(iteration, actions)`` after each update (the actions after it);
             returning True stops the optimisation (e.g. once the task is solved).
+        device: where to create the states and logits; by default ``initial_state``'s
+            device, or the backend's default.
         f: framework (torch, jax or tensorflow); by default the global framework or that of
             ``initial_state``.
 
@@ -196,14 +240,16 @@ def optimise_actions(
     if seed is not None:
         ivy.seed(seed, f=xp)
     if initial_state is None:
-        initial_state = env.reset(tuple(batch_shape), dtype=dtype, f=xp)
+        initial_state = env.reset(tuple(batch_shape), dtype=dtype, device=device, f=xp)
+    check_state(env, initial_state, "optimise_actions", argument="initial_state")
+    device = xp.dev(initial_state) if device is None else device
     dtype = initial_state.dtype
     batch = tuple(initial_state.shape[:-1])
     shape = (horizon, *batch, env.action_dim)
     if initial_logits is None:
-        logits = xp.random_uniform(-init_scale, init_scale, shape, dtype=dtype)
+        logits = xp.random_uniform(-init_scale, init_scale, shape, dtype=dtype, device=device)
     else:
-        logits = xp.asarray(ivy.to_numpy(initial_logits), dtype=dtype)
+        logits = xp.asarray(ivy.to_numpy(initial_logits), dtype=dtype, device=device)
         if tuple(logits.shape) != shape:
             raise ValueError(
                 f"optimise_actions: initial_logits must have shape {shape}, got "
@@ -220,7 +266,7 @@ def optimise_actions(
         return _update(xp, opt, loss_fn, logits, opt_state, max_grad_norm)
 
     if compile is None:
-        compile = xp.backend != "torch"
+        compile = _compile_by_default(xp)
     carry = (logits, opt.init(logits))
     (logits, _), returns, norms, seconds, first = _run(
         xp, step, carry, iterations, compile, callback, lambda v: squash_actions(v, env, f=xp)
@@ -251,6 +297,7 @@ def optimise_policy(
     dtype: Dtype = "float32",
     compile: bool | None = None,
     callback: Callable[[int, Nest], bool | None] | None = None,
+    device: str | None = None,
     f: Framework = None,
 ) -> OptimisationResult:
     """Optimise a policy's parameters through differentiable rollouts (Adam): at every
@@ -274,9 +321,11 @@ def optimise_policy(
             ``iterations`` on the whole reset box. Adam's state carries across the stages.
         seed: ``ivy.seed`` for the backend first (None: leave the generator as it is).
         dtype: dtype of the states.
-        compile: run each iteration compiled; by default on jax and tensorflow.
+        compile: run each iteration compiled; by default where the compiler keeps loops
+            (jax, tensorflow; torch.compile unrolls them, see the module's docstring).
         callback: ``callback(iteration, v)`` after each update (iterations counted across the
             stages); True stops the optimisation.
+        device: where to draw the initial states; by default the device of ``v``.
         f: framework; by default that of ``v``.
 
     Returns:
@@ -295,18 +344,19 @@ def optimise_policy(
     if f is None:
         f = ivy.get_framework(v)
     xp = _differentiable(f, "optimise_policy")
+    device = _device_of(xp, v) if device is None else device
     if seed is not None:
         ivy.seed(seed, f=xp)
     opt = ivy.Adam(lr, f=xp)
     if compile is None:
-        compile = xp.backend != "torch"
+        compile = _compile_by_default(xp)
     stages = [(env.narrowed(scale), operator.index(n)) for scale, n in curriculum]
     stages.append((env, operator.index(iterations)))
     carry = (v, opt.init(v))
     returns, norms, seconds, first, done = [], [], 0.0, None, 0
     for stage_env, stage_iterations in stages:
         step = _policy_step(
-            xp, opt, stage_env, policy, horizon, batch_size, dtype, discount, window,
+            xp, opt, stage_env, policy, horizon, batch_size, dtype, device, discount, window,
             max_grad_norm, autoreset,
         )  # fmt: skip
         stage_callback = None
@@ -329,17 +379,20 @@ def optimise_policy(
             break
     v = carry[0]
     returns, norms = np.concatenate(returns), np.concatenate(norms)
-    final_return = mean_return(env, horizon, policy=policy, v=v, batch_size=batch_size, f=xp)
+    final_return = mean_return(
+        env, horizon, policy=policy, v=v, batch_size=batch_size, device=device, f=xp
+    )
     return OptimisationResult(v, returns, norms, final_return, seconds, first)
 
 
 def _policy_step(
-    xp, opt, env, policy, horizon, batch_size, dtype, discount, window, max_grad_norm, autoreset
-):
+    xp, opt, env, policy, horizon, batch_size, dtype, device, discount, window, max_grad_norm,
+    autoreset,
+):  # fmt: skip
     """One Adam update of the policy's parameters from a fresh batch of rollouts of ``env``."""
 
     def loss_fn(v):
-        state = env.reset((batch_size,), dtype=dtype, f=xp)
+        state = env.reset((batch_size,), dtype=dtype, device=device, f=xp)
         traj = rollout(
             env,
             state,
@@ -369,6 +422,7 @@ def mean_return(
     autoreset: bool = False,
     dtype: Dtype = "float32",
     compile: bool | None = None,
+    device: str | None = None,
     f: Framework = None,
 ) -> float:
     """The mean return of ``batch_size`` rollouts of ``horizon`` steps from fresh initial states,
@@ -381,8 +435,9 @@ def mean_return(
         batch_size: number of rollouts.
         autoreset: restart environments that terminate within the horizon.
         dtype: dtype of the states.
-        compile: run the rollouts compiled; by default on jax and tensorflow (an eager jax
-            rollout compiles each of its operations at its first call).
+        compile: run the rollouts compiled; by default where the compiler keeps loops (jax,
+            tensorflow: an eager jax rollout compiles each of its operations at its first call).
+        device: where to draw the states; by default the device of ``v``.
         f: framework; by default that of ``v`` or the global framework.
 
     Returns:
@@ -392,15 +447,17 @@ def mean_return(
         >>> ivy_gym.mean_return(ivy_gym.PendulumSmooth(), 100, f="torch")  # a random policy
     """
     xp = ivy.get_framework(v, f=f) if v is not None else ivy.get_framework(f=f)
+    device = _device_of(xp, v) if device is None else device
     if compile is None:
-        compile = xp.backend in ("jax", "tensorflow")
+        compile = _compile_by_default(xp)
 
     def run(v):
-        state = env.reset((batch_size,), dtype=dtype, f=xp)
+        state = env.reset((batch_size,), dtype=dtype, device=device, f=xp)
         if policy is None:
-            u = xp.random_uniform(shape=(horizon, batch_size, env.action_dim), dtype=dtype)
-            low = xp.asarray(env._boxes["action_low"], dtype=dtype)
-            actions = low + xp.asarray(env._boxes["action_width"], dtype=dtype) * u
+            shape = (horizon, batch_size, env.action_dim)
+            u = xp.random_uniform(shape=shape, dtype=dtype, device=device)
+            low, high = env.action_box(xp, dtype=dtype, device=device)
+            actions = low + (high - low) * u
             traj = rollout(env, state, actions, autoreset=autoreset, f=xp)
         else:
             traj = rollout(
@@ -424,6 +481,7 @@ def gradient_norms(
     window: int | None = None,
     dtype: Dtype = "float32",
     compile: bool | None = None,
+    device: str | None = None,
     f: Framework = None,
 ) -> dict[str, np.ndarray]:
     """The norm of the gradient of the mean return against the horizon.
@@ -441,7 +499,9 @@ def gradient_norms(
         batch_size: initial states.
         discount, window: as for :func:`rollout` and :func:`optimise_actions`.
         dtype: dtype of the states.
-        compile: compile each horizon's gradient; by default on jax and tensorflow.
+        compile: compile each horizon's gradient; by default where the compiler keeps loops
+            (jax, tensorflow).
+        device: where to draw the states; by default the device of ``v``.
         f: framework (torch, jax or tensorflow).
 
     Returns:
@@ -454,9 +514,10 @@ def gradient_norms(
     if v is not None and f is None:
         f = ivy.get_framework(v)
     xp = _differentiable(f, "gradient_norms")
+    device = _device_of(xp, v) if device is None else device
     if compile is None:
-        compile = xp.backend != "torch"
-    state = env.reset((batch_size,), dtype=dtype, f=xp)
+        compile = _compile_by_default(xp)
+    state = env.reset((batch_size,), dtype=dtype, device=device, f=xp)
     norms, rets = [], []
     for horizon in horizons:
         use_window = window if window is not None and window < horizon else None
@@ -477,7 +538,8 @@ def gradient_norms(
             return _global_norm(xp, grads), ret
 
         if policy is None:
-            variables = xp.zeros((horizon, batch_size, env.action_dim), dtype=dtype)
+            shape = (horizon, batch_size, env.action_dim)
+            variables = xp.zeros(shape, dtype=dtype, device=device)
         else:
             variables = v
         if compile:

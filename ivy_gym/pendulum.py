@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ivy_gym.base import Env, scalar_action, unstack_last
+from ivy_gym.base import Env, cast_like, scalar_action, unstack_last
 from ivy_gym.rendering import reward_color
 
 __all__ = ["Pendulum", "PendulumSmooth", "PendulumParams", "PendulumSmoothParams"]
@@ -44,11 +44,15 @@ class PendulumSmoothParams:
     torque_scale: float = 1.0
 
 
+def _numbers(*values) -> bool:
+    return all(isinstance(v, (int, float)) for v in values)
+
+
 class _PendulumBase(Env):
     state_names = ("theta", "theta_dot")
     observation_names = ("cos_theta", "sin_theta", "theta_dot")
 
-    def _observe(self, xp, p, state):
+    def kernel_observe(self, xp, state):
         theta, theta_dot = unstack_last(xp, state)
         return xp.stack([xp.cos(theta), xp.sin(theta), theta_dot], axis=-1)
 
@@ -68,7 +72,9 @@ class Pendulum(_PendulumBase):
 
     State ``[theta, theta_dot]`` (Gymnasium's layout; ``theta`` is not wrapped), observation
     ``[cos(theta), sin(theta), theta_dot]``. The torque is the action clipped to
-    ``[-max_torque, max_torque]`` (as Gymnasium clips). Reward, of the state before the step:
+    ``[-max_torque, max_torque]`` (as Gymnasium clips), and its terms ``3 / (m l**2) * torque``
+    and ``0.001 * torque**2`` are computed in the action's dtype before they meet the state, as
+    numpy 2 computes them in Gymnasium (float32 for its action space's samples). Reward, of the state before the step:
     ``-(normalize(theta)**2 + 0.1 * theta_dot**2 + 0.001 * torque**2)`` with ``normalize``
     wrapping to [-pi, pi). The new angular velocity is clipped to ``[-max_speed, max_speed]``
     (Gymnasium's dynamics); ``smooth=True`` drops that clip, so that the dynamics are smooth.
@@ -105,12 +111,21 @@ class Pendulum(_PendulumBase):
         high = np.array([1.0, 1.0, np.inf if self.smooth else self.params.max_speed])
         return -high, high
 
-    def _step(self, xp, p, state, action):
+    def kernel_step(self, xp, state, action):
+        p = self.params
         th, thdot = unstack_last(xp, state)
-        u = xp.clip(scalar_action(xp, action), -p.max_torque, p.max_torque)
+        u = scalar_action(xp, action)
+        coef = 3.0 / (p.m * (p.l * p.l))
+        if not _numbers(coef, p.max_torque):  # array parameters: all in the state's dtype
+            u = cast_like(xp, u, th)
+        u = xp.clip(u, -p.max_torque, p.max_torque)
+        # Gymnasium (numpy 2) computes the action's terms in the action's dtype (float32 for
+        # its action space's samples), then adds them to its float64 state
+        torque_acc = cast_like(xp, coef * u, th)
+        torque_cost = cast_like(xp, 0.001 * (u * u), th)
         wrapped = xp.remainder(th + math.pi, 2 * math.pi) - math.pi
-        costs = wrapped * wrapped + 0.1 * (thdot * thdot) + 0.001 * (u * u)
-        newthdot = thdot + (3 * p.g / (2 * p.l) * xp.sin(th) + 3.0 / (p.m * (p.l * p.l)) * u) * p.dt
+        costs = wrapped * wrapped + 0.1 * (thdot * thdot) + torque_cost
+        newthdot = thdot + (3 * p.g / (2 * p.l) * xp.sin(th) + torque_acc) * p.dt
         if not self.smooth:
             newthdot = xp.clip(newthdot, -p.max_speed, p.max_speed)
         newth = th + newthdot * p.dt
@@ -149,9 +164,10 @@ class PendulumSmooth(_PendulumBase):
         high = np.array([1.0, 1.0, np.inf])
         return -high, high
 
-    def _step(self, xp, p, state, action):
+    def kernel_step(self, xp, state, action):
+        p = self.params
         th, thdot = unstack_last(xp, state)
-        torque = p.torque_scale * scalar_action(xp, action)
+        torque = p.torque_scale * scalar_action(xp, cast_like(xp, action, state))
         thacc = 3 * p.g / (2 * p.l) * xp.sin(th) + 3.0 / (p.m * (p.l * p.l)) * torque
         thdot = thdot + p.dt * thacc
         th = th + p.dt * thdot

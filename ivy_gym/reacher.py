@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ivy_gym.base import Env, unstack_last
+from ivy_gym.base import Env, cast_like, unstack_last
 from ivy_gym.rendering import reward_color
 
 __all__ = ["Reacher", "ReacherParams"]
@@ -83,10 +83,10 @@ class Reacher(Env):
         high = np.concatenate([np.ones(2 * n), np.full(n, np.inf), np.full(2, np.inf)])
         return -high, high
 
-    def _step(self, xp, p, state, action):
-        n = self.num_joints
+    def kernel_step(self, xp, state, action):
+        p, n = self.params, self.num_joints
         angles, vels, goal = xp.split(state, [n, n, 2], axis=-1)
-        vels = vels + p.dt * (p.torque_scale * action)
+        vels = vels + p.dt * (p.torque_scale * cast_like(xp, action, state))
         angles = angles + p.dt * vels
         cos, sin = xp.cos(angles), xp.sin(angles)
         goal_x, goal_y = unstack_last(xp, goal)
@@ -97,7 +97,7 @@ class Reacher(Env):
         obs = xp.concat([cos, sin, vels, goal], axis=-1)
         return state, obs, reward, xp.zeros_like(dx) > 0
 
-    def _observe(self, xp, p, state):
+    def kernel_observe(self, xp, state):
         n = self.num_joints
         angles, rest = xp.split(state, [n, n + 2], axis=-1)
         return xp.concat([xp.cos(angles), xp.sin(angles), rest], axis=-1)

@@ -147,12 +147,26 @@ def render_trajectory(
     """
     s = np.asarray(ivy.to_numpy(states), np.float64)
     index = (index,) if isinstance(index, int) else tuple(index)
-    s = s[(slice(None), *index)]
-    if s.ndim != 2:
+    expected = f"(T, *batch, {env.state_dim})"
+    if s.ndim < 2 or s.shape[-1] != env.state_dim:
         raise ValueError(
-            f"render_trajectory: states indexed by {index} have shape {s.shape}; expected "
-            f"(T, {env.state_dim}). Pass index= to pick one element of the batch."
+            f"render_trajectory: states must have shape {expected}, e.g. traj.states; got "
+            f"shape {s.shape}."
         )
+    batch = s.shape[1:-1]
+    if len(index) != len(batch):
+        fix = (
+            "drop index= (the trajectory is unbatched)"
+            if not batch
+            else f"pass index= with {len(batch)} integer(s), one per batch axis, e.g. "
+            f"index={(0,) * len(batch) if len(batch) > 1 else 0}"
+        )
+        raise ValueError(
+            f"render_trajectory: states of shape {s.shape} have the batch {batch}, and "
+            f"index={index if len(index) != 1 else index[0]} picks {len(index)} batch axes; "
+            f"{fix}."
+        )
+    s = s[(slice(None), *index)]
     return [env.render(row, width=width, height=height) for row in s]
 
 

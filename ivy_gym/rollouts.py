@@ -19,7 +19,7 @@ from typing import NamedTuple
 
 import ivy
 from ivy.typing import Array, Framework, Nest
-from ivy_gym.base import as_action
+from ivy_gym.base import check_action, check_state
 
 __all__ = ["Trajectory", "rollout", "discounted_return"]
 
@@ -86,10 +86,12 @@ def rollout(
         horizon: number of steps with ``policy``.
         autoreset: restart terminated environments from fresh initial states.
         window: cut gradients every ``window`` steps.
-        f: framework name or namespace; by default inferred from ``state``.
+        f: framework name or namespace (the state and actions are converted to it); by
+            default inferred from ``state``, ``actions``, ``v`` and the environment's array
+            parameters, which must be of one framework (else ``ivy.errors.MixedFrameworksError``).
 
     Returns:
-        A :class:`Trajectory`.
+        A :class:`Trajectory` on the state's device.
 
     Example:
         >>> env = ivy_gym.CartPoleSwingUp()
@@ -97,30 +99,28 @@ def rollout(
         >>> traj = ivy_gym.rollout(env, env.reset((32,), f="jax"), policy=mlp, v=mlp.v,
         ...                        horizon=100)
     """
-    xp = ivy.get_framework(state, f=f)
+    xp = ivy.get_framework(state, actions, v, env.param_arrays, f=f)
     if (actions is None) == (policy is None):
         raise ValueError("rollout: give either actions (open loop) or policy= (closed loop).")
+    check_state(env, state, "rollout")
+    if f is not None:  # the chosen framework: convert, as the core's functions do
+        state = xp.asarray(state)
+    batch_shape = tuple(state.shape[:-1])
     if actions is not None:
-        shape = tuple(actions.shape)
-        if len(shape) < 2 or shape[-1] != env.action_dim:
-            raise ValueError(
-                f"rollout: actions must have shape (T, *batch, {env.action_dim}); got {shape}."
-            )
-        steps = shape[0]
-        actions = as_action(xp, actions, state)  # the state's framework and dtype, once
+        # the state's framework; a floating dtype is kept (the kernels follow Gymnasium's
+        # arithmetic with float32 actions), anything else takes the state's dtype, once
+        actions = check_action(
+            env, xp, actions, state, "rollout", argument="actions", time_axis=True
+        )
+        steps = actions.shape[0]
         if horizon is not None and operator.index(horizon) != steps:
             raise ValueError(f"rollout: horizon={horizon} but actions has {steps} steps.")
     else:
         if horizon is None:
             raise ValueError("rollout: with policy=, give horizon= (the number of steps).")
         steps = operator.index(horizon)
-    batch_shape = tuple(state.shape[:-1])
-    if state.shape[-1] != env.state_dim:
-        raise ValueError(
-            f"rollout: {type(env).__name__} states have {env.state_dim} components in the last "
-            f"axis; got shape {tuple(state.shape)}."
-        )
     dtype = state.dtype
+    device = xp.dev(state)
     masked = env.can_terminate and not autoreset
     if isinstance(policy, ivy.Module):
         module = policy
@@ -131,25 +131,27 @@ def rollout(
     def step(carry, action):
         state, obs, alive = carry
         if action is None:
-            action = policy(obs, v)
-        new_state, obs, reward, terminated = env.step(state, action, f=xp)
+            action = check_action(
+                env, xp, policy(obs, v), state, "rollout", argument="policy(obs, v)"
+            )
+        new_state, obs, reward, terminated = env.kernel_step(xp, state, action)
         valid = alive
         if masked:
             reward = xp.where(alive, reward, xp.zeros_like(reward))
             alive = xp.logical_and(alive, xp.logical_not(terminated))
         next_state = new_state
         if autoreset and env.can_terminate:
-            fresh = env.reset(batch_shape, dtype=dtype, f=xp)
+            fresh = env.reset(batch_shape, dtype=dtype, device=device, f=xp)
             cut = xp.expand_dims(terminated, axis=-1)
             next_state = xp.where(cut, fresh, new_state)
-            obs_next = xp.where(cut, env.observe(fresh, f=xp), obs)
+            obs_next = xp.where(cut, env.kernel_observe(xp, fresh), obs)
         else:
             obs_next = obs
         out = (obs, action, reward, terminated, valid, new_state)
         return (next_state, obs_next, alive), out
 
-    alive0 = xp.ones(batch_shape, dtype="bool")
-    carry = (state, env.observe(state, f=xp), alive0)
+    alive0 = xp.ones(batch_shape, dtype="bool", device=device)
+    carry = (state, env.kernel_observe(xp, state), alive0)
     if window is None or window >= steps:
         carry, outs = ivy.scan(step, carry, actions, length=steps, f=xp)
     else:
@@ -212,6 +214,7 @@ def discounted_return(rewards: Array, discount: float = 1.0, *, f: Framework = N
     if discount == 1.0:
         return xp.sum(rewards, axis=0)
     steps = rewards.shape[0]
-    weights = xp.asarray([discount**t for t in range(steps)], dtype=rewards.dtype)
+    t = xp.arange(steps, dtype=rewards.dtype, device=xp.dev(rewards))
+    weights = discount**t
     weights = xp.reshape(weights, (steps, *([1] * (len(rewards.shape) - 1))))
     return xp.sum(rewards * weights, axis=0)

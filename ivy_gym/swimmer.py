@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ivy_gym.base import Env
+from ivy_gym.base import Env, cast_like
 from ivy_gym.rendering import reward_color
 
 __all__ = ["Swimmer", "SwimmerParams"]
@@ -76,13 +76,13 @@ class Swimmer(Env):
     def action_bounds(self):
         return -np.ones(2), np.ones(2)
 
-    def _step(self, xp, p, state, action):
-        u = 2 * self.num_urchins
+    def kernel_step(self, xp, state, action):
+        p, u = self.params, 2 * self.num_urchins
         if u:
             urchins, xy, vel, goal = xp.split(state, [u, 2, 2, 2], axis=-1)
         else:
             urchins, (xy, vel, goal) = None, xp.split(state, [2, 2, 2], axis=-1)
-        vel = vel + p.dt * action
+        vel = vel + p.dt * cast_like(xp, action, state)
         xy = xy + p.dt * vel
         state = xp.concat([urchins, xy, vel, goal] if u else [xy, vel, goal], axis=-1)
         to_goal = xy - goal
@@ -94,7 +94,7 @@ class Swimmer(Env):
             reward = reward * xp.prod(1.0 - near, axis=-1)
         return state, state, reward, xp.zeros_like(reward) > 0
 
-    def _observe(self, xp, p, state):
+    def kernel_observe(self, xp, state):
         return state
 
     def _view(self, s):

@@ -21,12 +21,18 @@ FAITHFUL = {
 }
 
 
-def gymnasium_trajectory(task: str, state: np.ndarray, policy, steps: int, **params):
+def gymnasium_trajectory(
+    task: str, state: np.ndarray, policy, steps: int, action_dtype=np.float64, **params
+):
     """Step Gymnasium's own ``task`` from ``state`` for ``steps`` steps or until it terminates,
-    with the actions ``policy(t, state)`` (float64, the core's continuous action; CartPole's
-    is sent to Gymnasium as 1 if positive else 0).
+    with the actions ``policy(t, state)`` in ``action_dtype`` (the core's continuous action;
+    CartPole's is sent to Gymnasium as 1 if positive else 0).
 
-    Returns (states (n, D), rewards (n,), terminated (n,), actions (n, A)), float64.
+    MountainCarContinuous's state is set as float32 where its values are float32 numbers (as
+    Gymnasium stores it after a step), else as float64 (as Gymnasium's reset draws it).
+
+    Returns (states (n, D), rewards (n,), terminated (n,), actions (n, A)); the states and
+    rewards float64, the actions in ``action_dtype``.
     """
     env = gymnasium.make(FAITHFUL[task]).unwrapped
     env.reset(seed=0)
@@ -35,11 +41,14 @@ def gymnasium_trajectory(task: str, state: np.ndarray, policy, steps: int, **par
     if task == "CartPole":  # Gymnasium derives these in __init__
         env.total_mass = env.masspole + env.masscart
         env.polemass_length = env.masspole * env.length
-    # MountainCarContinuous keeps a float32 state (Gymnasium stores it so after every step)
-    env.state = state.astype(np.float32) if task == "MountainCarContinuous" else state.copy()
+    float32_state = np.array_equal(state.astype(np.float32), state)
+    if task == "MountainCarContinuous" and float32_state:
+        env.state = state.astype(np.float32)
+    else:
+        env.state = state.copy()
     states, rewards, terminated, actions = [], [], [], []
     for t in range(steps):
-        a = np.asarray(policy(t, np.asarray(env.state, np.float64)), np.float64)
+        a = np.asarray(policy(t, np.asarray(env.state, np.float64)), action_dtype)
         if task == "CartPole":  # Gymnasium pushes with +-force_mag: the core's action +-1
             a = np.where(a > 0, 1.0, -1.0)
         _, reward, term, _, _ = env.step(int(a[0] > 0) if task == "CartPole" else a)

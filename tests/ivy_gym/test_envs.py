@@ -115,8 +115,9 @@ def test_actions_broadcast_and_convert(backend):
     state = env.reset((4,), dtype="float64", f=backend)
     broadcast = env.step(state, native(np.full(1, 0.25), backend))[0]  # one action for all
     full = env.step(state, native(np.full((4, 1), 0.25), backend))[0]
-    from_numpy = env.step(state, np.full((4, 1), 0.25, np.float32))[0]  # converted, float64
-    for x in (broadcast, from_numpy):
+    from_list = env.step(state, [[0.25]] * 4)[0]  # Python numbers: the state's dtype
+    with_f = env.step(state, np.full((4, 1), 0.25), f=backend)[0]  # f= converts numpy
+    for x in (broadcast, from_list, with_f):
         np.testing.assert_allclose(numpy_of(x), numpy_of(full), **TOL)
         assert ivy.dtype(x, as_str=True) == "float64"
 

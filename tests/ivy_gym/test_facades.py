@@ -14,6 +14,7 @@ from gymnasium.utils.env_checker import check_env
 from gymnasium.vector import AutoresetMode
 
 import ivy_gym
+import ivy_gym.gymnasium  # registers the ivy_gym/... ids
 from tests.helpers import native, numpy_of
 
 pytestmark = pytest.mark.filterwarnings(
@@ -165,9 +166,9 @@ def test_vector_env_steps_every_copy_in_one_call():
     calls = []
 
     class Counted(ivy_gym.PendulumSmooth):
-        def _step(self, xp, p, state, action):
+        def kernel_step(self, xp, state, action):
             calls.append(tuple(state.shape))
-            return super()._step(xp, p, state, action)
+            return super().kernel_step(xp, state, action)
 
     envs = ivy_gym.GymnasiumVectorEnv(Counted(), 64, framework="numpy")
     envs.reset(seed=0)
@@ -210,7 +211,9 @@ def test_vector_env_matches_the_core(backend):
     start = envs.unwrapped.state.copy()
     actions = np.random.default_rng(1).uniform(-1, 1, size=(4, 3, 1))
     obs = [envs.step(a)[0] for a in actions]
-    traj = ivy_gym.rollout(ivy_gym.MountainCarShaped(), native(start, backend), actions)
+    traj = ivy_gym.rollout(
+        ivy_gym.MountainCarShaped(), native(start, backend), native(actions, backend)
+    )
     np.testing.assert_allclose(np.array(obs), numpy_of(traj.observations), rtol=1e-13)
 
 

@@ -1,16 +1,21 @@
 """The faithful tasks follow Gymnasium's own environments step for step: from the same state and
-the same actions, CartPole-v1, Pendulum-v1 and MountainCarContinuous-v0 give Gymnasium's states,
-rewards and terminations (float64, to 1e-10) for 200 steps or until termination, on every
-backend. The cases reach every branch of Gymnasium's code: terminations, clipped actions,
-clipped speeds, the mountain car's wall and goal, and changed physical constants."""
+the same actions, float32 (as Gymnasium's action spaces sample them) or float64, CartPole-v1,
+Pendulum-v1 and MountainCarContinuous-v0 give Gymnasium's states, rewards and terminations
+(float64, to 1e-10) for 200 steps or until termination, on every backend. The cases reach every
+branch of Gymnasium's code: terminations, clipped actions, clipped speeds, the mountain car's
+wall and goal, a mountain car from a float64 (freshly reset) state, and changed physical
+constants. And as users call them: ``reset(seed=...)`` then ``step(action_space.sample())``
+through the facades leave ``unwrapped.state`` equal to Gymnasium's after every step."""
 
 from __future__ import annotations
 
+import gymnasium
 import numpy as np
 import pytest
 
 import ivy
 import ivy_gym
+import ivy_gym.gymnasium  # registers the ivy_gym/... ids
 from tests.helpers import native, numpy_of
 from tests.ivy_gym._reference import FAITHFUL, gymnasium_trajectory
 
@@ -58,6 +63,13 @@ CASES = {
         _random(-1.6, 1.6, seed=6),
     ),
     "mountaincar-goal": ("MountainCarContinuous", {}, {}, [-0.55, 0.0], _pump(1.0)),
+    "mountaincar-from-reset": (  # Gymnasium's reset state is float64 (not float32 numbers)
+        "MountainCarContinuous",
+        {},
+        {},
+        [-0.5123456789012345, 0.0],
+        _random(-1.6, 1.6, seed=7),
+    ),
     "mountaincar-wall": (
         "MountainCarContinuous",
         {},
@@ -89,12 +101,30 @@ EXPECT = {
 }
 
 
-def _case(name):
+def _case(name, action_dtype=np.float64):
     task, kwargs, attrs, state, policy = CASES[name]
     state = np.asarray(state, np.float64)
-    if task == "MountainCarContinuous":  # Gymnasium's own state is float32
-        state = state.astype(np.float32).astype(np.float64)
-    return task, kwargs, state, gymnasium_trajectory(task, state, policy, STEPS, **attrs)
+    if task == "MountainCarContinuous" and name != "mountaincar-from-reset":
+        state = state.astype(np.float32).astype(np.float64)  # Gymnasium's state after a step
+    trajectory = gymnasium_trajectory(task, state, policy, STEPS, action_dtype, **attrs)
+    return task, kwargs, state, trajectory
+
+
+#: The cases that reach every branch of the arithmetic of float32 actions (clipped and
+#: unclipped actions, clipped speeds, the wall, a float64 state from a reset).
+FLOAT32_CASES = (
+    "pendulum-clipped-torque",
+    "pendulum-clipped-speed",
+    "mountaincar-from-reset",
+    "mountaincar-clipped-action",
+    "mountaincar-clipped-speed",
+    "mountaincar-wall",
+)
+#: (case, action dtype): every case with float64 actions, and those with float32 actions (as
+#: Gymnasium's action spaces sample them).
+DTYPE_CASES = [(name, "float64") for name in sorted(CASES)] + [
+    (name, "float32") for name in FLOAT32_CASES
+]
 
 
 @pytest.mark.parametrize("name", sorted(CASES))
@@ -104,9 +134,9 @@ def test_the_cases_reach_their_branch(name):
         assert EXPECT[name](*expected)
 
 
-@pytest.mark.parametrize("name", sorted(CASES))
-def test_trajectory_equals_gymnasium(name, backend):
-    task, kwargs, state, (states, rewards, terminated, actions) = _case(name)
+@pytest.mark.parametrize("name, action_dtype", DTYPE_CASES)
+def test_trajectory_equals_gymnasium(name, action_dtype, backend):
+    task, kwargs, state, (states, rewards, terminated, actions) = _case(name, action_dtype)
     env = getattr(ivy_gym, task)(**kwargs)
     traj = ivy_gym.rollout(env, native(state, backend), native(actions, backend))
     np.testing.assert_allclose(numpy_of(traj.states), states, **TOL)
@@ -120,18 +150,40 @@ def test_trajectory_equals_gymnasium(name, backend):
 
 @pytest.mark.parametrize("task", ["CartPole", "Pendulum", "MountainCarContinuous"])
 def test_facade_reset_draws_gymnasiums_initial_state(task):
-    import gymnasium
-
     ours = gymnasium.make(f"ivy_gym/{FAITHFUL[task]}", dtype="float64")
     theirs = gymnasium.make(FAITHFUL[task])
     for seed in (0, 7, 123):
         obs, _ = ours.reset(seed=seed)
         expected, _ = theirs.reset(seed=seed)
         np.testing.assert_allclose(obs, expected, rtol=1e-7, atol=1e-7)  # theirs is float32
-        state = theirs.unwrapped.state
-        if task == "MountainCarContinuous":  # the core keeps the float32 state from the start
-            state = np.asarray(state, np.float32)
+        state = theirs.unwrapped.state  # float64 at reset, MountainCarContinuous's included
         np.testing.assert_array_equal(ours.unwrapped.state, np.asarray(state, np.float64))
+
+
+@pytest.mark.parametrize("task", sorted(FAITHFUL))
+@pytest.mark.parametrize("action_dtype", ["float32", "float64"])
+def test_users_reset_and_sampled_steps_follow_gymnasium(task, action_dtype):
+    """``reset(seed=...)`` then ``step(action_space.sample())``, as users call them: after every
+    step ``unwrapped.state`` is Gymnasium's (float32 samples, and the same cast to float64)."""
+    ours = gymnasium.make(f"ivy_gym/{FAITHFUL[task]}", dtype="float64").unwrapped
+    theirs = gymnasium.make(FAITHFUL[task]).unwrapped
+    for seed in (0, 1):
+        ours.reset(seed=seed)
+        theirs.reset(seed=seed)
+        theirs.action_space.seed(seed)
+        np.testing.assert_array_equal(ours.state, np.asarray(theirs.state, np.float64))
+        for _ in range(STEPS):
+            action = theirs.action_space.sample()
+            if task != "CartPole":
+                action = action.astype(action_dtype)
+            _, reward, terminated, _, _ = ours.step(action)
+            _, expected_reward, expected_terminated, _, _ = theirs.step(action)
+            expected = np.asarray(theirs.state, np.float64)
+            np.testing.assert_allclose(ours.state, expected, **TOL)
+            assert reward == pytest.approx(float(expected_reward), rel=1e-10, abs=1e-10)
+            assert terminated == expected_terminated
+            if terminated:
+                break
 
 
 def test_float32_core_stays_close_to_gymnasium():

@@ -1,10 +1,11 @@
-"""Gymnasium ids of the ivy_gym tasks, registered on ``import ivy_gym``.
+"""Gymnasium ids of the ivy_gym tasks, registered on ``import ivy_gym.gymnasium`` (and on
+``import ivy_gym`` when gymnasium is already imported).
 
-``gymnasium.make("ivy_gym/Pendulum-v1", framework="torch", dtype="float64")`` builds a
-:class:`~ivy_gym.facades.GymnasiumEnv`; ``gymnasium.make("ivy_gym:ivy_gym/Pendulum-v1")`` imports
-ivy_gym first, so it works without the import. ``gymnasium.make_vec(id, num_envs=N,
-vectorization_mode="vector_entry_point", framework=...)`` builds a native
-:class:`~ivy_gym.facades.GymnasiumVectorEnv`. Further keyword arguments go to the core
+``gymnasium.make("ivy_gym/Pendulum-v1", framework="torch", dtype="float64", device="gpu:0")``
+builds a :class:`~ivy_gym.gymnasium.GymnasiumEnv`; ``gymnasium.make("ivy_gym:ivy_gym/Pendulum-v1")``
+imports ivy_gym first, so it works with nothing imported by hand. ``gymnasium.make_vec(id,
+num_envs=N, vectorization_mode="vector_entry_point", framework=...)`` builds a native
+:class:`~ivy_gym.gymnasium.GymnasiumVectorEnv`. Further keyword arguments go to the core
 (physical parameters, ``smooth=True``, ``num_joints=3``...).
 """
 
@@ -16,7 +17,7 @@ import gymnasium
 
 from ivy.typing import Dtype, Framework
 from ivy_gym.cartpole import CartPole, CartPoleSwingUp
-from ivy_gym.facades import GymnasiumEnv, GymnasiumVectorEnv
+from ivy_gym.gymnasium.facades import GymnasiumEnv, GymnasiumVectorEnv
 from ivy_gym.mountain_car import MountainCarContinuous, MountainCarShaped
 from ivy_gym.pendulum import Pendulum, PendulumSmooth
 from ivy_gym.reacher import Reacher
@@ -44,6 +45,7 @@ def make_env(
     framework: Framework = "numpy",
     dtype: Dtype = "float32",
     render_mode: str | None = None,
+    device: str | None = None,
     **core_kwargs: Any,
 ) -> GymnasiumEnv:
     """The Gymnasium entry point of ``ivy_gym/<task>``.
@@ -58,6 +60,7 @@ def make_env(
         dtype=dtype,
         render_mode=render_mode,
         discrete=discrete,
+        device=device,
     )
 
 
@@ -70,6 +73,7 @@ def make_vector_env(
     render_mode: str | None = None,
     max_episode_steps: int | None = None,
     compile: bool | None = None,
+    device: str | None = None,
     **core_kwargs: Any,
 ) -> GymnasiumVectorEnv:
     """The Gymnasium vector entry point of ``ivy_gym/<task>``.
@@ -87,19 +91,21 @@ def make_vector_env(
         render_mode=render_mode,
         discrete=discrete,
         compile=compile,
+        device=device,
     )
 
 
 def register_envs() -> None:
-    """Register every ``ivy_gym/<task>`` id with Gymnasium (done by ``import ivy_gym``)."""
+    """Register every ``ivy_gym/<task>`` id with Gymnasium (done by ``import ivy_gym.gymnasium``;
+    ids already registered are left as they are)."""
     for task, (cls, _, threshold) in TASKS.items():
         env_id = f"ivy_gym/{task}"
         if env_id in gymnasium.registry:
             continue
         gymnasium.register(
             id=env_id,
-            entry_point="ivy_gym.registration:make_env",
-            vector_entry_point="ivy_gym.registration:make_vector_env",
+            entry_point="ivy_gym.gymnasium.registration:make_env",
+            vector_entry_point="ivy_gym.gymnasium.registration:make_vector_env",
             max_episode_steps=cls.max_episode_steps,
             reward_threshold=threshold,
             kwargs={"task": task},

@@ -10,6 +10,8 @@ The core owns the physics, run on any backend:
 
 Observations are numpy arrays of the chosen dtype; ``env.unwrapped.state`` reads and writes
 the state as a float64 numpy array in the core's layout (Gymnasium's, for the faithful tasks).
+Actions are checked against the action space; float32 and float64 actions keep their dtype (the
+faithful tasks compute with them as Gymnasium does). ``device=`` places the core's arrays.
 """
 
 from __future__ import annotations
@@ -30,10 +32,14 @@ from ivy_gym.base import Env
 __all__ = ["GymnasiumEnv", "GymnasiumVectorEnv"]
 
 _FLOATS = ("float32", "float64")
+_KEPT_ACTION_DTYPES = (np.dtype("float32"), np.dtype("float64"))
 
 
 def _dtype_name(dtype: Dtype) -> str:
-    name = np.dtype(str(dtype).replace("torch.", "")).name
+    try:
+        name = np.dtype(dtype).name  # names, numpy and jax dtypes
+    except TypeError:  # another framework's dtype object: its name (tf) or its last word (torch)
+        name = getattr(dtype, "name", None) or str(dtype).rpartition(".")[2]
     if name not in _FLOATS:
         raise ValueError(f"ivy_gym: dtype must be 'float32' or 'float64', got {dtype!r}.")
     return name
@@ -46,11 +52,15 @@ def _box(low: np.ndarray, high: np.ndarray, dtype: str) -> spaces.Box:
 class _Facade:
     """What the single and the vector facades share: the core, its backend and the spaces."""
 
-    def _setup(self, core: Env, framework: Framework, dtype: Dtype, discrete: bool) -> None:
+    def _setup(
+        self, core: Env, framework: Framework, dtype: Dtype, discrete: bool, device: str | None
+    ) -> None:
         if not isinstance(core, Env):
             raise TypeError(f"ivy_gym facade: expected an ivy_gym.Env, got {type(core)!r}.")
         self.core = core
         self.xp = ivy.get_framework(f=framework)
+        #: Where the core's arrays live (None: the backend's default device).
+        self.device = device
         self._to_numpy = self.xp.to_numpy  # the backend's own: no dispatch at every step
         self.framework = self.xp.backend
         self.dtype = _dtype_name(dtype)
@@ -67,10 +77,10 @@ class _Facade:
         # Gymnasium's discrete actions {0, 1} index this table of core actions (push left,
         # right), in the facade's dtype: one ``take`` per step.
         self._discrete_actions = np.array([[-1.0], [1.0]], self.dtype)
-        # The step, resolved once: the core's kernel on the facade's namespace and parameters
-        # (the actions arrive in the backend's dtype, so ``Env.step``'s look-up of the backend
-        # and conversion of the action are not needed at every step).
-        self._step = functools.partial(core._step, self.xp, core.params)
+        # The step, resolved once: the core's kernel on the facade's namespace (the facade
+        # checks and converts the actions, so ``Env.step``'s look-up of the backend and its
+        # checks are not needed at every step).
+        self._step = functools.partial(core.kernel_step, self.xp)
         reset_low, reset_high = core.initial_bounds()
         random = reset_low != reset_high
         self._reset_low, self._random = reset_low, None if random.all() else random
@@ -91,8 +101,8 @@ class _Facade:
         return states
 
     def _to_backend(self, states: np.ndarray):
-        x = self.xp.asarray(np.asarray(states, np.float64), dtype=self.dtype)
-        return self.core._initial(self.xp, x)
+        x = self.xp.asarray(np.asarray(states, np.float64), dtype=self.dtype, device=self.device)
+        return self.core.kernel_initial(self.xp, x)
 
     def _numpy(self, x) -> np.ndarray:
         return np.asarray(self._to_numpy(x), dtype=self.dtype)
@@ -113,7 +123,7 @@ class _Facade:
                     f"{action!r}."
                 )
             core_action = self._discrete_actions.take(a, 0)
-            return self.xp.asarray(core_action)
+            return self.xp.asarray(core_action, device=self.device)
         want = (*batch, self.core.action_dim)
         if a.shape != want:
             raise ValueError(
@@ -125,7 +135,16 @@ class _Facade:
                 f"{self._name}: action(s) outside the action space [{self._action_low}, "
                 f"{self._action_high}]: {a[~inside]}. Clip or rescale the action (e.g. tanh)."
             )
-        return self.xp.asarray(a, dtype=self.dtype)
+        # float32 and float64 actions keep their dtype: the faithful tasks compute with them as
+        # Gymnasium does (its action spaces sample float32)
+        dtype = a.dtype if a.dtype in _KEPT_ACTION_DTYPES else self.dtype
+        return self.xp.asarray(a, dtype=dtype, device=self.device)
+
+    @property
+    def backend_state(self):
+        """The core's state as an array of the facade's backend, on its device (None before
+        ``reset``): what the physics steps, without a copy to the host."""
+        return self._state
 
     def _frame(self, state_row) -> np.ndarray:
         return self.core.render(state_row)
@@ -145,6 +164,7 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
         render_mode: None or ``'rgb_array'``.
         discrete: Gymnasium's CartPole actions {0, 1} (push left/right) instead of the core's
             continuous action.
+        device: where the core's arrays live (``'gpu:0'``; None: the backend's default).
 
     Example:
         >>> env = GymnasiumEnv(ivy_gym.Pendulum(), framework="jax", dtype="float64")
@@ -160,8 +180,9 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
         dtype: Dtype = "float32",
         render_mode: str | None = None,
         discrete: bool = False,
+        device: str | None = None,
     ) -> None:
-        self._setup(core, framework, dtype, discrete)
+        self._setup(core, framework, dtype, discrete, device)
         self.metadata = {"render_modes": ["rgb_array"], "render_fps": core.render_fps}
         if render_mode not in (None, "rgb_array"):
             raise ValueError(
@@ -185,12 +206,12 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
                 f"{self._name}: the state has shape ({self.core.state_dim},) "
                 f"{self.core.state_names}; got shape {value.shape}."
             )
-        self._state = self.xp.asarray(value, dtype=self.dtype)
+        self._state = self.xp.asarray(value, dtype=self.dtype, device=self.device)
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
         super().reset(seed=seed)
         self._state = self._to_backend(self._draw_states(self.np_random, None))
-        return self._numpy(self.core.observe(self._state)), {}
+        return self._numpy(self.core.kernel_observe(self.xp, self._state)), {}
 
     def step(self, action):
         if self._state is None:
@@ -230,10 +251,11 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
     Args:
         core: the environment's core.
         num_envs: number of copies.
-        framework, dtype, render_mode, discrete: as for :class:`GymnasiumEnv`.
+        framework, dtype, render_mode, discrete, device: as for :class:`GymnasiumEnv`.
         max_episode_steps: time limit per episode (None: none).
-        compile: run the batched step through ``ivy.compile_fn``; by default on jax and
-            tensorflow, whose compilers start in a second (torch.compile takes ~20 s).
+        compile: run the batched step through ``ivy.compile_fn``; by default where the
+            compiler keeps loops (jax, tensorflow: they also start in a second; torch.compile
+            takes ~20 s).
 
     Example:
         >>> envs = GymnasiumVectorEnv(ivy_gym.CartPole(), 1024, framework="jax", discrete=True)
@@ -252,8 +274,9 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         render_mode: str | None = None,
         discrete: bool = False,
         compile: bool | None = None,
+        device: str | None = None,
     ) -> None:
-        self._setup(core, framework, dtype, discrete)
+        self._setup(core, framework, dtype, discrete, device)
         if int(num_envs) < 1:
             raise ValueError(f"ivy_gym: num_envs must be at least 1, got {num_envs}.")
         if render_mode not in (None, "rgb_array"):
@@ -273,9 +296,12 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         self.action_space = batch_space(self.single_action_space, self.num_envs)
         self.observation_space = batch_space(self.single_observation_space, self.num_envs)
         if compile is None:
-            compile = self.framework in ("jax", "tensorflow")
+            # compilers that keep loops (jax, tensorflow) also start in about a second;
+            # torch.compile takes ~20 s, more than most runs of a vector environment gain
+            caps = self.xp.capabilities
+            compile = caps.compilation and caps.compiled_loops
         if compile:
-            self._step = ivy.compile_fn(core.step, f=self.xp)
+            self._step = ivy.compile_fn(self._step, f=self.xp)
         self._state = None
         self._steps = np.zeros(self.num_envs, np.int64)
         self._prev_done = np.zeros(self.num_envs, bool)
@@ -290,7 +316,7 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         self._state = self._to_backend(self._draw_states(self.np_random, self.num_envs))
         self._steps[:] = 0
         self._prev_done[:] = False
-        return self._numpy(self.core.observe(self._state)), {}
+        return self._numpy(self.core.kernel_observe(self.xp, self._state)), {}
 
     def step(self, actions):
         if self._state is None:
@@ -313,10 +339,10 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
             if not state_np.flags.writeable or state_np is self._to_numpy(self._state):
                 state_np = state_np.copy()
             state_np[restart] = self._numpy(fresh)
-            state = self.xp.asarray(state_np)
+            state = self.xp.asarray(state_np, device=self.device)
             if not obs.flags.writeable:
                 obs = obs.copy()
-            obs[restart] = self._numpy(self.core._observe(self.xp, self.core.params, fresh))
+            obs[restart] = self._numpy(self.core.kernel_observe(self.xp, fresh))
             reward[restart] = 0.0
             terminated[restart] = False
             truncated[restart] = False
