@@ -27,7 +27,7 @@ def _rows(rows):
     return [{k: v for k, v in r.items() if k not in TIME_COLUMNS} for r in rows]
 
 
-def _run(out, steps, *, resume=False, f="torch", keep=False):
+def _run(out, steps, *, resume=False, f="torch", keep=2):
     trainer = Trainer(
         steps, epoch_steps=32, test_episodes=1, show_progress=False, keep_checkpoints=keep
     )
