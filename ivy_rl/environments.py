@@ -158,14 +158,12 @@ def resolve_wrappers(
                 ) from None
         else:
             module, name = gym.wrappers, wrapper
-        cls = getattr(module, name, None)
+        try:
+            cls = getattr(module, name, None)
+        except ImportError as error:
+            raise ValueError(f"wrapper {wrapper!r} needs a package: {error}") from None
         if not (isinstance(cls, type) and issubclass(cls, gym.Wrapper)):
-            names = sorted(
-                n
-                for n in getattr(gym.wrappers, "__all__", dir(gym.wrappers))
-                if isinstance(getattr(gym.wrappers, n, None), type)
-                and issubclass(getattr(gym.wrappers, n), gym.Wrapper)
-            )
+            names = _gymnasium_wrapper_names()
             close = difflib.get_close_matches(wrapper, names, n=3)
             hint = f" did you mean: {', '.join(close)}?" if close else ""
             raise ValueError(
@@ -174,6 +172,18 @@ def resolve_wrappers(
             )
         resolved.append(cls)
     return resolved
+
+
+def _gymnasium_wrapper_names() -> list[str]:
+    names = []
+    for name in getattr(gym.wrappers, "__all__", ()):
+        try:  # some wrappers load optional packages when first touched
+            value = getattr(gym.wrappers, name)
+        except ImportError:
+            continue
+        if isinstance(value, type) and issubclass(value, gym.Wrapper):
+            names.append(name)
+    return sorted(names)
 
 
 def _wrappers(

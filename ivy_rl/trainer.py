@@ -365,7 +365,7 @@ class Trainer:
             )
             return
         name = type(agent).__name__
-        if (agent.observation_space, agent.action_space) != spaces:
+        if not all(map(_fits, (agent.observation_space, agent.action_space), spaces)):
             raise ValueError(
                 f"the {name} was initialized for observations {agent.observation_space} and "
                 f"actions {agent.action_space}, but the environment has {spaces[0]} and "
@@ -606,6 +606,18 @@ class Trainer:
         self.best_score = -np.inf if best is None else float(best)
         self.logger.restore(self.epochs)
         return observations
+
+
+def _fits(own: Any, other: Any) -> bool:
+    """Whether an agent built for the space ``own`` acts in ``other`` (the same kind, shape
+    and, for discrete spaces, the same actions; Box bounds may differ)."""
+    if type(own) is not type(other) or own.shape != other.shape:
+        return False
+    return all(
+        np.array_equal(getattr(own, key), getattr(other, key))
+        for key in ("n", "start", "nvec")
+        if hasattr(own, key)
+    )
 
 
 def _warn(message: str) -> None:
