@@ -34,6 +34,7 @@ import ivy
 from ivy.nest import multi_map_nest
 from ivy_rl import updaters
 from ivy_rl.agents.agent import Agent
+from ivy_rl.agents.defaults import check_setting
 from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.models import actor_critic
 from ivy_rl.normalizers import MeanStd, ReturnNormalizer, _fold_moments, _standard_deviation
@@ -116,6 +117,7 @@ class A2C(Agent):
                 f"{sorted(config)}"
             )
         config.update(settings)
+        config = {k: check_setting(k, v) for k, v in config.items()}
         if config["fusion"] not in FUSION_LEVELS:
             raise ValueError(
                 f"{type(self).__name__}: unknown fusion {config['fusion']!r}; choose one of "

@@ -224,7 +224,7 @@ def test_clear_errors_list_what_is_available():
     with pytest.raises(TypeError, match="its settings are"):
         ivy_rl.PPO(learning_rate=1.0)
     with pytest.raises(
-        ValueError, match="unknown fusion 'all'; choose one of 'auto', 'update', 'steps'"
+        ValueError, match="setting .fusion. must be one of .auto., .update., .steps., got .all."
     ):
         ivy_rl.PPO(fusion="all")
     with pytest.raises(TypeError, match="supported action spaces: Box, Discrete"):
