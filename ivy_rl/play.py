@@ -87,8 +87,8 @@ def play(
         wrappers=config.get("wrappers"),
         render_mode=render_mode,
     )
-    settings = config.get("agent_kwargs", config.get("agent_config", {}))
-    agent = make(config["agent"], **settings)
+    settings = config.get("agent_config") or config.get("agent_kwargs", {})
+    agent = make(config["agent"], environment=config["environment"], **settings)
     agent.initialize(
         env.observation_space,
         env.action_space,

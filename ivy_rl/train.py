@@ -171,6 +171,8 @@ def _resumed(explicit: dict[str, Any], out: str) -> dict[str, Any]:
             "--overwrite)"
         )
     settings = {**DEFAULTS, **{k: v for k, v in saved.items() if k in DEFAULTS}}
+    if isinstance(saved.get("agent_config"), dict):
+        settings["agent_config"] = saved["agent_config"]
     settings.update({k: v for k, v in explicit.items() if k in CHANGEABLE_ON_RESUME})
     return settings
 
@@ -230,7 +232,10 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
     from ivy_rl.agents import make
     from ivy_rl.trainer import Trainer
 
-    agent = make(settings["agent"], **settings["agent_kwargs"])  # validates the settings
+    # the defaults of the environment's task family, then the user's settings, each checked;
+    # a resumed run is rebuilt with every value it used (its config.json's agent_config)
+    agent_settings = settings.get("agent_config") or settings["agent_kwargs"]
+    agent = make(settings["agent"], environment=settings["environment"], **agent_settings)
     trainer = Trainer(
         settings["steps"],
         epoch_steps=settings["epoch_steps"],

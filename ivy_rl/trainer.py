@@ -246,7 +246,8 @@ class Trainer:
         ``device``, when given, must be its own.
 
         Args:
-            agent: the agent, or its name (``'PPO'``) for default settings.
+            agent: the agent, or its name (``'PPO'``) for the defaults of the environment's
+                task family (:func:`ivy_rl.agents.make`).
             environment: a Gymnasium id, or ``'module:EnvId'`` (the module registers it).
             workers: parallel environments.
             seed: seed of the agent and of the environments.
@@ -272,7 +273,7 @@ class Trainer:
         """
         checkpoint = self._prepare_folder(out, resume, overwrite)
         if isinstance(agent, str):
-            agent = make(agent)
+            agent = make(agent, environment=environment)
         if getattr(agent, "differentiable", False):
             agent.bind_environment(environment, dict(env_kwargs or {}))
         self.workers = Workers(

@@ -111,7 +111,8 @@ def test_resume_alone_continues_the_run_as_configured(tmp_path):
         (["--wrappers", "FlattenObservations"], "did you mean: FlattenObservation"),
         (["--environment", "no_such_module:Task-v0"], "cannot import the module"),
         (["--agent", "PPQ"], "unknown agent 'PPQ'"),
-        (["--agent", "PPO", "--agent-kwargs", '{"hidden_sizes": 64}'], ""),
+        (["--agent", "PPO", "--agent-kwargs", '{"hidden_sizes": 64}'], "hidden_sizes"),
+        (["--agent", "PPO", "--agent-kwargs", '{"segment_size": "32"}'], "segment_size"),
     ],
 )
 def test_settings_are_checked_before_anything_is_written(tmp_path, flags, message):
