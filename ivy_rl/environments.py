@@ -9,7 +9,12 @@ a new episode where one ended) and the true next observations, rewards, ``resets
 (terminated or truncated) and ``terminations`` (terminated only): a time limit is a reset, not
 a termination. It remembers each episode's seed and actions, so a checkpoint can bring every
 worker back to the same state by replaying them (Gymnasium's environments are deterministic
-given the seed and the actions).
+given the seed and the actions). With the time feature (the remaining time as an input), a time
+limit is reported as a termination too: the time-limits paper's time-aware setting, where the
+limit is part of the task.
+
+Environments are Gymnasium ids, also ``"module:EnvId"`` for one registered by the user's own
+module, with Gymnasium wrappers by name (:func:`resolve_wrappers`).
 
 Example:
     >>> workers = Workers("CartPole-v1", 8, seed=0)

@@ -88,7 +88,7 @@ def _parser() -> argparse.ArgumentParser:
         description=__doc__.split("\n")[0],
         argument_default=argparse.SUPPRESS,
     )
-    p.add_argument("--agent", help="A2C, PPO, TRPO, Uniform or Constant (default PPO)")
+    p.add_argument("--agent", help="a name of ivy_rl.agents.AGENTS (default PPO)")
     p.add_argument("--agent-kwargs", type=_json, help="agent settings as JSON")
     p.add_argument(
         "--environment", "--env", help="a Gymnasium id, or module:EnvId (default CartPole-v1)"

@@ -426,7 +426,7 @@ class Trainer:
                     f"cannot resume the run in {out!r} with other settings ({'; '.join(differ)})"
                 )
         if overwrite:
-            for entry in RUN_ENTRIES:
+            for entry in (*RUN_ENTRIES, ".best.partial"):
                 target = os.path.join(out, entry)
                 if os.path.isdir(target):
                     shutil.rmtree(target)
