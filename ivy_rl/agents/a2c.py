@@ -450,17 +450,25 @@ class A2C(Agent):
 
     def _run_loop(self, name, body, carry, xs, *consts):
         """``ivy.scan`` of ``body(carry, x, *consts)`` over the rows of ``xs``: inside the fused
-        update, or as a host loop over ``body`` compiled on its own (``fusion='steps'``)."""
+        update (or eagerly), else through ``ivy.compiled_scan`` (``fusion='steps'``), which puts
+        the compile boundary where the framework's compiler wants it: around the whole scan
+        where it keeps loops, around ``body`` with a host loop where it unrolls them."""
         xp = self.xp
         steps = int(xs.shape[0])
-        if self._fused or steps == 0:
+        if self._fused or steps == 0 or not self.compiled:
             return xp.scan(lambda c, x: body(c, x, *consts), carry, xs)
-        step = self._step_function(name, body)
-        ys = []
-        for i in range(steps):
-            carry, y = step(carry, xs[i], *consts)
-            ys.append(y)
-        return carry, {k: xp.stack([y[k] for y in ys]) for k in ys[0]}
+        run = self._compiled_steps.get(name)
+        if run is None:
+
+            def scan_body(state, x):
+                inner, fixed = state
+                inner, y = body(inner, x, *fixed)
+                return (inner, fixed), y
+
+            run = self._counted(xp.compiled_scan(scan_body), name)
+            self._compiled_steps[name] = run
+        (carry, _), ys = run((carry, consts), xs)
+        return carry, ys
 
     # ------------------------------------------------------------------------------------------
     # Acting
