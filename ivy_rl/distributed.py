@@ -35,11 +35,16 @@ def _ray():
 class _Group:
     """A group of environments inside one Ray actor."""
 
-    def __init__(self, env_id, count, env_kwargs, time_feature):
+    def __init__(self, env_id, count, env_kwargs, time_feature, wrappers):
         from ivy_rl.environments import make_vector_env
 
         self.env = make_vector_env(
-            env_id, count, vectorization="sync", env_kwargs=env_kwargs, time_feature=time_feature
+            env_id,
+            count,
+            vectorization="sync",
+            env_kwargs=env_kwargs,
+            time_feature=time_feature,
+            wrappers=wrappers,
         )
 
     def spaces(self):
@@ -69,6 +74,7 @@ class RayVectorEnv(gym.vector.VectorEnv):
             between them as evenly as possible.
         env_kwargs: keyword arguments of ``gymnasium.make``.
         time_feature: append the remaining time to the observations.
+        wrappers: wrappers of each environment (names or classes).
         num_cpus: CPUs Ray reserves for each actor.
 
     Example:
@@ -84,6 +90,7 @@ class RayVectorEnv(gym.vector.VectorEnv):
         groups: int | None = None,
         env_kwargs: dict[str, Any] | None = None,
         time_feature: bool = False,
+        wrappers: Any = None,
         num_cpus: float = 0.5,
     ) -> None:
         ray = _ray()
@@ -94,7 +101,7 @@ class RayVectorEnv(gym.vector.VectorEnv):
             raise ValueError(f"groups must be between 1 and num_envs={num_envs}, got {groups}")
         sizes = [num_envs // groups + (i < num_envs % groups) for i in range(groups)]
         remote = ray.remote(num_cpus=num_cpus)(_Group)
-        self._actors = [remote.remote(env_id, n, env_kwargs, time_feature) for n in sizes]
+        self._actors = [remote.remote(env_id, n, env_kwargs, time_feature, wrappers) for n in sizes]
         self._slices = []
         start = 0
         for n in sizes:

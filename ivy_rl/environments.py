@@ -9,7 +9,12 @@ a new episode where one ended) and the true next observations, rewards, ``resets
 (terminated or truncated) and ``terminations`` (terminated only): a time limit is a reset, not
 a termination. It remembers each episode's seed and actions, so a checkpoint can bring every
 worker back to the same state by replaying them (Gymnasium's environments are deterministic
-given the seed and the actions).
+given the seed and the actions). With the time feature (the remaining time as an input), a time
+limit is reported as a termination too: the time-limits paper's time-aware setting, where the
+limit is part of the task.
+
+Environments are Gymnasium ids, also ``"module:EnvId"`` for one registered by the user's own
+module, with Gymnasium wrappers by name (:func:`resolve_wrappers`).
 
 Example:
     >>> workers = Workers("CartPole-v1", 8, seed=0)
@@ -20,13 +25,21 @@ Example:
 from __future__ import annotations
 
 import difflib
+import importlib
 from collections.abc import Callable, Sequence
 from typing import Any
 
 import gymnasium as gym
 import numpy as np
 
-__all__ = ["TimeFeature", "make_env", "make_vector_env", "Workers", "check_environment_id"]
+__all__ = [
+    "TimeFeature",
+    "make_env",
+    "make_vector_env",
+    "Workers",
+    "check_environment_id",
+    "resolve_wrappers",
+]
 
 VECTORIZATION_MODES = ("sync", "async", "ray")
 ASYNC_START_METHOD = "forkserver"  # how async workers start (multiprocessing's start method)
@@ -85,29 +98,104 @@ class TimeFeature(gym.ObservationWrapper):
 def check_environment_id(env_id: str) -> None:
     """Raise a ValueError listing the registered ids when ``env_id`` is not registered.
 
+    ``env_id`` may name the module that registers it, as Gymnasium's ``gymnasium.make`` allows:
+    ``"my_package.envs:MyTask-v0"`` imports ``my_package.envs`` first.
+
     Example:
         >>> check_environment_id("CartPol-v1")
         ValueError: unknown environment 'CartPol-v1'; did you mean: CartPole-v1? ...
     """
-    if env_id in gym.registry:
+    if not isinstance(env_id, str) or not env_id:
+        raise TypeError(f"environment must be a Gymnasium id (a string), got {env_id!r}")
+    name = env_id
+    if ":" in env_id:
+        module, name = env_id.split(":", 1)
+        try:
+            importlib.import_module(module)
+        except ImportError as error:
+            raise ValueError(
+                f"environment {env_id!r}: cannot import the module {module!r} that should "
+                f"register {name!r} ({error}); check that it is installed or on PYTHONPATH"
+            ) from None
+    if name in gym.registry:
         return
-    if isinstance(env_id, str) and env_id.startswith("ivy_gym/"):
+    if name.startswith("ivy_gym/"):
         try:  # ivy_gym registers its environments when imported
             import ivy_gym  # noqa: F401
         except ImportError:
             pass
-        if env_id in gym.registry:
+        if name in gym.registry:
             return
     available = sorted(gym.registry)
-    close = difflib.get_close_matches(str(env_id), available, n=3)
+    close = difflib.get_close_matches(name, available, n=3)
     hint = f" did you mean: {', '.join(close)}?" if close else ""
     raise ValueError(
         f"unknown environment {env_id!r};{hint} registered environments: {', '.join(available)}"
     )
 
 
-def _wrappers(time_feature: bool) -> list[Callable[[gym.Env], gym.Env]]:
-    return [TimeFeature] if time_feature else []
+def resolve_wrappers(
+    wrappers: Sequence[str | type] | None,
+) -> list[Callable[[gym.Env], gym.Env]]:
+    """Gymnasium wrappers by name: a name of ``gymnasium.wrappers`` (``"FlattenObservation"``),
+    or ``"package.module:ClassName"`` for a wrapper of your own; classes pass through. Each
+    wrapper is applied with its default arguments, in the order given.
+
+    Raises:
+        ValueError: a name that is not a wrapper, with the names that exist.
+
+    Example:
+        >>> resolve_wrappers(["FlattenObservation", "ClipAction"])
+        [<class 'gymnasium.wrappers...FlattenObservation'>, <class '...ClipAction'>]
+    """
+    resolved = []
+    for wrapper in wrappers or ():
+        if not isinstance(wrapper, str):
+            resolved.append(wrapper)
+            continue
+        if ":" in wrapper:
+            module_name, name = wrapper.split(":", 1)
+            try:
+                module = importlib.import_module(module_name)
+            except ImportError as error:
+                raise ValueError(
+                    f"wrapper {wrapper!r}: cannot import {module_name!r} ({error})"
+                ) from None
+        else:
+            module, name = gym.wrappers, wrapper
+        try:
+            cls = getattr(module, name, None)
+        except ImportError as error:
+            raise ValueError(f"wrapper {wrapper!r} needs a package: {error}") from None
+        if not (isinstance(cls, type) and issubclass(cls, gym.Wrapper)):
+            names = _gymnasium_wrapper_names()
+            close = difflib.get_close_matches(wrapper, names, n=3)
+            hint = f" did you mean: {', '.join(close)}?" if close else ""
+            raise ValueError(
+                f"unknown wrapper {wrapper!r};{hint} give a name of gymnasium.wrappers "
+                f"({', '.join(names)}) or 'package.module:ClassName'"
+            )
+        resolved.append(cls)
+    return resolved
+
+
+def _gymnasium_wrapper_names() -> list[str]:
+    names = []
+    for name in getattr(gym.wrappers, "__all__", ()):
+        try:  # some wrappers load optional packages when first touched
+            value = getattr(gym.wrappers, name)
+        except ImportError:
+            continue
+        if isinstance(value, type) and issubclass(value, gym.Wrapper):
+            names.append(name)
+    return sorted(names)
+
+
+def _wrappers(
+    wrappers: Sequence[str | type] | None, time_feature: bool
+) -> list[Callable[[gym.Env], gym.Env]]:
+    """The user's wrappers, then the time feature (which needs a flat Box observation)."""
+    return resolve_wrappers(wrappers) + ([TimeFeature] if time_feature else [])
 
 
 def make_env(
@@ -116,8 +204,16 @@ def make_env(
     env_kwargs: dict[str, Any] | None = None,
     time_feature: bool = False,
     render_mode: str | None = None,
+    wrappers: Sequence[str | type] | None = None,
 ) -> gym.Env:
     """One environment (for tests and play), with the trainer's wrappers.
+
+    Args:
+        env_id: a Gymnasium id, optionally ``"module:EnvId"``.
+        env_kwargs: keyword arguments of ``gymnasium.make``.
+        time_feature: append the remaining time to the observations.
+        render_mode: Gymnasium's render mode.
+        wrappers: wrappers applied first (names, see :func:`resolve_wrappers`).
 
     Example:
         >>> env = make_env("Pendulum-v1", time_feature=True)
@@ -127,7 +223,7 @@ def make_env(
     if render_mode is not None:
         kwargs["render_mode"] = render_mode
     env = gym.make(env_id, **kwargs)
-    for wrap in _wrappers(time_feature):
+    for wrap in _wrappers(wrappers, time_feature):
         env = wrap(env)
     return env
 
@@ -140,6 +236,7 @@ def make_vector_env(
     env_kwargs: dict[str, Any] | None = None,
     time_feature: bool = False,
     ray_groups: int | None = None,
+    wrappers: Sequence[str | type] | None = None,
 ) -> gym.vector.VectorEnv:
     """``workers`` copies of an environment as one vector environment whose automatic resets
     are disabled (:class:`Workers` resets them).
@@ -153,6 +250,7 @@ def make_vector_env(
         env_kwargs: keyword arguments of ``gymnasium.make``.
         time_feature: append the remaining time to the observations.
         ray_groups: with ``'ray'``, the number of actors (default: one per environment).
+        wrappers: wrappers of each environment (names, see :func:`resolve_wrappers`).
 
     Example:
         >>> venv = make_vector_env("CartPole-v1", 8, vectorization="async")
@@ -164,11 +262,17 @@ def make_vector_env(
     if workers < 1:
         raise ValueError(f"workers must be >= 1, got {workers}")
     check_environment_id(env_id)
+    wrap = _wrappers(wrappers, time_feature)  # unknown wrappers fail here, in this process
     if vectorization == "ray":
         from ivy_rl.distributed import RayVectorEnv
 
         return RayVectorEnv(
-            env_id, workers, groups=ray_groups, env_kwargs=env_kwargs, time_feature=time_feature
+            env_id,
+            workers,
+            groups=ray_groups,
+            env_kwargs=env_kwargs,
+            time_feature=time_feature,
+            wrappers=wrappers,
         )
     vector_kwargs: dict[str, Any] = {"autoreset_mode": gym.vector.AutoresetMode.DISABLED}
     if vectorization == "async":
@@ -180,7 +284,7 @@ def make_vector_env(
         num_envs=workers,
         vectorization_mode=vectorization,
         vector_kwargs=vector_kwargs,
-        wrappers=_wrappers(time_feature),
+        wrappers=wrap,
         **(env_kwargs or {}),
     )
 
@@ -193,7 +297,12 @@ class Workers:
             disabled.
         workers: number of environments (with an id).
         seed: seed of the generator of the episodes' seeds.
-        vectorization, env_kwargs, time_feature, ray_groups: as for :func:`make_vector_env`.
+        vectorization, env_kwargs, time_feature, ray_groups, wrappers: as for
+            :func:`make_vector_env`.
+        terminal_time_limits: report the end of an episode at its time limit as a termination
+            (default: with ``time_feature``, as in the time-limits paper: once the remaining
+            time is an input, the time limit is part of the task and terminal). False: a time
+            limit is a reset only, and agents bootstrap there (partial-episode bootstrapping).
 
     Example:
         >>> workers = Workers("Pendulum-v1", 4, seed=1, vectorization="async")
@@ -209,7 +318,12 @@ class Workers:
         env_kwargs: dict[str, Any] | None = None,
         time_feature: bool = False,
         ray_groups: int | None = None,
+        wrappers: Sequence[str | type] | None = None,
+        terminal_time_limits: bool | None = None,
     ) -> None:
+        self.terminal_time_limits = (
+            bool(time_feature) if terminal_time_limits is None else bool(terminal_time_limits)
+        )
         if isinstance(env_id, gym.vector.VectorEnv):
             self.env = env_id
         else:
@@ -220,6 +334,7 @@ class Workers:
                 env_kwargs=env_kwargs,
                 time_feature=time_feature,
                 ray_groups=ray_groups,
+                wrappers=wrappers,
             )
         self.num_workers = self.env.num_envs
         self.observation_space = self.env.single_observation_space
@@ -249,7 +364,8 @@ class Workers:
 
         Returns:
             ``(observations, infos)``: the observations to act on next, and ``infos`` with the
-            true next ``observations``, ``rewards``, ``resets`` and ``terminations``.
+            true next ``observations``, ``rewards``, ``resets`` and ``terminations`` (time limits
+            included with ``terminal_time_limits``).
         """
         actions = np.asarray(actions)
         for i in range(self.num_workers):
@@ -258,6 +374,8 @@ class Workers:
         next_obs = np.asarray(next_obs)
         terminated = np.asarray(terminated, bool)
         resets = terminated | np.asarray(truncated, bool)
+        if self.terminal_time_limits:
+            terminated = resets
         observations = next_obs
         if resets.any():
             seeds = self._draw_seeds(resets)

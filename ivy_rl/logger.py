@@ -19,6 +19,7 @@ import math
 import os
 import sys
 import time
+import warnings
 from typing import Any
 
 import numpy as np
@@ -47,6 +48,7 @@ class Logger:
         self._stats: set[str] = set()
         self._last_bar = 0.0
         self._writer = None
+        self.warnings: list[str] = []
         if out is not None:
             os.makedirs(out, exist_ok=True)
             if tensorboard:
@@ -62,6 +64,11 @@ class Logger:
         self._values.setdefault(key, []).extend(values.tolist())
         if stats:
             self._stats.add(key)
+
+    def warning(self, message: str) -> None:
+        """Report a problem of the run (kept in ``self.warnings``, and a ``RuntimeWarning``)."""
+        self.warnings.append(message)
+        warnings.warn(message, RuntimeWarning, stacklevel=2)
 
     def dump(self, fixed: dict[str, Any]) -> dict[str, Any]:
         """End the epoch: summarise the stored values with ``fixed`` scalars into one row,

@@ -1,9 +1,11 @@
-"""``python -m ivy_rl.play``: reload a run's last checkpoint and run test episodes, rendering
-them to a video or on screen.
+"""``python -m ivy_rl.play``: reload a run's last checkpoint (or its best model) and run test
+episodes, rendering them to a video or on screen; prints each episode's score and the mean and
+spread over the episodes.
 
 Example:
     python -m ivy_rl.play runs/ppo-cartpole --episodes 3 --video play.mp4
     python -m ivy_rl.play runs/ppo-cartpole --framework jax     # on another framework
+    python -m ivy_rl.play runs/ppo-cartpole --best --episodes 10
 
 Videos: ``.gif`` with imageio (Pillow), ``.mp4`` with imageio and imageio-ffmpeg.
 """
@@ -11,14 +13,15 @@ Videos: ``.gif`` with imageio (Pillow), ``.mp4`` with imageio and imageio-ffmpeg
 from __future__ import annotations
 
 import argparse
-import json
 import os
-import sys
+import warnings
 from typing import Any
 
 import numpy as np
 
-__all__ = ["main", "play"]
+from ivy_rl import _cli
+
+__all__ = ["main", "play", "summary"]
 
 
 def play(
@@ -30,6 +33,8 @@ def play(
     seed: int = 0,
     render: bool = False,
     fps: int = 30,
+    best: bool = False,
+    device: str | None = None,
 ) -> list[dict[str, float]]:
     """Run test episodes with the agent of the last checkpoint of ``run``.
 
@@ -41,6 +46,9 @@ def play(
         seed: seed of the first episode (episode ``i`` uses ``seed + i``).
         render: show the episodes in a window (``render_mode='human'``).
         fps: frames per second of the video.
+        best: load the run's best model (``best/``, the best mean test score) instead of its
+            last checkpoint.
+        device: where the agent's arrays live (default: the run's device).
 
     Returns:
         ``[{'score': ..., 'length': ...}]`` per episode.
@@ -50,32 +58,37 @@ def play(
     """
     from ivy_rl.agents import make
     from ivy_rl.environments import make_env
-    from ivy_rl.trainer import latest_checkpoint
+    from ivy_rl.trainer import check_checkpoint, usable_checkpoint
 
-    config_path = os.path.join(run, "config.json")
-    if not os.path.exists(config_path):
-        raise FileNotFoundError(
-            f"{run!r} is not a run folder: it has no config.json (python -m ivy_rl.train "
-            "--out <folder> writes one)"
-        )
-    with open(config_path) as fh:
-        config = json.load(fh)
-    checkpoint = latest_checkpoint(run)
-    if checkpoint is None:
-        raise FileNotFoundError(f"no checkpoint in {os.path.join(run, 'checkpoints')}")
+    if episodes < 1:
+        raise ValueError(f"episodes must be >= 1, got {episodes}")
+    config = _cli.read_config(run)
+    if best:
+        checkpoint = os.path.join(run, "best")
+        if not os.path.isdir(checkpoint):
+            raise FileNotFoundError(
+                f"no best model in {checkpoint}: runs keep one when they have test episodes"
+            )
+        check_checkpoint(checkpoint)
+    else:
+        checkpoint = usable_checkpoint(run, warn=lambda m: warnings.warn(m, stacklevel=3))
+        if checkpoint is None:
+            raise FileNotFoundError(f"no checkpoint in {os.path.join(run, 'checkpoints')}")
     framework = framework or config["framework"]
-    if config["dtype"] == "float64" and framework == "jax":
-        import jax
-
-        jax.config.update("jax_enable_x64", True)
+    device = device or config.get("device")
+    _cli.check_framework(framework, config["dtype"])
+    _cli.check_device(device, framework)
+    _cli.enable_float64(framework, config["dtype"])
     render_mode = "human" if render else ("rgb_array" if video else None)
     env = make_env(
         config["environment"],
         env_kwargs=config.get("env_kwargs"),
         time_feature=config.get("time_feature", False),
+        wrappers=config.get("wrappers"),
         render_mode=render_mode,
     )
-    agent = make(config["agent"], **config.get("agent_kwargs", {}))
+    settings = config.get("agent_config") or config.get("agent_kwargs", {})
+    agent = make(config["agent"], environment=config["environment"], **settings)
     agent.initialize(
         env.observation_space,
         env.action_space,
@@ -83,6 +96,7 @@ def play(
         f=framework,
         dtype=config["dtype"],
         compile=False,
+        **({"device": device} if device else {}),
     )
     agent.load(os.path.join(checkpoint, "agent"))
     frames, results = [], []
@@ -101,9 +115,28 @@ def play(
         results.append({"score": score, "length": length})
         print(f"episode {episode}: score {score:.2f}, length {length}")
     env.close()
+    print(summary(results))
     if video:
         _write_video(video, frames, fps)
     return results
+
+
+def summary(results: list[dict[str, float]]) -> str:
+    """One line: the mean score of the episodes, its standard deviation, minimum and maximum,
+    and the mean length.
+
+    Example:
+        >>> summary([{"score": 10.0, "length": 10}, {"score": 20.0, "length": 20}])
+        'score 15.00 +- 5.00 (min 10.00, max 20.00) over 2 episodes, length 15.0'
+    """
+    scores = np.array([r["score"] for r in results], np.float64)
+    lengths = np.array([r["length"] for r in results], np.float64)
+    plural = "s" if len(results) != 1 else ""
+    return (
+        f"score {scores.mean():.2f} +- {scores.std():.2f} (min {scores.min():.2f}, "
+        f"max {scores.max():.2f}) over {len(results)} episode{plural}, "
+        f"length {lengths.mean():.1f}"
+    )
 
 
 def _write_video(path: str, frames: list[np.ndarray], fps: int) -> None:
@@ -135,6 +168,8 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--render", action="store_true", help="show the episodes in a window")
     p.add_argument("--fps", type=int, default=30)
+    p.add_argument("--best", action="store_true", help="the best model, not the last")
+    p.add_argument("--device", default=None, help="where the agent's arrays live")
     args = p.parse_args(argv)
     return play(
         args.run,
@@ -144,12 +179,10 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
         seed=args.seed,
         render=args.render,
         fps=args.fps,
+        best=args.best,
+        device=args.device,
     )
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except (ValueError, TypeError, FileNotFoundError) as error:
-        print(f"error: {error}", file=sys.stderr)
-        raise SystemExit(2) from None
+    _cli.command_line(main)

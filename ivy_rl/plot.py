@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from ivy_rl import _cli
 from ivy_rl.logger import read_log
 
 __all__ = ["main", "plot", "group_runs"]
@@ -66,9 +67,14 @@ def plot(
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    missing = [p for p in paths if not os.path.exists(os.path.join(p, "log.csv"))]
-    if missing:
-        raise FileNotFoundError(f"no log.csv in {missing}")
+    for path in paths:
+        if not os.path.isdir(path):
+            raise FileNotFoundError(f"no run folder {path!r}: it does not exist")
+        if not os.path.exists(os.path.join(path, "log.csv")):
+            raise FileNotFoundError(
+                f"{path!r} is not a run folder: it has no log.csv (python -m ivy_rl.train "
+                "--out <folder> writes one)"
+            )
     if labels is not None:
         if len(labels) != len(paths):
             raise ValueError(f"{len(labels)} labels for {len(paths)} runs")
@@ -85,7 +91,10 @@ def plot(
         for rows in logs:
             points = [(r[x], r[y]) for r in rows if x in r and y in r]
             if not points:
-                raise ValueError(f"no column {y!r} against {x!r} in a log of {label!r}")
+                raise ValueError(
+                    f"no column {y!r} against {x!r} in a log of {label!r} (a run without test "
+                    "episodes has no test/ columns: choose --y train/episode_score/mean)"
+                )
             series.append(np.asarray(points))
         grid = np.unique(np.concatenate([s[:, 0] for s in series]))
         values = np.stack([np.interp(grid, s[:, 0], s[:, 1]) for s in series])
@@ -120,4 +129,4 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
 
 
 if __name__ == "__main__":
-    main()
+    _cli.command_line(main)

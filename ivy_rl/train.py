@@ -4,10 +4,18 @@ Example:
     python -m ivy_rl.train --agent PPO --environment CartPole-v1 --framework torch \\
         --steps 100000 --seed 0 --out runs/ppo-cartpole \\
         --agent-kwargs '{"segment_size": 32, "batch_size": 256, "epochs": 20}'
+    python -m ivy_rl.train --out runs/ppo-cartpole --resume       # continue it as configured
+    python -m ivy_rl.train --out runs/ppo-cartpole --resume --steps 200000 -f jax
 
-The run's folder gets ``config.json`` (the command's settings, read by ``ivy_rl.play`` and by
-``--resume``), ``log.csv`` (one row per epoch), ``checkpoints/`` and, with ``--tensorboard``,
-``tensorboard/``. ``--resume`` continues from the last checkpoint, on any framework.
+The run's folder gets ``config.json`` (every setting used, read by ``ivy_rl.play`` and by
+``--resume``), ``log.csv`` (one row per epoch), ``checkpoints/`` (the last
+``--keep-checkpoints``), ``best/`` (the agent with the best test score) and, with
+``--tensorboard``, ``tensorboard/``. Every setting is checked before anything is written. A
+folder that is not empty is refused unless ``--resume`` (continue its run) or ``--overwrite``
+(start again). ``--resume`` takes the run's settings from its ``config.json``; an explicit flag
+may change only ``--steps``, ``--framework``, ``--device``, ``--vectorization``,
+``--ray-groups``, ``--eager``, ``--tensorboard``, ``--keep-checkpoints`` and ``--quiet``, and
+any other flag that contradicts the saved run is an error.
 """
 
 from __future__ import annotations
@@ -15,10 +23,52 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import sys
 from typing import Any
 
-__all__ = ["main", "parse_args"]
+from ivy_rl import _cli
+
+__all__ = ["main", "parse_args", "DEFAULTS", "CHANGEABLE_ON_RESUME"]
+
+DEFAULTS: dict[str, Any] = {
+    "agent": "PPO",
+    "agent_kwargs": {},
+    "environment": "CartPole-v1",
+    "env_kwargs": {},
+    "wrappers": [],
+    "framework": "torch",
+    "dtype": "float32",
+    "device": None,
+    "steps": 100_000,
+    "epoch_steps": None,
+    "save_steps": None,
+    "test_episodes": 5,
+    "keep_checkpoints": 2,
+    "workers": 8,
+    "vectorization": "sync",
+    "ray_groups": None,
+    "time_feature": False,
+    "seed": 0,
+    "out": None,
+    "eager": False,
+    "tensorboard": False,
+    "resume": False,
+    "overwrite": False,
+    "quiet": False,
+}
+# what a resumed run may change; every other setting comes from its config.json
+CHANGEABLE_ON_RESUME = (
+    "steps",
+    "framework",
+    "device",
+    "vectorization",
+    "ray_groups",
+    "eager",
+    "tensorboard",
+    "keep_checkpoints",
+    "quiet",
+    "out",
+    "resume",
+)
 
 
 def _json(text: str) -> dict[str, Any]:
@@ -31,46 +81,136 @@ def _json(text: str) -> dict[str, Any]:
     return value
 
 
-def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
-    """The command line's settings."""
-    p = argparse.ArgumentParser(prog="python -m ivy_rl.train", description=__doc__.split("\n")[0])
-    p.add_argument("--agent", default="PPO", help="A2C, PPO, TRPO, Uniform or Constant")
-    p.add_argument("--agent-kwargs", type=_json, default={}, help="agent settings as JSON")
-    p.add_argument("--environment", "--env", default="CartPole-v1", help="a Gymnasium id")
-    p.add_argument("--env-kwargs", type=_json, default={}, help="gymnasium.make kwargs as JSON")
-    p.add_argument("--framework", "-f", default="torch", help="torch, jax or tensorflow")
-    p.add_argument("--dtype", default="float32", choices=("float32", "float64"))
-    p.add_argument("--steps", type=int, default=100_000)
-    p.add_argument("--epoch-steps", type=int, default=None)
-    p.add_argument("--save-steps", type=int, default=None)
-    p.add_argument("--test-episodes", type=int, default=5)
-    p.add_argument("--workers", type=int, default=8, help="parallel environments")
+def _parser() -> argparse.ArgumentParser:
+    """The parser; flags that are not given are absent from its namespace."""
+    p = argparse.ArgumentParser(
+        prog="python -m ivy_rl.train",
+        description=__doc__.split("\n")[0],
+        argument_default=argparse.SUPPRESS,
+    )
+    p.add_argument("--agent", help="a name of ivy_rl.agents.AGENTS (default PPO)")
+    p.add_argument("--agent-kwargs", type=_json, help="agent settings as JSON")
+    p.add_argument(
+        "--environment", "--env", help="a Gymnasium id, or module:EnvId (default CartPole-v1)"
+    )
+    p.add_argument("--env-kwargs", type=_json, help="gymnasium.make kwargs as JSON")
+    p.add_argument(
+        "--wrappers",
+        nargs="+",
+        metavar="WRAPPER",
+        help="Gymnasium wrappers by name (FlattenObservation, or package.module:Class)",
+    )
+    p.add_argument("--framework", "-f", help="torch, jax or tensorflow (default torch)")
+    p.add_argument("--dtype", choices=("float32", "float64"))
+    p.add_argument("--device", help="where the agent's arrays live: cpu, gpu:0 ...")
+    p.add_argument("--steps", type=int, help="environment steps (default 100000)")
+    p.add_argument("--epoch-steps", type=int, help="steps per epoch (default steps / 20)")
+    p.add_argument("--save-steps", type=int, help="steps between checkpoints (default: epoch)")
+    p.add_argument("--test-episodes", type=int, help="test episodes per epoch (default 5)")
+    p.add_argument("--keep-checkpoints", type=int, help="checkpoints kept (default 2)")
+    p.add_argument("--workers", type=int, help="parallel environments (default 8)")
     p.add_argument(
         "--vectorization",
-        default="sync",
         choices=("sync", "async", "ray"),
         help="environment workers: one process, subprocesses, or Ray actors",
     )
+    p.add_argument("--ray-groups", type=int, help="Ray actors (with --vectorization ray)")
     p.add_argument(
-        "--ray-groups", type=int, default=None, help="Ray actors (with --vectorization ray)"
+        "--time-feature",
+        action="store_true",
+        help="the remaining time is an input and time limits are terminal (default: time "
+        "limits are bootstrapped through)",
     )
-    p.add_argument("--time-feature", action="store_true", help="append the remaining time")
-    p.add_argument("--seed", type=int, default=0)
-    p.add_argument(
-        "--out", default=None, help="the run's folder (default: runs/<agent>-<env>-<seed>)"
-    )
+    p.add_argument("--seed", type=int)
+    p.add_argument("--out", help="the run's folder (default: runs/<agent>-<env>-<seed>)")
     p.add_argument("--eager", action="store_true", help="do not compile the agent's functions")
     p.add_argument("--tensorboard", action="store_true", help="also log to TensorBoard")
-    p.add_argument("--resume", action="store_true", help="continue from the last checkpoint")
+    p.add_argument("--resume", action="store_true", help="continue the run in --out")
+    p.add_argument("--overwrite", action="store_true", help="start again in a used --out")
     p.add_argument("--quiet", action="store_true", help="no progress bar or table")
-    return p.parse_args(argv)
+    return p
 
 
-def _enable_float64(framework: str, dtype: str) -> None:
-    if dtype == "float64" and framework == "jax":
-        import jax
+def _explicit(argv: list[str] | None) -> dict[str, Any]:
+    return vars(_parser().parse_args(argv))
 
-        jax.config.update("jax_enable_x64", True)
+
+def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line's settings, with the defaults for those not given (without the saved
+    settings that ``--resume`` reads)."""
+    return argparse.Namespace(**{**DEFAULTS, **_explicit(argv)})
+
+
+def _flag(key: str) -> str:
+    return "--" + key.replace("_", "-")
+
+
+def _default_out(settings: dict[str, Any]) -> str:
+    name = f"{settings['agent']}-{settings['environment']}-{settings['seed']}"
+    return os.path.join("runs", name.replace("/", "_").replace(":", "_"))
+
+
+def _resumed(explicit: dict[str, Any], out: str) -> dict[str, Any]:
+    """The saved run's settings, with the explicit flags that may change on resume."""
+    saved = _cli.read_config(out)
+    problems = []
+    for key, value in explicit.items():
+        if key in CHANGEABLE_ON_RESUME or key not in saved or saved[key] is None:
+            continue
+        same = (
+            str(saved[key]).lower() == str(value).lower()
+            if key == "agent"
+            else json.loads(json.dumps(saved[key])) == json.loads(json.dumps(value))
+        )
+        if not same:
+            problems.append(f"{_flag(key)} {value!r} (the run has {saved[key]!r})")
+    if problems:
+        raise ValueError(
+            f"--resume continues the run in {out!r} as it was configured; these flags contradict "
+            f"it: {'; '.join(problems)}. Leave them out, or start a new run (another --out, or "
+            "--overwrite)"
+        )
+    settings = {**DEFAULTS, **{k: v for k, v in saved.items() if k in DEFAULTS}}
+    if isinstance(saved.get("agent_config"), dict):
+        settings["agent_config"] = saved["agent_config"]
+    settings.update({k: v for k, v in explicit.items() if k in CHANGEABLE_ON_RESUME})
+    return settings
+
+
+def _check(settings: dict[str, Any]) -> None:
+    """Every setting, before anything is written; each error names its flag."""
+    for key, minimum in (
+        ("steps", 1),
+        ("epoch_steps", 1),
+        ("save_steps", 1),
+        ("test_episodes", 0),
+        ("keep_checkpoints", 1),
+        ("workers", 1),
+        ("ray_groups", 1),
+        ("seed", 0),
+    ):
+        value = settings[key]
+        if value is None and key in ("epoch_steps", "save_steps", "ray_groups"):
+            continue
+        if isinstance(value, bool) or not isinstance(value, int) or value < minimum:
+            raise ValueError(f"{_flag(key)} must be an integer >= {minimum}, got {value!r}")
+    if settings["ray_groups"] is not None:
+        if settings["vectorization"] != "ray":
+            raise ValueError("--ray-groups needs --vectorization ray")
+        if settings["ray_groups"] > settings["workers"]:
+            raise ValueError(
+                f"--ray-groups {settings['ray_groups']} exceeds --workers {settings['workers']}"
+            )
+    for key in ("agent_kwargs", "env_kwargs"):
+        if not isinstance(settings[key], dict):
+            raise ValueError(f"{_flag(key)} must be a JSON object, got {settings[key]!r}")
+    _cli.check_framework(settings["framework"], settings["dtype"])
+    _cli.check_device(settings["device"], settings["framework"])
+
+    from ivy_rl.environments import check_environment_id, resolve_wrappers
+
+    check_environment_id(settings["environment"])
+    resolve_wrappers(settings["wrappers"])
 
 
 def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
@@ -79,70 +219,54 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
     Example:
         >>> main(["--agent", "A2C", "--steps", "2000", "--out", "runs/a2c"])
     """
-    args = parse_args(argv)
+    explicit = _explicit(argv)
+    if explicit.get("resume") and explicit.get("overwrite"):
+        raise ValueError("--resume continues a run and --overwrite starts again: choose one")
+    settings = {**DEFAULTS, **explicit}
+    out = settings["out"] or _default_out(settings)
+    if settings["resume"]:
+        settings = _resumed(explicit, out)
+    settings["out"] = out
+    _check(settings)
+
     from ivy_rl.agents import make
-    from ivy_rl.environments import check_environment_id
     from ivy_rl.trainer import Trainer
 
-    agent = make(args.agent, **args.agent_kwargs)  # unknown agents fail before any work
-    check_environment_id(args.environment)
-    out = args.out or os.path.join(
-        "runs", f"{args.agent}-{args.environment}-{args.seed}".replace("/", "_")
-    )
-    config = {k: v for k, v in vars(args).items() if k not in ("resume", "quiet")}
-    config["out"] = out
-    if args.resume:
-        with open(os.path.join(out, "config.json")) as fh:
-            saved = json.load(fh)
-        for key in (
-            "agent",
-            "agent_kwargs",
-            "environment",
-            "env_kwargs",
-            "workers",
-            "seed",
-            "time_feature",
-            "dtype",
-        ):
-            if saved.get(key) != config.get(key):
-                raise ValueError(
-                    f"--resume: {key} is {config.get(key)!r} but the run {out!r} used "
-                    f"{saved.get(key)!r}"
-                )
-    os.makedirs(out, exist_ok=True)
-    with open(os.path.join(out, "config.json"), "w") as fh:
-        json.dump(config, fh, indent=1)
-    _enable_float64(args.framework, args.dtype)
+    # the defaults of the environment's task family, then the user's settings, each checked;
+    # a resumed run is rebuilt with every value it used (its config.json's agent_config)
+    agent_settings = settings.get("agent_config") or settings["agent_kwargs"]
+    agent = make(settings["agent"], environment=settings["environment"], **agent_settings)
     trainer = Trainer(
-        args.steps,
-        epoch_steps=args.epoch_steps,
-        save_steps=args.save_steps,
-        test_episodes=args.test_episodes,
-        show_progress=not args.quiet,
-        tensorboard=args.tensorboard,
+        settings["steps"],
+        epoch_steps=settings["epoch_steps"],
+        save_steps=settings["save_steps"],
+        test_episodes=settings["test_episodes"],
+        keep_checkpoints=settings["keep_checkpoints"],
+        show_progress=not settings["quiet"],
+        tensorboard=settings["tensorboard"],
     )
+    _cli.enable_float64(settings["framework"], settings["dtype"])
+    record = {"agent": settings["agent"], "agent_kwargs": settings["agent_kwargs"], "out": out}
     return trainer.run(
         agent,
-        args.environment,
-        workers=args.workers,
-        seed=args.seed,
-        f=args.framework,
-        dtype=args.dtype,
-        compile=not args.eager,
-        vectorization=args.vectorization,
-        env_kwargs=args.env_kwargs,
-        time_feature=args.time_feature,
-        ray_groups=args.ray_groups,
+        settings["environment"],
+        workers=settings["workers"],
+        seed=settings["seed"],
+        f=settings["framework"],
+        dtype=settings["dtype"],
+        device=settings["device"],
+        compile=not settings["eager"],
+        vectorization=settings["vectorization"],
+        env_kwargs=settings["env_kwargs"],
+        time_feature=settings["time_feature"],
+        wrappers=settings["wrappers"],
+        ray_groups=settings["ray_groups"],
         out=out,
-        resume=args.resume,
+        resume=settings["resume"],
+        overwrite=settings["overwrite"],
+        config=record,
     )
 
 
 if __name__ == "__main__":
-    import ivy
-
-    try:
-        main()
-    except (ValueError, TypeError, FileNotFoundError, ivy.errors.IvyError) as error:
-        print(f"error: {error}", file=sys.stderr)
-        raise SystemExit(2) from None
+    _cli.command_line(main)

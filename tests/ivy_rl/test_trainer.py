@@ -14,7 +14,7 @@ import pytest
 
 import ivy
 import ivy_rl
-from ivy_rl import environments
+from ivy_rl import environments, schedules
 from ivy_rl.trainer import Trainer, latest_checkpoint
 from tests.ivy_rl._workers import assert_same_runs, observed
 
@@ -27,7 +27,7 @@ def _rows(rows):
     return [{k: v for k, v in r.items() if k not in TIME_COLUMNS} for r in rows]
 
 
-def _run(out, steps, *, resume=False, f="torch", keep=False):
+def _run(out, steps, *, resume=False, f="torch", keep=2, compile=False):
     trainer = Trainer(
         steps, epoch_steps=32, test_episodes=1, show_progress=False, keep_checkpoints=keep
     )
@@ -37,7 +37,7 @@ def _run(out, steps, *, resume=False, f="torch", keep=False):
         workers=2,
         seed=5,
         f=f,
-        compile=False,
+        compile=compile,
         out=str(out),
         resume=resume,
     )
@@ -45,6 +45,7 @@ def _run(out, steps, *, resume=False, f="torch", keep=False):
 
 def test_resuming_gives_the_log_of_an_uninterrupted_run(tmp_path):
     full = _run(tmp_path / "full", 128)
+    assert _rows(_run(tmp_path / "again", 128)) == _rows(full)  # same seed, same log
     _run(tmp_path / "cut", 64)  # ends mid-episode and mid-segment (24 steps per worker)
     cut = tmp_path / "cut"
     assert latest_checkpoint(str(cut)).endswith("step_64")
@@ -54,7 +55,7 @@ def test_resuming_gives_the_log_of_an_uninterrupted_run(tmp_path):
     assert _rows(on_disk) == _rows(full)
 
 
-def test_a_torch_checkpoint_loads_and_continues_on_jax_and_tensorflow(tmp_path):
+def test_a_torch_checkpoint_loads_on_jax_and_tensorflow_and_continues_on_jax(tmp_path):
     _run(tmp_path / "run", 64)
     checkpoint = os.path.join(latest_checkpoint(str(tmp_path / "run")), "agent")
     obs_space, act_space = gym.spaces.Box(-np.inf, np.inf, (4,)), gym.spaces.Discrete(2)
@@ -66,10 +67,158 @@ def test_a_torch_checkpoint_loads_and_continues_on_jax_and_tensorflow(tmp_path):
         for a, b in zip(ivy.nest.flatten_nest(agent.v)[0], ivy.nest.flatten_nest(reference.v)[0]):
             np.testing.assert_array_equal(ivy.to_numpy(a), ivy.to_numpy(b))
         np.testing.assert_array_equal(agent.test_step(obs), reference.test_step(obs))
-    # the run goes on on tensorflow, through an update (at 96 steps)
-    rows = _run(tmp_path / "run", 96, resume=True, f="tensorflow")
+    # the run goes on on jax, through an update (at 96 steps; compiled: jax's eager mode
+    # compiles each operation of the update)
+    rows = _run(tmp_path / "run", 96, resume=True, f="jax", compile=True)
     assert rows[-1]["train/steps"] == 96 and len(rows) == 3
     assert np.isfinite(rows[-1]["actor/loss"])
+
+
+def test_a_loaded_agent_is_trained_from_its_weights(tmp_path):
+    _run(tmp_path / "run", 64)
+    checkpoint = os.path.join(latest_checkpoint(str(tmp_path / "run")), "agent")
+    obs_space, act_space = gym.spaces.Box(-np.inf, np.inf, (4,)), gym.spaces.Discrete(2)
+    agent = ivy_rl.PPO(**PPO_TINY).initialize(obs_space, act_space, f="torch", compile=False)
+    agent.load(checkpoint)
+    loaded = [ivy.to_numpy(a).copy() for a in ivy.nest.flatten_nest(agent.v)[0]]
+    quick = Trainer(8, test_episodes=0, show_progress=False)  # 4 steps per worker: no update
+    quick.run(agent, "CartPole-v1", workers=2, seed=5)
+    for a, b in zip(ivy.nest.flatten_nest(agent.v)[0], loaded):
+        np.testing.assert_array_equal(ivy.to_numpy(a), b)
+    with pytest.raises(ValueError, match="initialized on torch"):
+        quick.run(agent, "CartPole-v1", workers=2, f="jax")
+    with pytest.raises(ValueError, match="initialized for observations"):
+        quick.run(agent, "Acrobot-v1", workers=2)
+
+
+class _Probe(ivy_rl.agents.Agent):
+    """An agent that shows what the trainer does with the optional hooks: a differentiable
+    agent's environment binding, its simulated steps, compilation counts, the run's progress
+    (for schedules) and the device."""
+
+    differentiable = True
+    compiles = 0  # counted by hand here
+
+    def __init__(self, recompile_at=None):
+        super().__init__()
+        self.recompile_at, self.calls, self.progress = recompile_at, [], []
+        self.simulated_steps = self.compiles = self.learned = self.tested = 0
+
+    def bind_environment(self, environment, env_kwargs):
+        self.calls.append(("bind", environment, env_kwargs))
+
+    def initialize(self, *spaces, **kwargs):
+        self.calls.append(("initialize", kwargs.get("device")))
+        return super().initialize(*spaces, **kwargs)
+
+    def step(self, observations):
+        return np.zeros(len(observations), np.int64)
+
+    def test_step(self, observations):
+        self.compiles += self.tested == 0  # the test policy compiles at its first call
+        self.tested += 1
+        return self.step(observations)
+
+    def set_progress(self, progress):
+        self.progress.append(progress)
+
+    def update(self, observations, rewards, resets, terminations):
+        if len(self.progress) % 4:
+            return {}
+        self.learned += 1
+        self.simulated_steps += 10  # steps of its own differentiable rollouts
+        self.compiles += self.learned in (1, self.recompile_at)
+        return {"probe/loss": float(self.learned)}
+
+
+def test_the_trainer_binds_counts_and_reports_the_agents_hooks(tmp_path):
+    import warnings
+
+    probe = _Probe()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)  # no recompilation warning
+        rows = Trainer(96, epoch_steps=32, test_episodes=1, show_progress=False).run(
+            probe, "CartPole-v1", workers=2, f="numpy", device="cpu", out=str(tmp_path / "a"),
+            env_kwargs={"sutton_barto_reward": True},
+        )  # fmt: skip
+    assert probe.calls == [
+        ("bind", "CartPole-v1", {"sutton_barto_reward": True}),
+        ("initialize", "cpu"),
+    ]
+    # the budget and the logged steps count the simulated steps too
+    steps = [r["train/steps"] for r in rows]
+    simulated = [r["train/simulated_steps"] for r in rows]
+    environment_steps = 2 * len(probe.progress)
+    assert steps[-1] == environment_steps + probe.simulated_steps == 96
+    assert simulated[-1] == probe.simulated_steps == 10 * probe.learned
+    assert all(b - a >= 32 for a, b in zip(steps[:-1], steps[1:-1]))
+    # the progress handed to schedules: the fraction of the budget done before each update
+    expected = [0.0]
+    for k in range(1, len(probe.progress)):
+        expected.append((2 * k + 10 * (k // 4)) / 96)
+    np.testing.assert_allclose(probe.progress, expected)
+    assert [r["train/compiles"] for r in rows][-1] == 2
+    with open(tmp_path / "a" / "config.json") as fh:
+        assert json.load(fh)["device"] == "cpu"
+    # a compilation after the first update is reported once
+    with pytest.warns(RuntimeWarning, match=r"compiled again .* \(2 -> 3 compilations"):
+        Trainer(96, epoch_steps=32, test_episodes=1, show_progress=False).run(
+            _Probe(recompile_at=3), "CartPole-v1", workers=2, f="numpy"
+        )
+
+
+def test_schedules_follow_the_runs_progress():
+    lr = schedules.as_schedule("linear:3e-4")
+    for p in (0.0, 0.3, 1.0, 1.7):
+        assert lr(p) == pytest.approx(3e-4 * (1 - min(p, 1.0)), abs=1e-15)
+    clip = schedules.as_schedule("linear:0.3:0.1")
+    assert clip(0.5) == pytest.approx(0.2) and str(clip) == "linear:0.3:0.1"
+    assert schedules.as_schedule(str(clip)) == clip
+    assert schedules.as_schedule(0.2)(0.9) == 0.2
+    assert schedules.as_schedule(clip) is clip and schedules.is_schedule("linear:1")
+    assert not schedules.is_schedule(0.1)
+    for bad in ("linear", "linear:a", "cosine:1e-3", "linear:1:2:3", True, None, [1e-3]):
+        with pytest.raises((ValueError, TypeError), match="actor_lr"):
+            schedules.as_schedule(bad, name="actor_lr")
+    with pytest.raises(ValueError, match="finite"):
+        lr(float("nan"))
+
+
+def test_wrappers_by_name_and_module_environment_ids():
+    wrappers = environments.resolve_wrappers(
+        ["FlattenObservation", "gymnasium.wrappers:ClipAction", gym.wrappers.ClipReward]
+    )
+    assert wrappers == [
+        gym.wrappers.FlattenObservation,
+        gym.wrappers.ClipAction,
+        gym.wrappers.ClipReward,
+    ]
+    with pytest.raises(ValueError, match="unknown wrapper 'os:path'"):
+        environments.resolve_wrappers(["os:path"])
+    with pytest.raises(ValueError, match="cannot import 'no_such_pkg'"):
+        environments.resolve_wrappers(["no_such_pkg:Wrapper"])
+    environments.check_environment_id("gymnasium.envs.classic_control:CartPole-v1")
+    with pytest.raises(ValueError, match="unknown environment.*did you mean: CartPole-v1"):
+        environments.check_environment_id("gymnasium:CartPol-v1")
+    env = environments.make_env("FrozenLake-v1", wrappers=["FlattenObservation"])
+    assert env.observation_space.shape == (16,)
+    env.close()
+
+
+def test_time_limits_are_terminal_with_the_time_feature():
+    # time awareness (Pardo et al., 2018): with the remaining time as an input, the time limit
+    # is part of the task and the last step is terminal; without it, a reset to bootstrap
+    for time_feature in (True, False):
+        workers = environments.Workers("Pendulum-v1", 2, seed=0, time_feature=time_feature)
+        workers.start()
+        for _ in range(200):
+            _, infos = workers.step(np.zeros((2, 1), np.float32))
+        assert infos["resets"].all()
+        assert infos["terminations"].all() == time_feature
+        assert not infos["terminations"].any() or time_feature
+        if time_feature:
+            np.testing.assert_allclose(infos["observations"][:, -1], 0.0)
+        workers.close()
 
 
 def test_workers_keep_time_limits_apart_from_terminations():
@@ -199,11 +348,11 @@ def test_command_line_errors_list_what_is_available(tmp_path):
     from ivy_rl import play, train
 
     with pytest.raises(ValueError, match="available agents"):
-        train.main(["--agent", "DQN"])
+        train.main(["--agent", "NoSuchAgent"])
     with pytest.raises(ValueError, match="registered environments"):
         train.main(["--environment", "NoSuchEnv-v0"])
     done = subprocess.run(
-        [sys.executable, "-m", "ivy_rl.train", "--agent", "SAC"],
+        [sys.executable, "-m", "ivy_rl.train", "--agent", "NoSuchAgent"],
         capture_output=True,
         text=True,
         env={**os.environ, "PYTHONPATH": ROOT},
