@@ -120,8 +120,8 @@ def check_environment_id(env_id: str) -> None:
     if name in gym.registry:
         return
     if name.startswith("ivy_gym/"):
-        try:  # ivy_gym registers its environments when imported
-            import ivy_gym  # noqa: F401
+        try:  # ivy_gym's Gymnasium facades register its environments when imported
+            import ivy_gym.gymnasium  # noqa: F401
         except ImportError:
             pass
         if name in gym.registry:
