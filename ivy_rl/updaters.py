@@ -215,7 +215,8 @@ class GradientUpdater:
             raise ValueError(f"{type(self).__name__}: lr must be > 0, got {lr!r}")
         if not gradient_clip >= 0:
             raise ValueError(
-                f"{type(self).__name__}: gradient_clip must be >= 0 (0: none), got {gradient_clip!r}"
+                f"{type(self).__name__}: gradient_clip must be >= 0 (0: none), "
+                f"got {gradient_clip!r}"
             )
         self.lr, self.gradient_clip = lr, gradient_clip
         self.xp = None

@@ -27,7 +27,8 @@ belongs to, and ``agent.config`` holds the flat settings of every part.
 Example:
     >>> agent = A2C(segment_size=128).initialize(env.observation_space, env.action_space,
     ...                                         seed=0, f="torch")
-    >>> agent = A2C(replay=Segment(128, discount=0.98), actor_updater=StochasticPolicyGradient(3e-3))
+    >>> agent = A2C(replay=Segment(128, discount=0.98),
+    ...             actor_updater=StochasticPolicyGradient(3e-3))
 """
 
 from __future__ import annotations

@@ -163,6 +163,7 @@ SETTINGS: dict[str, Setting] = {
     "actor_lr": Setting("float", 0.0, open_low=True, meaning="actor's Adam learning rate"),
     "critic_lr": Setting("float", 0.0, open_low=True, meaning="critic's Adam learning rate"),
     "entropy_coeff": Setting("float", 0.0, meaning="weight of the entropy bonus"),
+    "gradient_clip": Setting("float", 0.0, meaning="global norm of gradients (0: none)"),
     "actor_gradient_clip": Setting("float", 0.0, meaning="global norm of the actor's gradients"),
     "critic_gradient_clip": Setting(
         "float", 0.0, meaning="global norm of the critic's gradients (0: no clipping)"

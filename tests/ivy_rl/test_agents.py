@@ -75,8 +75,8 @@ _updates: dict = {}
 
 
 def _one_update(agent_name, space, backend, compile=False, fusion="update", **settings):
-    """``(v, optimizer states, logs, fusion level)``, as numpy, after the first update of an agent in float64
-    fed the same synthetic transitions (with terminations and time limits)."""
+    """``(v, optimizer states, logs, fusion level)``, as numpy, after the first update of an
+    agent in float64 fed the same synthetic transitions (with terminations and time limits)."""
     key = (agent_name, space, backend, compile, fusion, tuple(sorted(settings.items())))
     if key in _updates:
         return _updates[key]
