@@ -80,10 +80,16 @@ def sample_planes(xp, planes, dims, xq, yq, method):
 
     The coordinates are clamped to the padded image, so that points beyond the border get the
     padding value and both paddings share one code path; the four corners of every point are
-    gathered in one call."""
+    gathered in one call. A NaN coordinate is moved to the padded corner ``(0, 0)`` before any
+    index is computed from it (a NaN cast to an integer is an arbitrary index: numpy and
+    tensorflow raise, torch reads out of bounds, jax clamps), and its sample is 0 on both
+    paddings."""
     b, h, w = dims
     c = C.shape_of(xp, planes)[0]
     n = C.shape_of(xp, xq)[-1]
+    unknown = xp.logical_or(xp.isnan(xq), xp.isnan(yq))
+    xq = xp.where(unknown, xp.zeros_like(xq), xq)
+    yq = xp.where(unknown, xp.zeros_like(yq), yq)
     xq = xp.clip(xq, 0.0, float(w + 1))
     yq = xp.clip(yq, 0.0, float(h + 1))
     index_type = C.index_dtype(xp)
@@ -97,16 +103,19 @@ def sample_planes(xp, planes, dims, xq, yq, method):
 
     if method == "nearest":
         index = flat_index(xp.floor(yq + 0.5), xp.floor(xq + 0.5))
-        return xp.reshape(xp.take(planes, xp.reshape(index, (-1,)), axis=1), (c, b, n))
-    x0, y0 = xp.floor(xq), xp.floor(yq)
-    wx, wy = xq - x0, yq - y0
-    top = flat_index(y0, x0)
-    corners = xp.asarray([0, 1, w + 3, w + 4], dtype=index_type, device=xp.dev(xq))
-    index = xp.reshape(top, (1, b * n)) + corners[:, None]  # corner-major [4, b*n]
-    values = xp.reshape(xp.take(planes, xp.reshape(index, (-1,)), axis=1), (c, 4, b, n))
-    upper = values[:, 0] + (values[:, 1] - values[:, 0]) * wx
-    lower = values[:, 2] + (values[:, 3] - values[:, 2]) * wx
-    return upper + (lower - upper) * wy
+        out = xp.reshape(xp.take(planes, xp.reshape(index, (-1,)), axis=1), (c, b, n))
+    else:
+        x0, y0 = xp.floor(xq), xp.floor(yq)
+        wx, wy = xq - x0, yq - y0
+        top = flat_index(y0, x0)
+        corners = xp.asarray([0, 1, w + 3, w + 4], dtype=index_type, device=xp.dev(xq))
+        index = xp.reshape(top, (1, b * n)) + corners[:, None]  # corner-major [4, b*n]
+        values = xp.reshape(xp.take(planes, xp.reshape(index, (-1,)), axis=1), (c, 4, b, n))
+        upper = values[:, 0] + (values[:, 1] - values[:, 0]) * wx
+        lower = values[:, 2] + (values[:, 3] - values[:, 2]) * wx
+        out = upper + (lower - upper) * wy
+    # the padded corner is 0 with zero padding, the corner pixel with border padding
+    return xp.where(unknown, xp.zeros_like(out), out)
 
 
 def channels_last(xp, planes_out, shape):
@@ -279,9 +288,13 @@ def inverse_warp(
     _check_options(fn, method, padding)
     hs, ws = C.check_image(xp, image_src, fn, "image_src")
     C.check_matrix(xp, tgt_to_src_full_mat, 3, 4, fn, "tgt_to_src_full_mat")
-    h, w = C.shape_of(xp, depth_tgt)[-3:-1]
+    h, w = C.check_image(xp, depth_tgt, fn, "depth_tgt", channels=1)
+    # missing depth (NaN, as depth sensors report it, or infinite) is replaced by 0 before the
+    # projection, so that no NaN reaches an index or a gradient, and the pixel is invalid
+    measured = xp.isfinite(depth_tgt)
+    depth = xp.where(measured, depth_tgt, xp.zeros_like(depth_tgt))
     shifted = _shift_by_one(xp, tgt_to_src_full_mat)
-    projected = project_depth(xp, depth_tgt, shifted, uniform_pixel_coords, fn)
+    projected = project_depth(xp, depth, shifted, uniform_pixel_coords, fn)
     batch = C.broadcast_right(
         C.shape_of(xp, projected)[:-2],
         C.shape_of(xp, image_src)[:-3],
@@ -292,7 +305,9 @@ def inverse_warp(
     c = C.shape_of(xp, image_src)[-1]
     b = math.prod(batch)
     z = projected[..., 2, :]
-    in_front = z > 0
+    dshape = C.shape_of(xp, depth_tgt)
+    measured = xp.reshape(measured, (*dshape[:-3], h * w))
+    in_front = xp.logical_and(z > 0, measured)
     inverse_z = 1.0 / xp.where(in_front, z, xp.ones_like(z))
     # coordinates in the padded source image (x + 1, y + 1)
     xq, yq = projected[..., 0, :] * inverse_z, projected[..., 1, :] * inverse_z
@@ -317,8 +332,8 @@ def inverse_warp(
     inside = xp.logical_and(
         xp.logical_and(xq >= 0.5, xq <= ws + 0.5), xp.logical_and(yq >= 0.5, yq <= hs + 0.5)
     )
-    measured = xp.reshape(depth_tgt, (*C.shape_of(xp, depth_tgt)[:-3], h * w)) > 0
-    inside = xp.logical_and(inside, measured)
+    positive = xp.reshape(depth, (*dshape[:-3], h * w)) > 0
+    inside = xp.logical_and(inside, positive)
     valid = xp.logical_and(front, xp.reshape(xp.broadcast_to(inside, (*batch, h * w)), (b, h * w)))
     return warped, xp.reshape(valid, (*batch, h, w, 1))
 
@@ -372,6 +387,8 @@ def forward_warp(
             f"{C.shape_of(xp, depth_src)} must have the same height and width."
         )
     dims = (h, w) if target_image_dims is None else C.image_dims_of(target_image_dims, fn)
+    # missing depth (NaN or infinite) becomes 0, a source pixel without depth: left out
+    depth_src = xp.where(xp.isfinite(depth_src), depth_src, xp.zeros_like(depth_src))
     projected = project_depth(xp, depth_src, src_to_tgt_full_mat, uniform_pixel_coords, fn)
     batch = C.broadcast_right(
         C.shape_of(xp, projected)[:-2],

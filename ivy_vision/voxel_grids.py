@@ -48,7 +48,8 @@ def coords_to_voxel_grid(
     Binning follows ``numpy.histogramdd``: with bounds ``[lo, hi]`` and ``n`` voxels along an
     axis the voxels are ``[lo + k res, lo + (k + 1) res)``, the last one closed (it includes
     ``hi``); points outside the bounds are left out. Without ``coord_bounds`` the bounds are
-    each batch item's own extent. ``'DIMS'`` mode gives the number of voxels along x, y, z
+    each batch item's own extent. Points with a NaN or infinite coordinate are left out.
+    ``'DIMS'`` mode gives the number of voxels along x, y, z
     (static shapes: it compiles); ``'RES'`` mode gives the voxel size, the number of voxels
     being ``ceil(extent / res)`` (the resolution is then adjusted to ``extent / dims``) and the
     grid the largest over the batch (each item's voxels start at its lower corner); the number
@@ -90,10 +91,14 @@ def coords_to_voxel_grid(
                 f"{fn}: features {fshape} must be [..., num_points, num_feats] with the leading "
                 f"shape {shape[:-1]} of coords."
             )
+    # points with a NaN or infinite coordinate are left out (and bound no extent)
+    finite = xp.all(xp.isfinite(points), axis=-1)
     if coord_bounds is None:
-        lower = xp.min(points, axis=-2, keepdims=True)
-        upper = xp.max(points, axis=-2, keepdims=True)
-        valid = None
+        known = finite[..., None]
+        inf = xp.full_like(points, float("inf"))
+        lower = xp.min(xp.where(known, points, inf), axis=-2, keepdims=True)
+        upper = xp.max(xp.where(known, points, -inf), axis=-2, keepdims=True)
+        valid = finite
     else:
         bounds = _per_batch(xp, coord_bounds, 6, batch, points, fn, "coord_bounds")
         lower, upper = bounds[..., 0:3], bounds[..., 3:6]
@@ -128,14 +133,16 @@ def coords_to_voxel_grid(
     scaled = xp.safe_divide(points - lower, res)
     index = xp.minimum(xp.floor(scaled), dims - 1)
     index = xp.where(index < 0, xp.zeros_like(index), index)
+    # no index is computed from a left-out point's (possibly NaN) offset
+    index = xp.where(valid[..., None], index, xp.zeros_like(index))
     index = xp.astype(index, C.index_dtype(xp))
     gx, gy, gz = grid_dims
     flat = (index[..., 0] * gy + index[..., 1]) * gz + index[..., 2]
     size = gx * gy * gz
-    if valid is not None:
-        flat = xp.where(valid, flat, xp.full_like(flat, size))
+    flat = xp.where(valid, flat, xp.full_like(flat, size))
     values = [points] if features is None else [points, xp.astype(features, xp.dtype(points))]
     values = xp.concat([*values, xp.ones_like(points[..., 0:1])], axis=-1)
+    values = xp.where(valid[..., None], values, xp.zeros_like(values))  # no inf - inf in sums
     flat_all, b = S.global_indices(xp, flat, size)
     width = C.shape_of(xp, values)[-1]
     sums = S.scatter_rows(xp, flat_all, xp.reshape(values, (b * n, width)), b * size + 1)

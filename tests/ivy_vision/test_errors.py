@@ -54,7 +54,7 @@ CASES = [
     (
         "inverse warp depth with 2 channels",
         lambda a: vis.inverse_warp(a(IMAGE), a(np.ones((2, 3, 4, 2))), a(P)),
-        r"depth image must have 1",
+        r"depth_tgt must have 1",
     ),
     (
         "points with 5 components",
