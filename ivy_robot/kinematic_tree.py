@@ -600,16 +600,23 @@ class KinematicTree:
 # ----------------------------------------------------------------------------------------------
 
 
+_PLURALS = {"body": "bodies", "site": "sites", "joint": "joints"}
+
+
 def _lookup(key, names: tuple[str, ...], what: str) -> int:
+    plural = _PLURALS.get(what, what + "s")
     if isinstance(key, (int, np.integer)) and not isinstance(key, bool):
         if not 0 <= int(key) < len(names):
-            raise ValueError(f"{what} index {key} is out of range: the model has {len(names)}")
+            raise ValueError(
+                f"{what} index {key} is out of range: the model has {len(names)} {plural} "
+                f"(indices 0 to {len(names) - 1})"
+            )
         return int(key)
     try:
         return names.index(key)
     except ValueError:
         shown = ", ".join(repr(n) for n in names[:20]) + (", ..." if len(names) > 20 else "")
-        raise ValueError(f"unknown {what} {key!r}; the model's {what}s are: {shown}") from None
+        raise ValueError(f"unknown {what} {key!r}; the model's {plural} are: {shown}") from None
 
 
 def _sin_versine(xp, theta):

@@ -17,6 +17,7 @@ import math
 import ivy
 from ivy.typing import Array, Framework, Shape
 from ivy_vision import _common as C
+from ivy_vision._checks import InputError, checked
 
 __all__ = [
     "rasterize_triangles",
@@ -51,6 +52,7 @@ def _chunk(xp, tri, px, py):
     return depth, bary
 
 
+@checked
 def rasterize_triangles(
     pixel_coords_triangles: Array,
     image_dims: Shape,
@@ -86,15 +88,14 @@ def rasterize_triangles(
         array([[2., 2.],
                [2., 2.]])
     """
-    fn = "rasterize_triangles"
     xp = ivy.get_framework(pixel_coords_triangles, f=f)
     shape = C.shape_of(xp, pixel_coords_triangles)
     if len(shape) < 3 or shape[-2:] != (3, 3):
-        raise ValueError(
-            f"{fn}: pixel_coords_triangles must be [..., num_triangles, 3, 3] (three vertices "
+        raise InputError(
+            f"pixel_coords_triangles must be [..., num_triangles, 3, 3] (three vertices "
             f"(x, y, depth)); got shape {shape}."
         )
-    h, w = C.image_dims_of(image_dims, fn)
+    h, w = C.image_dims_of(image_dims)
     batch, n = shape[:-3], shape[-3]
     b = math.prod(batch)
     tri = xp.reshape(pixel_coords_triangles, (b, n, 3, 3))
@@ -124,6 +125,7 @@ def rasterize_triangles(
     )
 
 
+@checked
 def create_trimesh_indices_for_image(
     image_dims: Shape, batch_shape: Shape | None = None, *, f: Framework = None
 ) -> Array:
@@ -144,7 +146,7 @@ def create_trimesh_indices_for_image(
                [3, 1, 2]])
     """
     xp = ivy.get_framework(f=f)
-    h, w = C.image_dims_of(image_dims, "create_trimesh_indices_for_image")
+    h, w = C.image_dims_of(image_dims)
     top_left = xp.reshape(
         xp.arange(w - 1)[None, :] + w * xp.arange(h - 1)[:, None],
         (-1,),
@@ -157,6 +159,7 @@ def create_trimesh_indices_for_image(
     return indices
 
 
+@checked
 def coord_image_to_trimesh(
     coord_img: Array, validity_mask: Array | None = None, *, f: Framework = None
 ) -> tuple:
@@ -177,17 +180,16 @@ def coord_image_to_trimesh(
         >>> vertices.shape, triangles.shape
         ((6, 3), (4, 3))
     """
-    fn = "coord_image_to_trimesh"
     xp = ivy.get_framework(coord_img, validity_mask, f=f)
-    h, w = C.check_image(xp, coord_img, fn, "coord_img", channels=3)
+    h, w = C.check_image(xp, coord_img, "coord_img", channels=3)
     batch = C.shape_of(xp, coord_img)[:-3]
     vertices = xp.reshape(coord_img, (*batch, h * w, 3))
     indices = create_trimesh_indices_for_image((h, w), batch, f=xp)
     if validity_mask is None:
         return vertices, indices
     if batch or C.shape_of(xp, validity_mask) != (h, w, 1):
-        raise ValueError(
-            f"{fn}: validity_mask must be [h, w, 1] = {(h, w, 1)} for an unbatched coord_img "
+        raise InputError(
+            f"validity_mask must be [h, w, 1] = {(h, w, 1)} for an unbatched coord_img "
             f"(the number of triangles kept differs between images); got coord_img "
             f"{C.shape_of(xp, coord_img)} and validity_mask {C.shape_of(xp, validity_mask)}."
         )

@@ -29,6 +29,7 @@ import ivy
 from ivy.typing import Array, Framework, Shape
 from ivy_vision import _common as C
 from ivy_vision import _splat as S
+from ivy_vision._checks import InputError, checked
 
 __all__ = [
     "sample_image",
@@ -41,11 +42,11 @@ METHODS = ("bilinear", "nearest")
 PADDINGS = ("border", "zeros")
 
 
-def _check_options(fn, method, padding):
+def _check_options(method, padding):
     if method not in METHODS:
-        raise ValueError(f"{fn}: method must be one of {METHODS}; got {method!r}.")
+        raise InputError(f"method must be one of {METHODS}; got {method!r}.")
     if padding not in PADDINGS:
-        raise ValueError(f"{fn}: padding must be one of {PADDINGS}; got {padding!r}.")
+        raise InputError(f"padding must be one of {PADDINGS}; got {padding!r}.")
 
 
 def _floating(xp, image, like):
@@ -123,14 +124,14 @@ def channels_last(xp, planes_out, shape):
     return xp.reshape(xp.permute_dims(planes_out, (1, 2, 0)), shape)
 
 
-def sample_kernel(xp, image, coords, method, padding, fn):
+def sample_kernel(xp, image, coords, method, padding):
     """Sample ``image`` ``[*B, H, W, C]`` at ``coords`` ``[*B, *I, 2]`` -> ``[*B, *I, C]``."""
-    h, w = C.check_image(xp, image, fn, "image")
-    C.check_last_dim(xp, coords, 2, fn, "the sampling coordinates")
+    h, w = C.check_image(xp, image, "image")
+    C.check_last_dim(xp, coords, 2, "the sampling coordinates")
     ishape = C.shape_of(xp, image)
     ib = ishape[:-3]
-    cb, points = C.split_batch(xp, coords, ib, fn, "the sampling coordinates", "image")
-    batch = C.broadcast_batch(cb, ib, fn, "the sampling coordinates", "image")
+    cb, points = C.split_batch(xp, coords, ib, "the sampling coordinates", "image")
+    batch = C.broadcast_batch(cb, ib, "the sampling coordinates", "image")
     c = ishape[-1]
     b, n = math.prod(batch), math.prod(points)
     if ib != batch:
@@ -144,6 +145,7 @@ def sample_kernel(xp, image, coords, method, padding, fn):
     return channels_last(xp, out, (*batch, *points, c))
 
 
+@checked
 def sample_image(
     image: Array,
     pixel_coords: Array,
@@ -173,10 +175,11 @@ def sample_image(
                [2.5]])
     """
     xp = ivy.get_framework(image, pixel_coords, f=f)
-    _check_options("sample_image", method, padding)
-    return sample_kernel(xp, image, pixel_coords, method, padding, "sample_image")
+    _check_options(method, padding)
+    return sample_kernel(xp, image, pixel_coords, method, padding)
 
 
+@checked
 def bilinearly_interpolate_image(
     image: Array, sampling_pixel_coords: Array, *, f: Framework = None
 ) -> Array:
@@ -196,23 +199,20 @@ def bilinearly_interpolate_image(
         array([[1.5]])
     """
     xp = ivy.get_framework(image, sampling_pixel_coords, f=f)
-    return sample_kernel(
-        xp, image, sampling_pixel_coords, "bilinear", "border", "bilinearly_interpolate_image"
-    )
+    return sample_kernel(xp, image, sampling_pixel_coords, "bilinear", "border")
 
 
-def project_depth(xp, depth, full_mat, uniform_pixel_coords, fn):
+def project_depth(xp, depth, full_mat, uniform_pixel_coords):
     """Depth-scaled pixel coordinates in another camera of every pixel of a depth image, as
     ``d * (M [u, v, 1]) + t`` for ``full_mat = [M | t]``, channel-first: ``[*B, 3, H*W]`` (each
     component contiguous, which the sampling reads fastest). For the default pixel grid the
     rays ``M [u, v, 1]`` are sums of a row term and a column term (no matrix product over the
     image)."""
-    C.check_image(xp, depth, fn, "the depth image", channels=1)
-    C.check_matrix(xp, full_mat, 3, 4, fn, "the camera-to-camera full matrix")
+    C.check_image(xp, depth, "the depth image", channels=1)
+    C.check_matrix(xp, full_mat, 3, 4, "the camera-to-camera full matrix")
     C.broadcast_right(
         C.shape_of(xp, depth)[:-3],
         C.shape_of(xp, full_mat)[:-2],
-        fn,
         "the depth image",
         "the camera-to-camera full matrix",
     )
@@ -227,7 +227,7 @@ def project_depth(xp, depth, full_mat, uniform_pixel_coords, fn):
         rays = m[..., 0, :, :] * cols + (m[..., 1, :, :] * rows[:, None] + m[..., 2, :, :])
         rays = xp.reshape(rays, (*C.shape_of(xp, rays)[:-2], h * w))
     else:
-        C.check_last_dim(xp, uniform_pixel_coords, 3, fn, "uniform_pixel_coords")
+        C.check_last_dim(xp, uniform_pixel_coords, 3, "uniform_pixel_coords")
         gshape = C.shape_of(xp, uniform_pixel_coords)
         grid = xp.swapaxes(xp.reshape(uniform_pixel_coords, (*gshape[:-3], h * w, 3)), -1, -2)
         rays = xp.matmul(full_mat[..., 0:3], grid)
@@ -242,6 +242,7 @@ def _shift_by_one(xp, full_mat):
     )
 
 
+@checked
 def inverse_warp(
     image_src: Array,
     depth_tgt: Array,
@@ -283,22 +284,21 @@ def inverse_warp(
         array([[0., 1., 2.],
                [3., 4., 5.]])
     """
-    fn = "inverse_warp"
     xp = ivy.get_framework(image_src, depth_tgt, tgt_to_src_full_mat, f=f)
-    _check_options(fn, method, padding)
-    hs, ws = C.check_image(xp, image_src, fn, "image_src")
-    C.check_matrix(xp, tgt_to_src_full_mat, 3, 4, fn, "tgt_to_src_full_mat")
-    h, w = C.check_image(xp, depth_tgt, fn, "depth_tgt", channels=1)
+    _check_options(method, padding)
+    C.check_matrix(xp, tgt_to_src_full_mat, 3, 4, "tgt_to_src_full_mat")
+    h, w = C.check_image(xp, depth_tgt, "depth_tgt", channels=1)
+    hs, ws = C.check_image(xp, image_src, "image_src")
+    C.reject_channel_first(xp, image_src, "image_src", (h, w), "depth_tgt")
     # missing depth (NaN, as depth sensors report it, or infinite) is replaced by 0 before the
     # projection, so that no NaN reaches an index or a gradient, and the pixel is invalid
     measured = xp.isfinite(depth_tgt)
     depth = xp.where(measured, depth_tgt, xp.zeros_like(depth_tgt))
     shifted = _shift_by_one(xp, tgt_to_src_full_mat)
-    projected = project_depth(xp, depth, shifted, uniform_pixel_coords, fn)
+    projected = project_depth(xp, depth, shifted, uniform_pixel_coords)
     batch = C.broadcast_right(
         C.shape_of(xp, projected)[:-2],
         C.shape_of(xp, image_src)[:-3],
-        fn,
         "the target depth",
         "image_src",
     )
@@ -338,6 +338,7 @@ def inverse_warp(
     return warped, xp.reshape(valid, (*batch, h, w, 1))
 
 
+@checked
 def forward_warp(
     image_src: Array,
     depth_src: Array,
@@ -378,22 +379,25 @@ def forward_warp(
         array([[0., 1., 2.],
                [3., 4., 5.]])
     """
-    fn = "forward_warp"
     xp = ivy.get_framework(image_src, depth_src, src_to_tgt_full_mat, f=f)
-    h, w = C.check_image(xp, image_src, fn, "image_src")
-    if C.shape_of(xp, depth_src)[-3:-1] != (h, w):
-        raise ValueError(
-            f"{fn}: image_src {C.shape_of(xp, image_src)} and depth_src "
+    h, w = C.check_image(xp, depth_src, "depth_src", channels=1)
+    C.reject_channel_first(xp, image_src, "image_src", (h, w), "depth_src")
+    if C.check_image(xp, image_src, "image_src") != (h, w):
+        raise InputError(
+            f"image_src {C.shape_of(xp, image_src)} and depth_src "
             f"{C.shape_of(xp, depth_src)} must have the same height and width."
         )
-    dims = (h, w) if target_image_dims is None else C.image_dims_of(target_image_dims, fn)
+    dims = (
+        (h, w)
+        if target_image_dims is None
+        else C.image_dims_of(target_image_dims, "target_image_dims")
+    )
     # missing depth (NaN or infinite) becomes 0, a source pixel without depth: left out
     depth_src = xp.where(xp.isfinite(depth_src), depth_src, xp.zeros_like(depth_src))
-    projected = project_depth(xp, depth_src, src_to_tgt_full_mat, uniform_pixel_coords, fn)
+    projected = project_depth(xp, depth_src, src_to_tgt_full_mat, uniform_pixel_coords)
     batch = C.broadcast_right(
         C.shape_of(xp, projected)[:-2],
         C.shape_of(xp, image_src)[:-3],
-        fn,
         "the source depth",
         "image_src",
     )

@@ -13,26 +13,28 @@ import ivy
 from ivy.typing import Array, Framework
 from ivy_vision import _common as C
 from ivy_vision import _splat as S
+from ivy_vision._checks import InputError, checked
 
 __all__ = ["coords_to_voxel_grid"]
 
 MODES = ("DIMS", "RES")
 
 
-def _per_batch(xp, spec, size, batch, like, fn, what):
+def _per_batch(xp, spec, size, batch, like, what):
     """``spec`` (``size`` numbers, or an array ``[*B, size]``) as an array ``[*B, 1, size]``."""
     if hasattr(spec, "shape") and not isinstance(spec, (tuple, list)):
         arr = xp.astype(xp.asarray(spec), xp.dtype(like))
     else:
         values = [float(v) for v in spec]
         if len(values) != size:
-            raise ValueError(f"{fn}: {what} must have {size} values; got {len(values)}.")
+            raise InputError(f"{what} must have {size} values; got {len(values)}.")
         arr = xp.asarray(values, dtype=xp.dtype(like), device=xp.dev(like))
     if C.shape_of(xp, arr)[-1:] != (size,):
-        raise ValueError(f"{fn}: {what} must be [..., {size}]; got shape {C.shape_of(xp, arr)}.")
+        raise InputError(f"{what} must be [..., {size}]; got shape {C.shape_of(xp, arr)}.")
     return xp.broadcast_to(arr[..., None, :], (*batch, 1, size))
 
 
+@checked
 def coords_to_voxel_grid(
     coords: Array,
     voxel_shape_spec,
@@ -74,21 +76,20 @@ def coords_to_voxel_grid(
         >>> grid[..., -1].ravel(), res
         (array([1., 1.]), array([2., 2., 1.]))
     """
-    fn = "coords_to_voxel_grid"
     xp = ivy.get_framework(coords, features, f=f)
     if mode not in MODES:
-        raise ValueError(f"{fn}: mode must be 'DIMS' or 'RES'; got {mode!r}.")
-    C.check_last_dim(xp, coords, (3, 4), fn, "coords")
+        raise InputError(f"mode must be 'DIMS' or 'RES'; got {mode!r}.")
+    C.check_last_dim(xp, coords, (3, 4), "coords")
     shape = C.shape_of(xp, coords)
     if len(shape) < 2:
-        raise ValueError(f"{fn}: coords must be [..., num_points, 3]; got shape {shape}.")
+        raise InputError(f"coords must be [..., num_points, 3]; got shape {shape}.")
     batch, n = shape[:-2], shape[-2]
     points = coords[..., 0:3]
     if features is not None:
         fshape = C.shape_of(xp, features)
         if fshape[:-1] != shape[:-1]:
-            raise ValueError(
-                f"{fn}: features {fshape} must be [..., num_points, num_feats] with the leading "
+            raise InputError(
+                f"features {fshape} must be [..., num_points, num_feats] with the leading "
                 f"shape {shape[:-1]} of coords."
             )
     # points with a NaN or infinite coordinate are left out (and bound no extent)
@@ -100,20 +101,20 @@ def coords_to_voxel_grid(
         upper = xp.max(xp.where(known, points, -inf), axis=-2, keepdims=True)
         valid = finite
     else:
-        bounds = _per_batch(xp, coord_bounds, 6, batch, points, fn, "coord_bounds")
+        bounds = _per_batch(xp, coord_bounds, 6, batch, points, "coord_bounds")
         lower, upper = bounds[..., 0:3], bounds[..., 3:6]
         inside = xp.logical_and(points >= lower, points <= upper)
         valid = xp.all(inside, axis=-1)
     extent = upper - lower
-    spec = _per_batch(xp, voxel_shape_spec, 3, batch, points, fn, "voxel_shape_spec")
+    spec = _per_batch(xp, voxel_shape_spec, 3, batch, points, "voxel_shape_spec")
     if mode == "DIMS":
         try:
             grid_dims = tuple(int(v) for v in voxel_shape_spec)
         except TypeError:
             values = C.concrete(xp, spec)
             if values is None:
-                raise ValueError(
-                    f"{fn}: in 'DIMS' mode under compilation, give voxel_shape_spec as Python ints."
+                raise InputError(
+                    "in 'DIMS' mode under compilation, give voxel_shape_spec as Python ints."
                 ) from None
             grid_dims = tuple(int(v) for v in values.reshape(-1, 3).max(axis=0))
         dims = xp.astype(spec, xp.dtype(points))
@@ -121,13 +122,13 @@ def coords_to_voxel_grid(
         dims = xp.maximum(xp.ceil(xp.safe_divide(extent, spec)), xp.ones_like(spec))
         values = C.concrete(xp, dims)
         if values is None:
-            raise ValueError(
-                f"{fn}: 'RES' mode sizes the grid from the data, so it cannot be "
-                f"compiled; use 'DIMS' mode with Python ints."
+            raise InputError(
+                "'RES' mode sizes the grid from the data, so it cannot be "
+                "compiled; use 'DIMS' mode with Python ints."
             )
         grid_dims = tuple(int(v) for v in values.reshape(-1, 3).max(axis=0))
     if min(grid_dims) < 1:
-        raise ValueError(f"{fn}: the grid needs at least one voxel per axis; got {grid_dims}.")
+        raise InputError(f"the grid needs at least one voxel per axis; got {grid_dims}.")
     res = xp.safe_divide(extent, dims)
     # histogramdd's bins: floor of the scaled offset; the upper bound goes into the last voxel
     scaled = xp.safe_divide(points - lower, res)
