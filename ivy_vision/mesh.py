@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 
 import ivy
-from ivy.typing import Array, Framework, Shape
+from ivy.typing import Array, Device, Framework, Shape
 from ivy_vision import _common as C
 from ivy_vision._checks import InputError, checked
 
@@ -127,7 +127,11 @@ def rasterize_triangles(
 
 @checked
 def create_trimesh_indices_for_image(
-    image_dims: Shape, batch_shape: Shape | None = None, *, f: Framework = None
+    image_dims: Shape,
+    batch_shape: Shape | None = None,
+    *,
+    device: Device | None = None,
+    f: Framework = None,
 ) -> Array:
     """Vertex indices of the triangles of a regular mesh over an image's pixels (two per
     square of four neighbouring pixels, vertices numbered row by row).
@@ -135,6 +139,7 @@ def create_trimesh_indices_for_image(
     Args:
         image_dims: ``(height, width)``.
         batch_shape: leading batch dimensions to broadcast to (none by default).
+        device: device of the result (the backend's default if None).
         f: framework name or namespace; the global framework if None.
 
     Returns:
@@ -148,7 +153,7 @@ def create_trimesh_indices_for_image(
     xp = ivy.get_framework(f=f)
     h, w = C.image_dims_of(image_dims)
     top_left = xp.reshape(
-        xp.arange(w - 1)[None, :] + w * xp.arange(h - 1)[:, None],
+        xp.arange(w - 1, device=device)[None, :] + w * xp.arange(h - 1, device=device)[:, None],
         (-1,),
     )
     first = xp.stack([top_left, top_left + 1, top_left + w], axis=-1)

@@ -105,7 +105,7 @@ def smooth_image_from_var_image(
     d = C.shape_of(xp, mean)[-1]
     offsets = xp.arange(k, dtype=xp.dtype(mean), device=xp.dev(mean)) - float(k // 2)
     distance = xp.sqrt(offsets[:, None] ** 2 + offsets[None, :] ** 2)[..., None]
-    scale = xp.astype(xp.asarray(kernel_scale), xp.dtype(mean))
+    scale = xp.astype(xp.asarray(kernel_scale, device=xp.dev(mean)), xp.dtype(mean))
     kernel = 1.0 / (1.0 + distance * scale)  # [k, k, d or 1]: how much a neighbour counts
     kernel = xp.broadcast_to(kernel, (k, k, d))
     precision = 1.0 / var

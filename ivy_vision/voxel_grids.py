@@ -23,7 +23,7 @@ MODES = ("DIMS", "RES")
 def _per_batch(xp, spec, size, batch, like, what):
     """``spec`` (``size`` numbers, or an array ``[*B, size]``) as an array ``[*B, 1, size]``."""
     if hasattr(spec, "shape") and not isinstance(spec, (tuple, list)):
-        arr = xp.astype(xp.asarray(spec), xp.dtype(like))
+        arr = xp.astype(xp.asarray(spec, device=xp.dev(like)), xp.dtype(like))
     else:
         values = [float(v) for v in spec]
         if len(values) != size:
