@@ -74,7 +74,7 @@ def padded_planes(xp, image, padding):
     return xp.reshape(padded, (c, b * (h + 3) * (w + 3)))
 
 
-def sample_planes(xp, planes, dims, xq, yq, method):
+def sample_planes(xp, planes, dims, xq, yq, method, padding):
     """Sample padded channel planes (:func:`padded_planes` of images of ``dims = (b, H, W)``)
     at coordinates already shifted by +1 into the padded image, ``xq``, ``yq`` ``[b, n]``.
     Returns ``[C, b, n]``.
@@ -88,7 +88,7 @@ def sample_planes(xp, planes, dims, xq, yq, method):
     b, h, w = dims
     c = C.shape_of(xp, planes)[0]
     n = C.shape_of(xp, xq)[-1]
-    unknown = xp.logical_or(xp.isnan(xq), xp.isnan(yq))
+    unknown = xp.isnan(xq + yq)  # either is NaN (or they are opposite infinities)
     xq = xp.where(unknown, xp.zeros_like(xq), xq)
     yq = xp.where(unknown, xp.zeros_like(yq), yq)
     xq = xp.clip(xq, 0.0, float(w + 1))
@@ -115,8 +115,9 @@ def sample_planes(xp, planes, dims, xq, yq, method):
         upper = values[:, 0] + (values[:, 1] - values[:, 0]) * wx
         lower = values[:, 2] + (values[:, 3] - values[:, 2]) * wx
         out = upper + (lower - upper) * wy
-    # the padded corner is 0 with zero padding, the corner pixel with border padding
-    return xp.where(unknown, xp.zeros_like(out), out)
+    if padding == "zeros":  # the padded corner (0, 0) is 0 already
+        return out
+    return xp.where(unknown, xp.zeros_like(out), out)  # not the corner pixel
 
 
 def channels_last(xp, planes_out, shape):
@@ -141,7 +142,8 @@ def sample_kernel(xp, image, coords, method, padding):
     image = xp.reshape(_floating(xp, image, coords), (b, h, w, c))
     coords = xp.reshape(coords, (b, n, 2))
     planes = padded_planes(xp, image, padding)
-    out = sample_planes(xp, planes, (b, h, w), coords[..., 0] + 1.0, coords[..., 1] + 1.0, method)
+    xq, yq = coords[..., 0] + 1.0, coords[..., 1] + 1.0
+    out = sample_planes(xp, planes, (b, h, w), xq, yq, method, padding)
     return channels_last(xp, out, (*batch, *points, c))
 
 
@@ -321,7 +323,13 @@ def inverse_warp(
         yq = xp.broadcast_to(yq, (*batch, h * w))
     planes = padded_planes(xp, image, padding)
     warped = sample_planes(
-        xp, planes, (b, hs, ws), xp.reshape(xq, (b, h * w)), xp.reshape(yq, (b, h * w)), method
+        xp,
+        planes,
+        (b, hs, ws),
+        xp.reshape(xq, (b, h * w)),
+        xp.reshape(yq, (b, h * w)),
+        method,
+        padding,
     )
     front = xp.reshape(xp.broadcast_to(in_front, (*batch, h * w)), (b, h * w))
     if padding == "border":
