@@ -1,13 +1,12 @@
 """Array helpers shared by ivy_robot's kernels (private). Every helper takes the backend
 namespace ``xp`` first; nothing here dispatches.
 
-Model constants are float64 numpy arrays computed once; :func:`constants` converts them, per
-call, to the dtype and device of the input (under ``jax.jit``, ``tf.function`` and
-``torch.compile`` they become constants of the compiled program, so the conversion costs nothing
-there). They are converted from Python lists, not numpy arrays: ``ivy.torch.asarray`` reads
-``ndarray.flags``, which ``torch.compile`` cannot trace (a graph break per constant). Nothing is
-cached between calls: an array made while ``tf.function`` or ``jax.jit`` traces belongs to that
-trace.
+Model constants are kept once, as float64 numpy arrays computed when a model is built.
+:func:`constant` brings one into a kernel through the core's ``xp.constant``, in the dtype and
+on the device of the kernel's input: it traces on every compiler (``jax.jit`` and
+``tf.function`` embed it, ``torch.compile`` takes it as a graph input without a break), and in
+eager code it is converted once per dtype and device and kept, so a loop pays no conversion and
+no host-to-device copy per call. Constants are never written after the model is built.
 """
 
 from __future__ import annotations
@@ -25,18 +24,15 @@ def to_backend(xp, value, like):
     return xp.asarray(value, dtype=like.dtype, device=xp.dev(like))
 
 
-def as_lists(arrays: dict) -> dict:
-    """``{name: numpy array}`` -> ``{name: nested list}``, once, when a model is built: kernels
-    then touch no numpy object (``torch.compile`` traces numpy arrays and breaks its graph on
-    ``tolist``)."""
-    return {k: np.asarray(v, dtype=np.float64).tolist() for k, v in arrays.items()}
+def constant(xp, value: np.ndarray, like):
+    """The model constant ``value`` (a numpy array made once) in ``like``'s dtype, on its
+    device (``xp.constant``: trace-safe, converted once in eager code)."""
+    return xp.constant(value, dtype=like.dtype, device=xp.dev(like))
 
 
-def constants(xp, like, lists: dict) -> dict:
-    """``{name: nested list}`` (from :func:`as_lists`) -> ``{name: backend array}`` of ``like``'s
-    dtype and device."""
-    dtype, device = like.dtype, xp.dev(like)
-    return {k: xp.asarray(v, dtype=dtype, device=device) for k, v in lists.items()}
+def constants(xp, like, arrays: dict) -> dict:
+    """``{name: numpy constant}`` -> ``{name: backend array}`` of ``like``'s dtype and device."""
+    return {k: constant(xp, v, like) for k, v in arrays.items()}
 
 
 def check_last_axis(xp, x, size: int, name: str, owner: str, meaning: str) -> None:
@@ -77,12 +73,12 @@ def broadcast_leading(xp, const, like, like_trailing: int):
 def gather_spec(indices, size: int):
     """A static gather of ``x[..., indices]`` along a last axis of length ``size``:
     ``("slice", start, stop)`` when the indices are contiguous, else ``("matrix", rows)``, a 0/1
-    selection matrix as nested lists (exact: sums of ``x * 1`` and zeros; no fancy indexing,
-    which tensorflow lacks)."""
+    selection matrix (numpy; exact: sums of ``x * 1`` and zeros; no fancy indexing, which
+    tensorflow lacks)."""
     indices = [int(i) for i in indices]
     if indices and indices == list(range(indices[0], indices[0] + len(indices))):
         return ("slice", indices[0], indices[0] + len(indices))
-    rows = [[1.0 if i == j else 0.0 for j in indices] for i in range(size)]
+    rows = np.asarray([[1.0 if i == j else 0.0 for j in indices] for i in range(size)])
     return ("matrix", rows)
 
 
@@ -90,7 +86,7 @@ def gather_last(xp, x, spec):
     """``x[..., indices]`` for a :func:`gather_spec`."""
     if spec[0] == "slice":
         return x[..., spec[1] : spec[2]]
-    selection = xp.asarray(spec[1], dtype=x.dtype, device=xp.dev(x))
+    selection = constant(xp, spec[1], x)
     return xp.matmul(x[..., None, :], selection)[..., 0, :]
 
 

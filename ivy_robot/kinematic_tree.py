@@ -39,6 +39,16 @@ from ivy_robot.mjcf import SUPPORTED_JOINT_TYPES, load_mjcf, mujoco_quaternion_t
 __all__ = ["KinematicTree", "BodySpheres"]
 
 _FREE, _BALL, _SLIDE, _HINGE = 0, 1, 2, 3
+#: Per joint type, whether each of its dofs is rotational (1) or translational (0), in MuJoCo's
+#: dof order; the number of dofs is the length. A new joint type adds a row here, a case in
+#: :meth:`KinematicTree._apply_joint` (fast path), :func:`_joint_transform` (reference path) and
+#: :meth:`KinematicTree._dof_axes` (Jacobian).
+_DOF_ROTATIONAL = {
+    _HINGE: (1.0,),
+    _SLIDE: (0.0,),
+    _BALL: (1.0, 1.0, 1.0),
+    _FREE: (0.0, 0.0, 0.0, 1.0, 1.0, 1.0),
+}
 _GEOM_SPHERE, _GEOM_CAPSULE, _GEOM_CYLINDER = 2, 3, 5
 
 
@@ -54,6 +64,29 @@ class BodySpheres(NamedTuple):
     body_ids: np.ndarray
     centres: np.ndarray
     radii: np.ndarray
+
+
+class _HingeTerms(NamedTuple):
+    """The pose of a body whose first joint is a hinge, relative to its parent, as constants
+    times functions of the joint angle ``theta = qpos - qpos0``.
+
+    The body's offset is ``(R, p)`` (its ``quat`` and ``pos``); the hinge rotates about the unit
+    axis ``a`` through the anchor ``c`` (in the body frame). With ``K`` the cross-product matrix
+    of ``a``, Rodrigues' formula gives the joint rotation ``J = I + sin(theta) K +
+    versine(theta) K^2`` (``versine = 1 - cos``), so the body's pose is::
+
+        rotation = R J             = rot + sin(theta) rot_sin + versine(theta) rot_versine
+        position = p + R (c - J c) = pos - sin(theta) pos_sin - versine(theta) pos_versine
+
+    (:meth:`KinematicTree.reference_forward_kinematics` computes the same with 4x4 products.)
+    """
+
+    rot: Any  # R: the body's rotation from its parent (theta = 0)
+    rot_sin: Any  # R K: multiplies sin(theta)
+    rot_versine: Any  # R K^2: multiplies 1 - cos(theta)
+    pos: Any  # p: the body's position in its parent
+    pos_sin: Any  # R K c: subtracted times sin(theta)
+    pos_versine: Any  # R K^2 c: subtracted times 1 - cos(theta)
 
 
 class _BodyPlan(NamedTuple):
@@ -118,6 +151,8 @@ class KinematicTree:
         self._geom_size = np.asarray(m.geom_size, dtype=np.float64).copy()
         self._geom_pos = np.asarray(m.geom_pos, dtype=np.float64).copy()
         self._geom_rot = mujoco_quaternion_to_rot_mat(np.asarray(m.geom_quat).reshape(-1, 4))
+        self._body_offsets = np.stack([_homogeneous_np(r, p) for r, p in zip(
+            self._body_rot, self._body_pos)])  # fmt: skip
         self._qpos_limits(m)
         self._build_plan(np.asarray(m.body_jntadr), np.asarray(m.body_jntnum))
         self._build_dofs()
@@ -160,7 +195,7 @@ class KinematicTree:
     def _build_plan(self, body_jntadr, body_jntnum) -> None:
         """Sort every body into a kind and precompute its constants (numpy float64)."""
         mats, vecs = [np.eye(3)], [np.zeros(3)]
-        hinge = {k: [] for k in ("A", "B", "C", "P", "K", "K2", "qadr", "q0")}
+        hinge = {k: [] for k in (*_HingeTerms._fields, "qadr", "q0")}
         world_rot = {0: np.eye(3)}  # world poses of static bodies
         world_pos = {0: np.zeros(3)}
         plan = [_BodyPlan("world", None, 0, 0, None, ())]
@@ -184,18 +219,22 @@ class KinematicTree:
                 moving_parent = None if parent_static else parent
                 j = joints[0]
                 if self._jnt_type[j] == _HINGE:
-                    k = A.skew(self._jnt_axis[j])
-                    k2 = k @ k
-                    c = self._jnt_pos[j]
-                    hinge["A"].append(rot)
-                    hinge["B"].append(rot @ k)
-                    hinge["C"].append(rot @ k2)
-                    hinge["P"].append(pos)
-                    hinge["K"].append(rot @ k @ c)
-                    hinge["K2"].append(rot @ k2 @ c)
+                    cross = A.skew(self._jnt_axis[j])  # K: cross-product matrix of the axis
+                    cross_sq = cross @ cross
+                    anchor = self._jnt_pos[j]
+                    terms = _HingeTerms(
+                        rot=rot,
+                        rot_sin=rot @ cross,
+                        rot_versine=rot @ cross_sq,
+                        pos=pos,
+                        pos_sin=rot @ cross @ anchor,
+                        pos_versine=rot @ cross_sq @ anchor,
+                    )
+                    for name, value in terms._asdict().items():
+                        hinge[name].append(value)
                     hinge["qadr"].append(self._jnt_qadr[j])
                     hinge["q0"].append(self.qpos0[self._jnt_qadr[j]])
-                    index = len(hinge["A"]) - 1
+                    index = len(hinge["qadr"]) - 1
                     plan.append(_BodyPlan("chain", moving_parent, 0, 0, index, joints))
                 else:
                     mats.append(rot), vecs.append(pos)
@@ -208,23 +247,20 @@ class KinematicTree:
         self._hinge_qadr = np.asarray(hinge.pop("qadr"), dtype=np.int64)
         consts = {"mats": np.stack(mats), "vecs": np.stack(vecs)}
         if len(self._hinge_qadr):
-            consts.update({"h" + k: np.stack(v) for k, v in hinge.items()})
+            consts.update({"hinge_" + k: np.stack(v) for k, v in hinge.items()})
         self._consts = consts
 
     def _build_dofs(self) -> None:
         """Per-dof flags and the dof order of the Jacobian's blocks."""
         rotational = []
         for j in range(self.njnt):
-            kind = self._jnt_type[j]
-            rotational += {_HINGE: [1.0], _SLIDE: [0.0], _BALL: [1.0] * 3}.get(
-                kind, [0.0] * 3 + [1.0] * 3
-            )
+            rotational += _DOF_ROTATIONAL[int(self._jnt_type[j])]
         # dof chains: the dofs of a body and of its ancestors
         chains = np.zeros((self.nbody, self.nv))
         for i in range(1, self.nbody):
             chains[i] = chains[self.parent_ids[i]]
             for j in np.flatnonzero(self._jnt_body == i):
-                n = {_HINGE: 1, _SLIDE: 1, _BALL: 3, _FREE: 6}[int(self._jnt_type[j])]
+                n = len(_DOF_ROTATIONAL[int(self._jnt_type[j])])
                 chains[i, self._jnt_dadr[j] : self._jnt_dadr[j] + n] = 1.0
         self._chains = chains
         self._dof_consts = {
@@ -233,9 +269,8 @@ class KinematicTree:
         }
 
     def _build_kernel_data(self) -> None:
-        """Everything the kernels read, as Python ints, floats and nested lists: no numpy object
-        is touched while a function is traced (``torch.compile`` breaks its graph on numpy)."""
-        self._k_dofs = A.as_lists(self._dof_consts)
+        """The static structure the kernels read (Python ints and tuples) and the entry-wise
+        constants; array constants stay numpy, brought in by :func:`ivy_robot._arrays.constant`."""
         self._k_hinge = A.gather_spec(self._hinge_qadr, self.nq)
         self._k_joints = tuple(
             (int(t), int(q), float(self.qpos0[q]), int(b))
@@ -243,23 +278,27 @@ class KinematicTree:
         )
         self._k_site_body = tuple(int(b) for b in self._site_body)
         self._k_dof_adr = tuple(int(d) for d in self._jnt_dadr)
-        self._k_chain = tuple(self._chains[b][:, None].tolist() for b in range(self.nbody))
+        self._chain_columns = tuple(self._chains[b][:, None] for b in range(self.nbody))
         # entry-wise constants (Python floats, snapped): see ivy_robot._entries
         consts = self._consts
         self._e_mats = [E.constant_matrix(m) for m in consts["mats"]]
         self._e_vecs = [E.constant_vector(v) for v in consts["vecs"]]
         self._e_hinge = tuple(
-            tuple(E.constant_matrix(consts[k][h]) for k in ("hA", "hB", "hC"))
-            + tuple(E.constant_vector(consts[k][h]) for k in ("hP", "hK", "hK2"))
+            _HingeTerms(
+                *(E.constant_matrix(consts["hinge_" + k][h]) for k in _HingeTerms._fields[:3]),
+                *(E.constant_vector(consts["hinge_" + k][h]) for k in _HingeTerms._fields[3:]),
+            )
             for h in range(len(self._hinge_qadr))
         )
-        self._k_hq0 = [float(self.qpos0[q]) for q in self._hinge_qadr]
+        self._hinge_has_ref = bool(np.any(self.qpos0[self._hinge_qadr] != 0.0))
         self._e_joint = tuple(
             {
                 "axis": E.constant_vector(self._jnt_axis[j]),
                 "pos": E.constant_vector(self._jnt_pos[j]),
-                "K": E.constant_matrix(A.skew(self._jnt_axis[j])),
-                "K2": E.constant_matrix(A.skew(self._jnt_axis[j]) @ A.skew(self._jnt_axis[j])),
+                "cross": E.constant_matrix(A.skew(self._jnt_axis[j])),
+                "cross_sq": E.constant_matrix(
+                    A.skew(self._jnt_axis[j]) @ A.skew(self._jnt_axis[j])
+                ),
             }
             for j in range(self.njnt)
         )
@@ -333,6 +372,42 @@ class KinematicTree:
         rots, poss, _ = self._frames(xp, qpos)
         entries = [e for rot, pos in zip(rots, poss) for e in E.pose_entries(rot, pos)]
         return E.poses_to_array(xp, entries, qpos, self.nbody)
+
+    def reference_forward_kinematics(self, qpos: Array, *, f: Framework = None) -> Array:
+        """The specification of :meth:`forward_kinematics`, and its test oracle: 4x4
+        homogeneous transforms composed along the tree, body by body (slower; the fast path
+        works entry by entry on folded constants).
+
+        A body's pose is its parent's pose, times its offset (``pos``, ``quat``), times the
+        transform of each of its joints in order (:func:`_joint_transform`); a free joint sets
+        the world pose.
+
+        Args:
+            qpos: joint positions *[batch_shape, nq]*.
+            f: framework name or namespace; inferred from ``qpos`` if None.
+
+        Returns:
+            Homogeneous poses *[batch_shape, nbody, 4, 4]*.
+
+        Example:
+            >>> q = np.random.default_rng(0).uniform(-1, 1, (4, tree.nq))
+            >>> bool(np.allclose(tree.reference_forward_kinematics(q), tree.forward_kinematics(q)))
+            True
+        """
+        xp = ivy.get_framework(qpos, f=f)
+        self._check_qpos(xp, qpos)
+        offsets = A.constant(xp, self._body_offsets, qpos)
+        axes = A.constant(xp, self._jnt_axis, qpos)
+        anchors = A.constant(xp, self._jnt_pos, qpos)
+        poses = [A.broadcast_leading(xp, offsets[0], qpos, 1)]  # the world: identity
+        for body in range(1, self.nbody):
+            pose = xp.matmul(poses[self.parent_ids[body]], offsets[body])
+            for j in np.flatnonzero(self._jnt_body == body):
+                kind, adr = int(self._jnt_type[j]), int(self._jnt_qadr[j])
+                local = _joint_transform(xp, kind, qpos, adr, self.qpos0[adr], axes[j], anchors[j])
+                pose = local if kind == _FREE else xp.matmul(pose, local)
+            poses.append(pose)
+        return xp.stack(poses, axis=-3)
 
     def site_poses(self, qpos: Array, *, f: Framework = None) -> Array:
         """World poses of every site (``site_xpos``, ``site_xmat``).
@@ -437,7 +512,7 @@ class KinematicTree:
             point = A.to_backend(xp, point, qpos)
             target = frame_pos + xp.matvec(frame_rot, point)
         axes, anchors = self._dof_axes(xp, qpos, rots, poss, joint_frames)
-        c = A.constants(xp, qpos, {**self._k_dofs, "chain": self._k_chain[b]})
+        c = A.constants(xp, qpos, {**self._dof_consts, "chain": self._chain_columns[b]})
         offset = target[..., None, :] - anchors
         linear = c["rot"] * xp.cross(axes, offset, axis=-1) + c["trans"] * axes
         angular = c["rot"] * axes
@@ -506,8 +581,8 @@ class KinematicTree:
         frames = [None] * self.njnt
         if self._e_hinge:
             theta = A.gather_last(xp, qpos, self._k_hinge)
-            if any(self._k_hq0):
-                theta = theta - xp.asarray(self._k_hq0, dtype=qpos.dtype, device=xp.dev(qpos))
+            if self._hinge_has_ref:
+                theta = theta - A.constant(xp, self._consts["hinge_q0"], qpos)
             sin, vers = _sin_versine(xp, theta)
         for i, step in enumerate(self._plan):
             if step.kind in ("world", "static"):
@@ -522,12 +597,20 @@ class KinematicTree:
                 continue
             if step.hinge is not None:
                 s, v = sin[..., step.hinge], vers[..., step.hinge]
-                a, b, c, p, k, k2 = self._e_hinge[step.hinge]
+                h = self._e_hinge[step.hinge]
                 rot = [
-                    [E.affine(a[r][col], [(b[r][col], s), (c[r][col], v)]) for col in range(3)]
+                    [
+                        E.affine(
+                            h.rot[r][col], [(h.rot_sin[r][col], s), (h.rot_versine[r][col], v)]
+                        )
+                        for col in range(3)
+                    ]
                     for r in range(3)
                 ]
-                pos = [E.affine(p[r], [(-k[r], s), (-k2[r], v)]) for r in range(3)]
+                pos = [
+                    E.affine(h.pos[r], [(-h.pos_sin[r], s), (-h.pos_versine[r], v)])
+                    for r in range(3)
+                ]
             else:
                 rot, pos = self._e_mats[step.mat], self._e_vecs[step.vec]
             if step.parent is not None:
@@ -555,7 +638,7 @@ class KinematicTree:
             s, v = _sin_versine(xp, theta)
             eye = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
             local = [
-                [E.affine(eye[r][col], [(c["K"][r][col], s), (c["K2"][r][col], v)])
+                [E.affine(eye[r][col], [(c["cross"][r][col], s), (c["cross_sq"][r][col], v)])
                  for col in range(3)]
                 for r in range(3)
             ]  # fmt: skip
@@ -600,16 +683,63 @@ class KinematicTree:
 # ----------------------------------------------------------------------------------------------
 
 
+_PLURALS = {"body": "bodies", "site": "sites", "joint": "joints"}
+
+
 def _lookup(key, names: tuple[str, ...], what: str) -> int:
+    plural = _PLURALS.get(what, what + "s")
     if isinstance(key, (int, np.integer)) and not isinstance(key, bool):
         if not 0 <= int(key) < len(names):
-            raise ValueError(f"{what} index {key} is out of range: the model has {len(names)}")
+            raise ValueError(
+                f"{what} index {key} is out of range: the model has {len(names)} {plural} "
+                f"(indices 0 to {len(names) - 1})"
+            )
         return int(key)
     try:
         return names.index(key)
     except ValueError:
         shown = ", ".join(repr(n) for n in names[:20]) + (", ..." if len(names) > 20 else "")
-        raise ValueError(f"unknown {what} {key!r}; the model's {what}s are: {shown}") from None
+        raise ValueError(f"unknown {what} {key!r}; the model's {plural} are: {shown}") from None
+
+
+def _homogeneous_np(rot, pos):
+    pose = np.eye(4)
+    pose[:3, :3], pose[:3, 3] = rot, pos
+    return pose
+
+
+def _homogeneous(xp, rot, pos):
+    """``[..., 3, 3]`` and ``[..., 3]`` -> ``[..., 4, 4]``."""
+    bottom = xp.zeros_like(rot[..., 0:1, :])
+    top = xp.concat([rot, pos[..., None]], axis=-1)
+    bottom = xp.concat([bottom, xp.ones_like(bottom[..., 0:1])], axis=-1)
+    return xp.concat([top, bottom], axis=-2)
+
+
+def _joint_transform(xp, kind, qpos, adr, ref, axis, anchor):
+    """The reference transform of one joint *[batch_shape, 4, 4]*, in its body's frame (for a
+    free joint, the world pose): a hinge rotates by ``qpos - ref`` about ``axis`` through
+    ``anchor`` (Rodrigues), a slide translates by ``qpos - ref`` along ``axis``, a ball rotates
+    by its quaternion about ``anchor``, a free joint is the pose ``qpos[adr:adr+7]``."""
+    if kind == _FREE:
+        return _homogeneous(xp, _quaternion_rot(xp, qpos[..., adr + 3 : adr + 7]),
+                            qpos[..., adr : adr + 3])  # fmt: skip
+    if kind == _SLIDE:
+        shift = (qpos[..., adr] - ref)[..., None]
+        eye = xp.broadcast_to(xp.eye(3, dtype=qpos.dtype, device=xp.dev(qpos)),
+                              (*qpos.shape[:-1], 3, 3))  # fmt: skip
+        return _homogeneous(xp, eye, shift * axis)
+    if kind == _HINGE:
+        theta = (qpos[..., adr] - ref)[..., None, None]
+        x, y, z = axis[0], axis[1], axis[2]
+        zero = xp.zeros_like(x)
+        cross = xp.stack([xp.stack([zero, -z, y]), xp.stack([z, zero, -x]),
+                          xp.stack([-y, x, zero])])  # fmt: skip
+        eye = xp.eye(3, dtype=qpos.dtype, device=xp.dev(qpos))
+        rot = eye + xp.sin(theta) * cross + (1.0 - xp.cos(theta)) * xp.matmul(cross, cross)
+    else:  # ball
+        rot = _quaternion_rot(xp, qpos[..., adr : adr + 4])
+    return _homogeneous(xp, rot, anchor - xp.matvec(rot, anchor))
 
 
 def _sin_versine(xp, theta):

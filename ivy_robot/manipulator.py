@@ -108,7 +108,7 @@ class Manipulator:
             self.joint_upper = _as_vector(joint_limits[1], n, "joint_limits[1]")
         # distance between consecutive frame origins (constant for revolute joints)
         self.link_lengths = np.hypot(self.a, self.d)
-        self._consts = A.as_lists(self._link_constants())
+        self._consts = self._link_constants()
         self._weights = {}  # sample_links interpolation weights, by samples_per_metre
 
     def _link_constants(self) -> dict:
@@ -218,7 +218,7 @@ class Manipulator:
         frames = self._chain(xp, joint_angles, c)
         tool = xp.matmul(frames[-1], c["tool"])
         origins = xp.stack([m[..., 0:3, 3] for m in frames + [tool]], axis=-2)
-        weights = A.to_backend(xp, self._sample_weights(samples_per_metre), joint_angles)
+        weights = A.constant(xp, self._sample_weights(samples_per_metre), joint_angles)
         return xp.matmul(weights, origins)
 
     def num_link_samples(self, samples_per_metre: float = 25.0) -> int:
@@ -236,9 +236,9 @@ class Manipulator:
         """
         return len(self._sample_weights(samples_per_metre))
 
-    def _sample_weights(self, samples_per_metre: float) -> list:
-        """Interpolation weights *[num_samples, num_joints + 2]* over the frame origins, as
-        nested lists (computed once per density, in plain Python)."""
+    def _sample_weights(self, samples_per_metre: float) -> np.ndarray:
+        """Interpolation weights *[num_samples, num_joints + 2]* over the frame origins (numpy,
+        computed once per density)."""
         if samples_per_metre <= 0:
             raise ValueError(
                 f"sample_links: samples_per_metre must be positive, got {samples_per_metre}"
@@ -256,8 +256,8 @@ class Manipulator:
                 row[i], row[i + 1] = 1.0 - k / count, k / count
                 rows.append(row)
         rows.append([0.0] * (width - 1) + [1.0])
-        self._weights[samples_per_metre] = rows
-        return rows
+        self._weights[samples_per_metre] = np.asarray(rows)
+        return self._weights[samples_per_metre]
 
 
 class PandaModel(Manipulator):

@@ -152,9 +152,7 @@ class _SplinePlanner:
             spline_weights(anchor_times, self.sample_times[:, None], order, method=method)
         )
         self._anchor_times, self._order, self._method = anchor_times, order, method
-        # what the compiled step reads, as Python lists (no numpy inside traced code)
-        self._k_weights = self.path_weights.tolist()
-        self._k_interior = anchor_times[1:-1].tolist()
+        self._interior_times = anchor_times[1:-1]
 
     # -- what a subclass provides -------------------------------------------------------------
 
@@ -195,7 +193,7 @@ class _SplinePlanner:
         """
         xp = ivy.get_framework(start, goal, f=f)
         self._check_ends(xp, start, goal)
-        t = _as(xp, self._k_interior, start)
+        t = A.constant(xp, self._interior_times, start)
         return start + t * (goal - start)
 
     def path(
@@ -227,7 +225,7 @@ class _SplinePlanner:
         """
         xp = ivy.get_framework(anchors, start, goal, f=f)
         if num_samples is None or num_samples == self.num_samples:
-            weights = self._k_weights
+            weights = A.constant(xp, self.path_weights, anchors)
         else:
             times = np.linspace(0.0, 1.0, int(num_samples))[:, None]
             weights = np.asarray(
@@ -256,7 +254,7 @@ class _SplinePlanner:
         xp = ivy.get_framework(anchors, start, goal, f=f)
         path = self.path(anchors, start, goal, f=xp)
         centres = self._sphere_centres(xp, path)
-        clearance = self.scene(centres, f=xp) - _as(xp, self._radii(), path)
+        clearance = self.scene(centres, f=xp) - A.constant(xp, self._radii(), path)
         obstacle = xp.sum(xp.mean(obstacle_cost(clearance, self.margin, f=xp), axis=0))
         terms = {
             "smoothness": self.weights["smoothness"] * smoothness_cost(path, f=xp),
@@ -441,34 +439,35 @@ class ArmPlanner(_SplinePlanner):
             self.spheres = robot.collision_spheres(sphere_spacing) if spheres is None else spheres
             self.lower, self.upper = robot.qpos_lower, robot.qpos_upper
             self._radius = np.asarray(self.spheres.radii, dtype=np.float64)
-            self._k_bodies = [int(b) for b in self.spheres.body_ids]
-            self._k_centres = np.asarray(self.spheres.centres, dtype=np.float64).tolist()
+            self._sphere_bodies = [int(b) for b in self.spheres.body_ids]
+            self._sphere_offsets = np.asarray(self.spheres.centres, dtype=np.float64)
         else:
             self.dim = robot.num_joints
             self.samples_per_metre = float(samples_per_metre)
             count = robot.num_link_samples(self.samples_per_metre)
             self._radius = np.full(count, float(link_radius))
             self.lower, self.upper = robot.joint_lower, robot.joint_upper
-        self._k_radius = self._radius.tolist()
-        self._k_limits = None
+        self._finite_limits = None
         if np.isfinite(self.lower).any() or np.isfinite(self.upper).any():
-            self._k_limits = (
-                np.where(np.isfinite(self.lower), self.lower, -1e30).tolist(),
-                np.where(np.isfinite(self.upper), self.upper, 1e30).tolist(),
+            self._finite_limits = (
+                np.where(np.isfinite(self.lower), self.lower, -1e30),
+                np.where(np.isfinite(self.upper), self.upper, 1e30),
             )
 
-    def _radii(self) -> list:
-        return self._k_radius
+    def _radii(self) -> np.ndarray:
+        return self._radius
 
     def _sphere_centres(self, xp, path):
         if isinstance(self.robot, KinematicTree):
-            return self.robot.transform_points(path, self._k_bodies, self._k_centres, f=xp)
+            offsets = A.constant(xp, self._sphere_offsets, path)
+            return self.robot.transform_points(path, self._sphere_bodies, offsets, f=xp)
         return self.robot.sample_links(path, self.samples_per_metre, f=xp)
 
     def _limits_cost(self, xp, path):
-        if self._k_limits is None:
+        if self._finite_limits is None:
             return None
-        return xp.mean(joint_limit_cost(path, *self._k_limits, f=xp))
+        lower, upper = (A.constant(xp, limit, path) for limit in self._finite_limits)
+        return xp.mean(joint_limit_cost(path, lower, upper, f=xp))
 
     def sphere_centres(self, path: Array, *, f: Framework = None) -> Array:
         """World centres of the collision spheres along a joint path.
@@ -546,10 +545,9 @@ class DronePlanner(_SplinePlanner):
         self._radius = np.broadcast_to(
             np.asarray(body_radius, dtype=np.float64), (body.num_points,)
         ).copy()
-        self._k_radius = self._radius.tolist()
 
-    def _radii(self) -> list:
-        return self._k_radius
+    def _radii(self) -> np.ndarray:
+        return self._radius
 
     def _sphere_centres(self, xp, path):
         return self.body.sample_body(mech.rot_vec_pose_to_mat_pose(path, f=xp), f=xp)

@@ -32,7 +32,6 @@ class RigidMobile:
             )
         self.body_points = points
         self.num_points = int(points.shape[0])
-        self._points = points.tolist()
 
     def sample_body(self, poses: Array, *, f: Framework = None) -> Array:
         """World positions of the body points under a batch of poses.
@@ -58,5 +57,5 @@ class RigidMobile:
                 f"got {shape}"
             )
         A.check_floating(xp, poses, "poses", "RigidMobile")
-        points = A.to_backend(xp, self._points, poses)
+        points = A.constant(xp, self.body_points, poses)
         return mech.transform_points(poses[..., None, :, :], points, f=xp)

@@ -272,13 +272,11 @@ class SceneSDF:
         for code in sorted(set(codes.tolist())):
             index = np.flatnonzero(codes[order] == code)
             self._groups.append((code, int(index[0]), int(index[-1]) + 1))
-        self._consts = A.as_lists(
-            {
-                "rot_t": np.swapaxes(self.poses[:, 0:3, 0:3], -1, -2),
-                "pos": self.poses[:, 0:3, 3],
-                "sizes": self.sizes,
-            }
-        )
+        self._consts = {
+            "rot_t": np.ascontiguousarray(np.swapaxes(self.poses[:, 0:3, 0:3], -1, -2)),
+            "pos": np.ascontiguousarray(self.poses[:, 0:3, 3]),
+            "sizes": self.sizes,
+        }
 
     @classmethod
     def from_mjcf(cls, source: Any, *, exclude: Sequence[str] = ()) -> SceneSDF:

@@ -8,7 +8,8 @@ Two interpolants, both exact at the anchors:
   It equals ``scipy.interpolate.RBFInterpolator(kernel='linear' | 'thin_plate_spline' | 'cubic',
   degree=1)`` and works for anchor points of any dimension.
 - ``"bspline"``: the interpolating cubic B-spline with not-a-knot ends, on a 1-D parameter
-  (``scipy.interpolate.make_interp_spline(x, y, k=3)``); it needs at least 4 anchors.
+  (``scipy.interpolate.make_interp_spline(x, y, k=3)``); it needs at least 4 anchors. Outside
+  the anchors it extrapolates the first and last polynomial pieces, as scipy does.
 
 Both are linear in the anchor values: the gradient with respect to them flows through one linear
 solve, on every backend.
@@ -90,15 +91,24 @@ def _polyharmonic(xp, anchor_points, anchor_values, sample_points, order):
 
 def _bspline_basis(xp, x, knots, count):
     """Cubic B-spline basis functions *[..., S, count]* at ``x`` *[..., S]* for the numpy knot
-    vector ``knots`` (Cox-de Boor; the last interval is closed on the right)."""
+    vector ``knots`` (Cox-de Boor).
+
+    Outside the knots the polynomial piece of the nearest interval continues (as scipy's
+    ``BSpline(extrapolate=True)``): points before the first interval count as inside it, points
+    at or after the end of the last interval count as inside the last one. The recurrence then
+    evaluates that piece's polynomial, so the path extrapolates smoothly instead of dropping to
+    0. A NaN point stays NaN."""
     t = [float(k) for k in knots]
-    last = max(i for i in range(len(t) - 1) if t[i] < t[i + 1])
+    intervals = [i for i in range(len(t) - 1) if t[i] < t[i + 1]]
+    first, last = intervals[0], intervals[-1]
     x = x[..., None]
     lo, hi = A.to_backend(xp, t[:-1], x), A.to_backend(xp, t[1:], x)
     inside = xp.logical_and(x >= lo, x < hi)
-    closed = xp.asarray([i == last for i in range(len(t) - 1)], device=xp.dev(x))
-    at_end = xp.logical_and(closed, x == hi)
-    basis = xp.astype(xp.logical_or(inside, at_end), x.dtype)
+    is_first = xp.asarray([i == first for i in range(len(t) - 1)], device=xp.dev(x))
+    is_last = xp.asarray([i == last for i in range(len(t) - 1)], device=xp.dev(x))
+    before = xp.logical_and(is_first, x < lo)
+    after = xp.logical_and(is_last, x >= hi)
+    basis = xp.astype(xp.logical_or(inside, xp.logical_or(before, after)), x.dtype)
     for degree in range(1, 4):
         m = len(t) - 1 - degree
         left_den = [t[i + degree] - t[i] for i in range(m)]

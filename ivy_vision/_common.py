@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import math
 
+from ivy_vision._checks import InputError, check_shape
+
 #: Channel counts of the representations, named for error messages.
 CHANNELS = {
     1: "depth [..., H, W, 1]",
@@ -31,88 +33,110 @@ def shape_of(xp, x) -> tuple:
     return tuple(xp.shape(x))
 
 
-def check_last_dim(xp, x, sizes, fn: str, what: str) -> int:
-    """Raise a ValueError unless ``x``'s last axis has one of ``sizes`` entries; return it."""
+def check_last_dim(xp, x, sizes, what: str) -> int:
+    """Raise an InputError unless ``x``'s last axis has one of ``sizes`` entries; return it."""
     shape = shape_of(xp, x)
     sizes = (sizes,) if isinstance(sizes, int) else tuple(sizes)
     if len(shape) == 0 or shape[-1] not in sizes:
         want = " or ".join(str(s) for s in sizes)
-        raise ValueError(
-            f"{fn}: {what} must have {want} channels in its last axis; got shape {shape}. "
+        raise InputError(
+            f"{what} must have {want} channels in its last axis; got shape {shape}. "
             f"Images are channel-last [..., H, W, C]."
         )
     return shape[-1]
 
 
-def check_matrix(xp, m, rows, cols, fn: str, what: str) -> tuple:
-    """Raise a ValueError unless ``m`` is ``[..., rows, cols]``; return its batch shape."""
+def check_matrix(xp, m, rows, cols, what: str) -> tuple:
+    """Raise an InputError unless ``m`` is ``[..., rows, cols]``; return its batch shape."""
     shape = shape_of(xp, m)
-    rows = (rows,) if isinstance(rows, int) else tuple(rows)
-    if len(shape) < 2 or shape[-2] not in rows or shape[-1] != cols:
-        want = "/".join(str(r) for r in rows)
-        raise ValueError(f"{fn}: {what} must be [..., {want}, {cols}]; got shape {shape}.")
+    rows = rows if isinstance(rows, int) else tuple(rows)
+    check_shape(shape, ("...", rows, cols), what)
     return shape[:-2]
 
 
-def check_image(xp, x, fn: str, what: str, channels=None) -> tuple:
-    """Raise a ValueError unless ``x`` is an image ``[..., H, W, C]``; return ``(H, W)``."""
+def check_image(xp, x, what: str, channels=None) -> tuple:
+    """Raise an InputError unless ``x`` is an image ``[..., H, W, C]`` (with one of
+    ``channels`` channels if given); return ``(H, W)``. A missing channel axis and a
+    channel-first image are named as such, with the fix."""
     shape = shape_of(xp, x)
-    if len(shape) < 3:
-        raise ValueError(f"{fn}: {what} must be an image [..., H, W, C]; got shape {shape}.")
-    if channels is not None:
-        check_last_dim(xp, x, channels, fn, what)
+    want = "C" if channels is None else channels
+    hint = "Images are channel-last [..., H, W, C]."
+    single = channels == 1 or channels == (1,)
+    if len(shape) == 2 and single:
+        hint = f"Give the channel axis: {what}[..., None] has shape {(*shape, 1)}."
+    elif channels is not None and len(shape) >= 3:
+        sizes = (channels,) if isinstance(channels, int) else tuple(channels)
+        if shape[-1] not in sizes and shape[-3] in sizes:
+            hint = (
+                f"It looks channel-first [..., C, H, W]; images are channel-last: move the "
+                f"channel axis last (shape {(*shape[:-3], shape[-2], shape[-1], shape[-3])})."
+            )
+    check_shape(shape, ("...", "H", "W", want), what, hint)
     return shape[-3], shape[-2]
 
 
-def broadcast_batch(batch_a: tuple, batch_b: tuple, fn: str, what_a: str, what_b: str) -> tuple:
-    """The broadcast of two batch shapes of equal length, or a ValueError naming both."""
+def reject_channel_first(xp, image, what: str, dims: tuple, dims_of: str) -> None:
+    """Raise an InputError when ``image`` ``[..., H', W', C']`` looks like a channel-first
+    image of the size ``dims = (H, W)`` of its companion ``dims_of``: ``(W', C') == (H, W)``
+    while ``(H', W') != (H, W)``."""
+    shape = shape_of(xp, image)
+    if tuple(shape[-2:]) == tuple(dims) and tuple(shape[-3:-1]) != tuple(dims):
+        raise InputError(
+            f"{what} of shape {shape} looks channel-first [..., C, H, W] ({dims_of} is "
+            f"{dims[0]} x {dims[1]}); images are channel-last [..., H, W, C]: move the channel "
+            f"axis last (shape {(*shape[:-3], shape[-2], shape[-1], shape[-3])})."
+        )
+
+
+def broadcast_batch(batch_a: tuple, batch_b: tuple, what_a: str, what_b: str) -> tuple:
+    """The broadcast of two batch shapes of equal length, or an InputError naming both."""
     if len(batch_a) != len(batch_b):
-        raise ValueError(
-            f"{fn}: {what_a} has batch shape {batch_a} but {what_b} has {batch_b}; give both "
+        raise InputError(
+            f"{what_a} has batch shape {batch_a} but {what_b} has {batch_b}; give both "
             f"the same leading batch dimensions."
         )
     out = []
     for a, b in zip(batch_a, batch_b):
         if a != b and a != 1 and b != 1 and a is not None and b is not None:
-            raise ValueError(
-                f"{fn}: the batch dimensions of {what_a} {batch_a} and {what_b} {batch_b} do not "
+            raise InputError(
+                f"the batch dimensions of {what_a} {batch_a} and {what_b} {batch_b} do not "
                 f"match (nor broadcast); give both the same leading batch dimensions."
             )
         out.append(b if a == 1 else a)
     return tuple(out)
 
 
-def broadcast_right(batch_a: tuple, batch_b: tuple, fn: str, what_a: str, what_b: str) -> tuple:
-    """numpy's broadcast of two batch shapes (aligned on the right), or a ValueError."""
+def broadcast_right(batch_a: tuple, batch_b: tuple, what_a: str, what_b: str) -> tuple:
+    """numpy's broadcast of two batch shapes (aligned on the right), or an InputError."""
     n = max(len(batch_a), len(batch_b))
     a = (1,) * (n - len(batch_a)) + tuple(batch_a)
     b = (1,) * (n - len(batch_b)) + tuple(batch_b)
-    return broadcast_batch(a, b, fn, what_a, what_b)
+    return broadcast_batch(a, b, what_a, what_b)
 
 
-def split_batch(xp, x, batch: tuple, fn: str, what: str, matrix_what: str) -> tuple:
+def split_batch(xp, x, batch: tuple, what: str, matrix_what: str) -> tuple:
     """Split ``x`` ``[*B', *I, n]`` into ``(B', I)`` for a matrix batch ``B`` (``len(B') ==
-    len(B)``), raising a ValueError when ``x`` has too few dimensions."""
+    len(B)``), raising an InputError when ``x`` has too few dimensions."""
     shape = shape_of(xp, x)
     nb = len(batch)
     if len(shape) < nb + 1:
-        raise ValueError(
-            f"{fn}: {what} of shape {shape} has fewer leading dimensions than the batch shape "
+        raise InputError(
+            f"{what} of shape {shape} has fewer leading dimensions than the batch shape "
             f"{batch} of {matrix_what}; give it the batch dimensions [*batch, ..., C] in front."
         )
     return shape[:nb], shape[nb:-1]
 
 
-def transform(xp, coords, mat, fn: str, what: str = "coords", matrix_what: str = "the matrix"):
+def transform(xp, coords, mat, what: str = "coords", matrix_what: str = "the matrix"):
     """``mat @ coords`` for every vector: coords ``[*B, *I, n]``, mat ``[*B, m, n]`` ->
     ``[*B, *I, m]``; one matrix product per batch item."""
     batch = shape_of(xp, mat)[:-2]
-    cb, image = split_batch(xp, coords, batch, fn, what, matrix_what)
-    out_batch = broadcast_batch(cb, batch, fn, what, matrix_what)
+    cb, image = split_batch(xp, coords, batch, what, matrix_what)
+    out_batch = broadcast_batch(cb, batch, what, matrix_what)
     n = shape_of(xp, mat)[-1]
     if shape_of(xp, coords)[-1] != n:
-        raise ValueError(
-            f"{fn}: {what} has {shape_of(xp, coords)[-1]} components but {matrix_what} "
+        raise InputError(
+            f"{what} has {shape_of(xp, coords)[-1]} components but {matrix_what} "
             f"{shape_of(xp, mat)} expects {n}."
         )
     if cb != out_batch:
@@ -122,13 +146,13 @@ def transform(xp, coords, mat, fn: str, what: str = "coords", matrix_what: str =
     return xp.reshape(out, (*out_batch, *image, shape_of(xp, mat)[-2]))
 
 
-def affine(xp, coords, mat, fn: str, what: str = "coords", matrix_what: str = "the matrix"):
+def affine(xp, coords, mat, what: str = "coords", matrix_what: str = "the matrix"):
     """``mat @ [coords, 1]`` for ``[m, n + 1]`` matrices and ``n``-vectors (or, when ``coords``
     already has ``n + 1`` components, ``mat @ coords``), without building homogeneous vectors."""
     n1 = shape_of(xp, mat)[-1]
     if shape_of(xp, coords)[-1] == n1:
-        return transform(xp, coords, mat, fn, what, matrix_what)
-    linear = transform(xp, coords, mat[..., :, : n1 - 1], fn, what, matrix_what)
+        return transform(xp, coords, mat, what, matrix_what)
+    linear = transform(xp, coords, mat[..., :, : n1 - 1], what, matrix_what)
     ni = len(shape_of(xp, linear)) - len(shape_of(xp, mat)) + 1
     offset = xp.reshape(mat[..., :, n1 - 1], (*shape_of(xp, mat)[:-2], *(1,) * ni, -1))
     return linear + offset
@@ -157,14 +181,14 @@ def pixel_grid(xp, image_dims, dtype, device, homogeneous_coords=True):
     return xp.stack(parts, axis=-1)
 
 
-def image_dims_of(image_dims, fn: str) -> tuple:
-    """``(H, W)`` as Python ints, or a ValueError."""
+def image_dims_of(image_dims, what: str = "image_dims") -> tuple:
+    """``(H, W)`` as Python ints, or an InputError."""
     try:
         h, w = (int(d) for d in image_dims)
     except (TypeError, ValueError):
-        raise ValueError(f"{fn}: image_dims must be (height, width); got {image_dims!r}.") from None
+        raise InputError(f"{what} must be (height, width); got {image_dims!r}.") from None
     if h <= 0 or w <= 0:
-        raise ValueError(f"{fn}: image_dims must be positive (height, width); got {(h, w)}.")
+        raise InputError(f"{what} must be positive (height, width); got {(h, w)}.")
     return h, w
 
 

@@ -18,6 +18,7 @@ import ivy
 from ivy.typing import Array, Framework, Shape
 from ivy_vision import _common as C
 from ivy_vision import single_view_geometry as svg
+from ivy_vision._checks import checked
 from ivy_vision.projective_geometry import check_invertible
 
 __all__ = ["Camera"]
@@ -44,6 +45,7 @@ class Camera:
     inv_full_mat: Array
 
     @classmethod
+    @checked
     def from_calib_and_ext_mats(cls, calib_mat: Array, ext_mat: Array, *, f: Framework = None):
         """A camera from its calibration and extrinsic matrices.
 
@@ -60,11 +62,10 @@ class Camera:
             >>> Camera.from_calib_and_ext_mats(np.eye(3), np.eye(3, 4)).inv_full_mat[:, 3]
             array([-0., -0., -0.])
         """
-        fn = "Camera.from_calib_and_ext_mats"
         xp = ivy.get_framework(calib_mat, ext_mat, f=f)
-        C.check_matrix(xp, ext_mat, 3, 4, fn, "ext_mat")
+        C.check_matrix(xp, ext_mat, 3, 4, "ext_mat")
         check_invertible(
-            xp, ext_mat[..., 0:3], fn, "the rotation of ext_mat", "it must be a rotation matrix."
+            xp, ext_mat[..., 0:3], "the rotation of ext_mat", "it must be a rotation matrix."
         )
         inv_calib = svg.invert_calib_mat(calib_mat, f=xp)
         rot, center = svg.ext_mat_to_rot_mat_and_cam_center(ext_mat, f=xp)
@@ -79,6 +80,7 @@ class Camera:
         return cls(calib_mat, inv_calib, ext_mat, inv_ext, full, inv_full)
 
     @classmethod
+    @checked
     def from_focal_lengths(
         cls,
         focal_lengths: Array,
@@ -111,6 +113,7 @@ class Camera:
         return cls.from_calib_and_ext_mats(calib, ext, f=xp)
 
     @classmethod
+    @checked
     def from_persp_angles(
         cls,
         persp_angles: Array,
@@ -154,6 +157,7 @@ class Camera:
         """The world-to-camera rotation ``R`` *[batch_shape, 3, 3]*."""
         return self.ext_mat[..., 0:3]
 
+    @checked
     def project(self, coords_wrt_world: Array, *, f: Framework = None) -> Array:
         """Depth-scaled pixel coordinates of world points (:func:`world_to_ds_pixel_coords`).
 
@@ -170,6 +174,7 @@ class Camera:
         """
         return svg.world_to_ds_pixel_coords(coords_wrt_world, self.full_mat, f=f)
 
+    @checked
     def unproject(self, depth: Array, *, f: Framework = None) -> Array:
         """Homogeneous world points of every pixel of a depth image
         (:func:`depth_to_world_coords`).
@@ -187,6 +192,7 @@ class Camera:
         """
         return svg.depth_to_world_coords(depth, self.inv_full_mat, f=f)
 
+    @checked
     def full_mat_to(self, other: Camera, *, f: Framework = None) -> Array:
         """The matrix ``P_other P_self^-1`` taking depth-scaled pixel coordinates of this camera
         to those of ``other`` (``cam1to2_full_mat``).

@@ -18,6 +18,7 @@ import math
 import ivy
 from ivy.typing import Array, Device, Dtype, Framework, Shape
 from ivy_vision import _common as C
+from ivy_vision._checks import InputError, checked
 
 __all__ = [
     "downsampled_image_dims_from_desired_num_pixels",
@@ -34,6 +35,7 @@ __all__ = [
 FAR_SPACING = 1e10
 
 
+@checked
 def downsampled_image_dims_from_desired_num_pixels(
     image_dims: Shape, num_pixels: int, maximum: bool = False, *, f: Framework = None
 ) -> tuple:
@@ -52,7 +54,7 @@ def downsampled_image_dims_from_desired_num_pixels(
         >>> downsampled_image_dims_from_desired_num_pixels((480, 640), 12)
         ([3, 4], 12)
     """
-    h, w = C.image_dims_of(image_dims, "downsampled_image_dims_from_desired_num_pixels")
+    h, w = C.image_dims_of(image_dims)
     to_int = math.floor if maximum else round
     ratio = w / h
     height = (num_pixels / ratio) ** 0.5
@@ -60,6 +62,7 @@ def downsampled_image_dims_from_desired_num_pixels(
     return [new_h, new_w], new_h * new_w
 
 
+@checked
 def create_sampled_pixel_coords_image(
     image_dims: Shape,
     samples_per_dim: Shape,
@@ -95,10 +98,9 @@ def create_sampled_pixel_coords_image(
         array([[1., 3.],
                [1., 3.]], dtype=float32)
     """
-    fn = "create_sampled_pixel_coords_image"
     xp = ivy.get_framework(f=f)
-    h, w = C.image_dims_of(image_dims, fn)
-    rows, cols = C.image_dims_of(samples_per_dim, fn)
+    h, w = C.image_dims_of(image_dims)
+    rows, cols = C.image_dims_of(samples_per_dim, "samples_per_dim")
     batch = tuple(batch_shape or ())
     cell = (w / cols, h / rows)
     grid = C.pixel_grid(xp, (rows, cols), dtype, device, False)
@@ -117,6 +119,7 @@ def create_sampled_pixel_coords_image(
     return coords
 
 
+@checked
 def sample_images(
     list_of_images: list,
     num_pixels: int,
@@ -141,16 +144,15 @@ def sample_images(
         >>> sample_images([image], 4, randomize=False)[0][..., 0]
         array([ 5.,  7., 13., 15.])
     """
-    fn = "sample_images"
     if not list_of_images:
-        raise ValueError(f"{fn}: list_of_images is empty.")
+        raise InputError("list_of_images is empty.")
     xp = ivy.get_framework(*list_of_images, f=f)
-    h, w = C.check_image(xp, list_of_images[0], fn, "list_of_images[0]")
+    h, w = C.check_image(xp, list_of_images[0], "list_of_images[0]")
     batch = C.shape_of(xp, list_of_images[0])[:-3]
     for image in list_of_images:
         if C.shape_of(xp, image)[:-1] != (*batch, h, w):
-            raise ValueError(
-                f"{fn}: the images must share their batch shape and size; got "
+            raise InputError(
+                f"the images must share their batch shape and size; got "
                 f"{[C.shape_of(xp, i) for i in list_of_images]}."
             )
     dims, count = downsampled_image_dims_from_desired_num_pixels((h, w), num_pixels)
@@ -173,6 +175,7 @@ def sample_images(
     return out
 
 
+@checked
 def sampled_volume_density_to_occupancy_probability(
     density: Array, inter_sample_distance: Array, *, f: Framework = None
 ) -> Array:
@@ -194,6 +197,7 @@ def sampled_volume_density_to_occupancy_probability(
     return -xp.expm1(-density * inter_sample_distance)
 
 
+@checked
 def ray_termination_probabilities(
     density: Array, inter_sample_distance: Array, *, f: Framework = None
 ) -> Array:
@@ -218,6 +222,7 @@ def ray_termination_probabilities(
     return -xp.expm1(-optical_depth) * transmittance
 
 
+@checked
 def stratified_sample(
     starts: Array, ends: Array, num_samples: int, *, f: Framework = None
 ) -> Array:
@@ -248,6 +253,7 @@ def stratified_sample(
     return left + u * bins
 
 
+@checked
 def render_rays_via_termination_probabilities(
     ray_term_probs: Array, features: Array, render_variance: bool = False, *, f: Framework = None
 ) -> Array | tuple:
@@ -274,6 +280,7 @@ def render_rays_via_termination_probabilities(
     return rendering, xp.sum(weights * (features - rendering[..., None, :]) ** 2, axis=-2)
 
 
+@checked
 def render_implicit_features_and_depth(
     network_fn,
     rays_o: Array,
@@ -325,10 +332,9 @@ def render_implicit_features_and_depth(
         >>> bool(abs(depth[0, 0] - 2) < 1 / 32)
         True
     """
-    fn = "render_implicit_features_and_depth"
     xp = ivy.get_framework(rays_o, rays_d, near, far, f=f)
-    C.check_last_dim(xp, rays_o, 3, fn, "rays_o")
-    C.check_last_dim(xp, rays_d, 3, fn, "rays_d")
+    C.check_last_dim(xp, rays_o, 3, "rays_o")
+    C.check_last_dim(xp, rays_d, 3, "rays_d")
     batch = C.shape_of(xp, rays_o)[:-1]
     ray_batch = C.shape_of(xp, rays_d)[len(batch) : -1]
     n = int(samples_per_ray)

@@ -15,8 +15,9 @@ from __future__ import annotations
 import math
 
 import ivy
-from ivy.typing import Array, Framework, Shape
+from ivy.typing import Array, Device, Framework, Shape
 from ivy_vision import _common as C
+from ivy_vision._checks import InputError, checked
 
 __all__ = [
     "rasterize_triangles",
@@ -51,6 +52,7 @@ def _chunk(xp, tri, px, py):
     return depth, bary
 
 
+@checked
 def rasterize_triangles(
     pixel_coords_triangles: Array,
     image_dims: Shape,
@@ -86,15 +88,14 @@ def rasterize_triangles(
         array([[2., 2.],
                [2., 2.]])
     """
-    fn = "rasterize_triangles"
     xp = ivy.get_framework(pixel_coords_triangles, f=f)
     shape = C.shape_of(xp, pixel_coords_triangles)
     if len(shape) < 3 or shape[-2:] != (3, 3):
-        raise ValueError(
-            f"{fn}: pixel_coords_triangles must be [..., num_triangles, 3, 3] (three vertices "
+        raise InputError(
+            f"pixel_coords_triangles must be [..., num_triangles, 3, 3] (three vertices "
             f"(x, y, depth)); got shape {shape}."
         )
-    h, w = C.image_dims_of(image_dims, fn)
+    h, w = C.image_dims_of(image_dims)
     batch, n = shape[:-3], shape[-3]
     b = math.prod(batch)
     tri = xp.reshape(pixel_coords_triangles, (b, n, 3, 3))
@@ -124,8 +125,13 @@ def rasterize_triangles(
     )
 
 
+@checked
 def create_trimesh_indices_for_image(
-    image_dims: Shape, batch_shape: Shape | None = None, *, f: Framework = None
+    image_dims: Shape,
+    batch_shape: Shape | None = None,
+    *,
+    device: Device | None = None,
+    f: Framework = None,
 ) -> Array:
     """Vertex indices of the triangles of a regular mesh over an image's pixels (two per
     square of four neighbouring pixels, vertices numbered row by row).
@@ -133,6 +139,7 @@ def create_trimesh_indices_for_image(
     Args:
         image_dims: ``(height, width)``.
         batch_shape: leading batch dimensions to broadcast to (none by default).
+        device: device of the result (the backend's default if None).
         f: framework name or namespace; the global framework if None.
 
     Returns:
@@ -144,9 +151,9 @@ def create_trimesh_indices_for_image(
                [3, 1, 2]])
     """
     xp = ivy.get_framework(f=f)
-    h, w = C.image_dims_of(image_dims, "create_trimesh_indices_for_image")
+    h, w = C.image_dims_of(image_dims)
     top_left = xp.reshape(
-        xp.arange(w - 1)[None, :] + w * xp.arange(h - 1)[:, None],
+        xp.arange(w - 1, device=device)[None, :] + w * xp.arange(h - 1, device=device)[:, None],
         (-1,),
     )
     first = xp.stack([top_left, top_left + 1, top_left + w], axis=-1)
@@ -157,6 +164,7 @@ def create_trimesh_indices_for_image(
     return indices
 
 
+@checked
 def coord_image_to_trimesh(
     coord_img: Array, validity_mask: Array | None = None, *, f: Framework = None
 ) -> tuple:
@@ -177,17 +185,16 @@ def coord_image_to_trimesh(
         >>> vertices.shape, triangles.shape
         ((6, 3), (4, 3))
     """
-    fn = "coord_image_to_trimesh"
     xp = ivy.get_framework(coord_img, validity_mask, f=f)
-    h, w = C.check_image(xp, coord_img, fn, "coord_img", channels=3)
+    h, w = C.check_image(xp, coord_img, "coord_img", channels=3)
     batch = C.shape_of(xp, coord_img)[:-3]
     vertices = xp.reshape(coord_img, (*batch, h * w, 3))
     indices = create_trimesh_indices_for_image((h, w), batch, f=xp)
     if validity_mask is None:
         return vertices, indices
     if batch or C.shape_of(xp, validity_mask) != (h, w, 1):
-        raise ValueError(
-            f"{fn}: validity_mask must be [h, w, 1] = {(h, w, 1)} for an unbatched coord_img "
+        raise InputError(
+            f"validity_mask must be [h, w, 1] = {(h, w, 1)} for an unbatched coord_img "
             f"(the number of triangles kept differs between images); got coord_img "
             f"{C.shape_of(xp, coord_img)} and validity_mask {C.shape_of(xp, validity_mask)}."
         )

@@ -28,6 +28,7 @@ import ivy
 import ivy_mechanics as mech
 from ivy.typing import Array, Framework
 from ivy_vision import _common as C
+from ivy_vision._checks import InputError, checked
 
 __all__ = [
     "cam_to_sphere_coords",
@@ -56,6 +57,7 @@ def _sphere_to_cam(xp, sphere, forward_facing_z):
     return cam
 
 
+@checked
 def cam_to_sphere_coords(
     cam_coords: Array, forward_facing_z: bool = True, *, f: Framework = None
 ) -> Array:
@@ -75,10 +77,11 @@ def cam_to_sphere_coords(
         array([0.5, 0.5, 1. ])
     """
     xp = ivy.get_framework(cam_coords, f=f)
-    C.check_last_dim(xp, cam_coords, (3, 4), "cam_to_sphere_coords", "cam_coords")
+    C.check_last_dim(xp, cam_coords, (3, 4), "cam_coords")
     return _cam_to_sphere(xp, cam_coords[..., 0:3], forward_facing_z)
 
 
+@checked
 def sphere_to_cam_coords(
     sphere_coords: Array, forward_facing_z: bool = True, *, f: Framework = None
 ) -> Array:
@@ -98,10 +101,11 @@ def sphere_to_cam_coords(
         array([0., 0., 2., 1.])
     """
     xp = ivy.get_framework(sphere_coords, f=f)
-    C.check_last_dim(xp, sphere_coords, 3, "sphere_to_cam_coords", "sphere_coords")
+    C.check_last_dim(xp, sphere_coords, 3, "sphere_coords")
     return C.homogeneous(xp, _sphere_to_cam(xp, sphere_coords, forward_facing_z))
 
 
+@checked
 def ds_pixel_to_sphere_coords(
     ds_pixel_coords: Array, inv_calib_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -119,14 +123,14 @@ def ds_pixel_to_sphere_coords(
         >>> ds_pixel_to_sphere_coords(np.array([0., 0., 3.]), np.eye(3)) / [1, np.pi, 1]
         array([0. , 0.5, 3. ])
     """
-    fn = "ds_pixel_to_sphere_coords"
     xp = ivy.get_framework(ds_pixel_coords, inv_calib_mat, f=f)
-    C.check_last_dim(xp, ds_pixel_coords, 3, fn, "ds_pixel_coords")
-    C.check_matrix(xp, inv_calib_mat, 3, 3, fn, "inv_calib_mat")
-    cam = C.transform(xp, ds_pixel_coords, inv_calib_mat, fn, "ds_pixel_coords", "inv_calib_mat")
+    C.check_last_dim(xp, ds_pixel_coords, 3, "ds_pixel_coords")
+    C.check_matrix(xp, inv_calib_mat, 3, 3, "inv_calib_mat")
+    cam = C.transform(xp, ds_pixel_coords, inv_calib_mat, "ds_pixel_coords", "inv_calib_mat")
     return _cam_to_sphere(xp, cam, True)
 
 
+@checked
 def sphere_to_ds_pixel_coords(
     sphere_coords: Array, calib_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -144,14 +148,14 @@ def sphere_to_ds_pixel_coords(
         >>> sphere_to_ds_pixel_coords(np.array([0., np.pi / 2, 3.]), np.eye(3)).round(12) + 0.
         array([0., 0., 3.])
     """
-    fn = "sphere_to_ds_pixel_coords"
     xp = ivy.get_framework(sphere_coords, calib_mat, f=f)
-    C.check_last_dim(xp, sphere_coords, 3, fn, "sphere_coords")
-    C.check_matrix(xp, calib_mat, 3, 3, fn, "calib_mat")
+    C.check_last_dim(xp, sphere_coords, 3, "sphere_coords")
+    C.check_matrix(xp, calib_mat, 3, 3, "calib_mat")
     cam = _sphere_to_cam(xp, sphere_coords, True)
-    return C.transform(xp, cam, calib_mat, fn, "sphere_coords", "calib_mat")
+    return C.transform(xp, cam, calib_mat, "sphere_coords", "calib_mat")
 
 
+@checked
 def angular_pixel_to_sphere_coords(
     angular_pixel_coords: Array, pixels_per_degree: float, *, f: Framework = None
 ) -> Array:
@@ -170,15 +174,14 @@ def angular_pixel_to_sphere_coords(
         array([0.5, 0.5, 1. ])
     """
     xp = ivy.get_framework(angular_pixel_coords, f=f)
-    C.check_last_dim(
-        xp, angular_pixel_coords, 3, "angular_pixel_to_sphere_coords", "angular_pixel_coords"
-    )
+    C.check_last_dim(xp, angular_pixel_coords, 3, "angular_pixel_coords")
     degrees = angular_pixel_coords[..., 0:2] / pixels_per_degree
     phi = (xp.remainder(degrees[..., 0:1], 360.0) - 180.0) / _DEG
     theta = (180.0 - degrees[..., 1:2]) / _DEG
     return xp.concat([phi, theta, angular_pixel_coords[..., 2:3]], axis=-1)
 
 
+@checked
 def sphere_to_angular_pixel_coords(
     sphere_coords: Array, pixels_per_degree: float, *, f: Framework = None
 ) -> Array:
@@ -198,12 +201,13 @@ def sphere_to_angular_pixel_coords(
         array([540., 180.,   1.])
     """
     xp = ivy.get_framework(sphere_coords, f=f)
-    C.check_last_dim(xp, sphere_coords, 3, "sphere_to_angular_pixel_coords", "sphere_coords")
+    C.check_last_dim(xp, sphere_coords, 3, "sphere_coords")
     x = xp.remainder(sphere_coords[..., 0:1] * _DEG + 180.0, 360.0) * pixels_per_degree
     y = (180.0 - sphere_coords[..., 1:2] * _DEG) * pixels_per_degree
     return xp.concat([x, y, sphere_coords[..., 2:3]], axis=-1)
 
 
+@checked
 def sphere_coords_to_world_ray_vectors(
     sphere_coords: Array, inv_rotation_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -221,16 +225,16 @@ def sphere_coords_to_world_ray_vectors(
         >>> sphere_coords_to_world_ray_vectors(np.array([0., np.pi / 2, 5.]), np.eye(3)).round(12)
         array([0., 0., 1.])
     """
-    fn = "sphere_coords_to_world_ray_vectors"
     xp = ivy.get_framework(sphere_coords, inv_rotation_mat, f=f)
-    C.check_last_dim(xp, sphere_coords, 3, fn, "sphere_coords")
-    C.check_matrix(xp, inv_rotation_mat, 3, 3, fn, "inv_rotation_mat")
+    C.check_last_dim(xp, sphere_coords, 3, "sphere_coords")
+    C.check_matrix(xp, inv_rotation_mat, 3, 3, "inv_rotation_mat")
     cam = _sphere_to_cam(xp, sphere_coords, True)
     return C.normalize(
-        xp, C.transform(xp, cam, inv_rotation_mat, fn, "sphere_coords", "inv_rotation_mat")
+        xp, C.transform(xp, cam, inv_rotation_mat, "sphere_coords", "inv_rotation_mat")
     )
 
 
+@checked
 def pad_omni_image(image: Array, pad_size: int, *, f: Framework = None) -> Array:
     """Pad an equirectangular image with its own wrapped content: columns wrap around the
     sides, and rows continue over the poles from the opposite half of the image (mirrored).
@@ -251,10 +255,10 @@ def pad_omni_image(image: Array, pad_size: int, *, f: Framework = None) -> Array
                [5., 6., 7., 4., 5., 6.]])
     """
     xp = ivy.get_framework(image, f=f)
-    h, w = C.check_image(xp, image, "pad_omni_image", "image")
+    h, w = C.check_image(xp, image, "image")
     pad = int(pad_size)
     if pad < 0 or pad > min(h, w):
-        raise ValueError(f"pad_omni_image: pad_size must be in [0, {min(h, w)}]; got {pad_size}.")
+        raise InputError(f"pad_size must be in [0, {min(h, w)}]; got {pad_size}.")
     if pad == 0:
         return image
     half = w // 2

@@ -16,6 +16,7 @@ from ivy.typing import Array, Framework
 from ivy_vision import _common as C
 from ivy_vision import single_view_geometry as svg
 from ivy_vision import two_view_geometry as tvg
+from ivy_vision._checks import InputError, checked
 from ivy_vision.sampling import sample_kernel
 
 __all__ = [
@@ -34,6 +35,7 @@ def _pixels(xp, ds_pixel_coords):
     return xp.safe_divide(ds_pixel_coords[..., 0:2], ds_pixel_coords[..., 2:3])
 
 
+@checked
 def flow_from_depth_and_cam_mats(
     pixel_coords1: Array, cam1to2_full_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -57,11 +59,12 @@ def flow_from_depth_and_cam_mats(
     return _pixels(xp, projected) - _pixels(xp, pixel_coords1)
 
 
-def _flow_image(xp, flow, fn):
-    C.check_image(xp, flow, fn, "flow", channels=2)
+def _flow_image(xp, flow):
+    C.check_image(xp, flow, "flow", channels=2)
     return C.shape_of(xp, flow)[-3:-1]
 
 
+@checked
 def depth_from_flow_and_cam_mats(
     flow: Array,
     full_mats: Array,
@@ -92,13 +95,12 @@ def depth_from_flow_and_cam_mats(
         >>> depth_from_flow_and_cam_mats(flow, P)
         array([[[2.]]])
     """
-    fn = "depth_from_flow_and_cam_mats"
     xp = ivy.get_framework(flow, full_mats, inv_full_mats, camera_centers, f=f)
-    dims = _flow_image(xp, flow, fn)
+    dims = _flow_image(xp, flow)
     if uniform_pixel_coords is None:
         uniform_pixel_coords = C.pixel_grid(xp, dims, xp.dtype(flow), xp.dev(flow))
     else:
-        C.check_last_dim(xp, uniform_pixel_coords, 3, fn, "uniform_pixel_coords")
+        C.check_last_dim(xp, uniform_pixel_coords, 3, "uniform_pixel_coords")
     moved = uniform_pixel_coords + xp.concat([flow, xp.zeros_like(flow[..., 0:1])], axis=-1)
     first = xp.broadcast_to(uniform_pixel_coords, C.shape_of(xp, moved))
     pixels = xp.stack([first, moved], axis=-4)
@@ -107,6 +109,7 @@ def depth_from_flow_and_cam_mats(
     )[..., 2:3]
 
 
+@checked
 def project_flow_to_epipolar_line(
     flow: Array,
     fund_mat: Array,
@@ -131,14 +134,13 @@ def project_flow_to_epipolar_line(
         >>> project_flow_to_epipolar_line(np.array([[[3., 0.7]]]), F)
         array([[[3., 0.]]])
     """
-    fn = "project_flow_to_epipolar_line"
     xp = ivy.get_framework(flow, fund_mat, f=f)
-    dims = _flow_image(xp, flow, fn)
-    C.check_matrix(xp, fund_mat, 3, 3, fn, "fund_mat")
+    dims = _flow_image(xp, flow)
+    C.check_matrix(xp, fund_mat, 3, 3, "fund_mat")
     if uniform_pixel_coords is None:
         uniform_pixel_coords = C.pixel_grid(xp, dims, xp.dtype(flow), xp.dev(flow))
     grid = xp.broadcast_to(uniform_pixel_coords, (*C.shape_of(xp, fund_mat)[:-2], *dims, 3))
-    lines = C.transform(xp, grid, fund_mat, fn, "uniform_pixel_coords", "fund_mat")
+    lines = C.transform(xp, grid, fund_mat, "uniform_pixel_coords", "fund_mat")
     a, b, c = lines[..., 0:1], lines[..., 1:2], lines[..., 2:3]
     moved = grid[..., 0:2] + flow
     distance = xp.safe_divide(a * moved[..., 0:1] + b * moved[..., 1:2] + c, a * a + b * b)
@@ -146,6 +148,7 @@ def project_flow_to_epipolar_line(
     return projected - grid[..., 0:2]
 
 
+@checked
 def pixel_cost_volume(
     image1: Array, image2: Array, search_range: int, *, f: Framework = None
 ) -> Array:
@@ -166,12 +169,11 @@ def pixel_cost_volume(
         >>> pixel_cost_volume(np.ones((2, 2, 1)), np.ones((2, 2, 1)), 1)[0, 0]
         array([0., 0., 0., 0., 1., 1., 0., 1., 1.])
     """
-    fn = "pixel_cost_volume"
     xp = ivy.get_framework(image1, image2, f=f)
-    h, w = C.check_image(xp, image1, fn, "image1")
+    h, w = C.check_image(xp, image1, "image1")
     if C.shape_of(xp, image1) != C.shape_of(xp, image2):
-        raise ValueError(
-            f"{fn}: image1 {C.shape_of(xp, image1)} and image2 {C.shape_of(xp, image2)} must "
+        raise InputError(
+            f"image1 {C.shape_of(xp, image1)} and image2 {C.shape_of(xp, image2)} must "
             f"have the same shape."
         )
     r = int(search_range)
@@ -185,6 +187,7 @@ def pixel_cost_volume(
     return xp.concat(costs, axis=-1)
 
 
+@checked
 def velocity_from_flow_cam_coords_and_cam_mats(
     flow_t_to_tm1: Array,
     cam_coords_t: Array,
@@ -220,17 +223,16 @@ def velocity_from_flow_cam_coords_and_cam_mats(
         ...     np.zeros((1, 1, 2)), coords, coords, np.eye(3, 4), np.array([0.5]))[0]
         array([[[0., 0., 0.]]])
     """
-    fn = "velocity_from_flow_cam_coords_and_cam_mats"
     xp = ivy.get_framework(
         flow_t_to_tm1, cam_coords_t, cam_coords_tm1, cam_tm1_to_t_ext_mat, delta_t, f=f
     )
-    h, w = _flow_image(xp, flow_t_to_tm1, fn)
+    h, w = _flow_image(xp, flow_t_to_tm1)
     if uniform_pixel_coords is None:
         uniform_pixel_coords = C.pixel_grid(
             xp, (h, w), xp.dtype(flow_t_to_tm1), xp.dev(flow_t_to_tm1)
         )
     warp = uniform_pixel_coords[..., 0:2] + flow_t_to_tm1
-    previous = sample_kernel(xp, cam_coords_tm1[..., 0:3], warp, "bilinear", "border", fn)
+    previous = sample_kernel(xp, cam_coords_tm1[..., 0:3], warp, "bilinear", "border")
     moved = tvg.cam_to_cam_coords(previous, cam_tm1_to_t_ext_mat, f=xp)[..., 0:3]
     dt = xp.reshape(delta_t, (*C.shape_of(xp, delta_t)[:-1], 1, 1, 1))
     velocity = (cam_coords_t[..., 0:3] - moved) / dt
@@ -239,6 +241,7 @@ def velocity_from_flow_cam_coords_and_cam_mats(
     return velocity, valid
 
 
+@checked
 def project_cam_coords_with_object_transformations(
     cam_coords_1: Array,
     id_image: Array,
@@ -274,14 +277,13 @@ def project_cam_coords_with_object_transformations(
         >>> coords[..., 0]
         array([[2., 1.]])
     """
-    fn = "project_cam_coords_with_object_transformations"
     xp = ivy.get_framework(cam_coords_1, id_image, obj_ids, obj_trans, cam_1_to_2_ext_mat, f=f)
-    C.check_image(xp, cam_coords_1, fn, "cam_coords_1", channels=(3, 4))
-    C.check_image(xp, id_image, fn, "id_image", channels=1)
+    C.check_image(xp, cam_coords_1, "cam_coords_1", channels=(3, 4))
+    C.check_image(xp, id_image, "id_image", channels=1)
     tshape = C.shape_of(xp, obj_trans)
     if len(tshape) < 3 or tshape[-2:] != (3, 4):
-        raise ValueError(f"{fn}: obj_trans must be [..., num_obj, 3, 4]; got shape {tshape}.")
-    C.check_last_dim(xp, obj_ids, 1, fn, "obj_ids")
+        raise InputError(f"obj_trans must be [..., num_obj, 3, 4]; got shape {tshape}.")
+    C.check_last_dim(xp, obj_ids, 1, "obj_ids")
     nb = len(tshape) - 3
     points = cam_coords_1[..., 0:3]
     # every object's transformation applied to every pixel: [*B, h, w, num_obj, 3]
@@ -295,6 +297,7 @@ def project_cam_coords_with_object_transformations(
     return C.homogeneous(xp, xp.where(motion_mask, object_motion, static)), motion_mask
 
 
+@checked
 def velocity_from_cam_coords_id_image_and_object_trans(
     cam_coords_t: Array,
     id_image: Array,
@@ -339,6 +342,7 @@ def velocity_from_cam_coords_id_image_and_object_trans(
     return xp.where(moving, velocity, xp.zeros_like(velocity))
 
 
+@checked
 def flow_from_cam_coords_id_image_and_object_trans(
     cam_coords_f1: Array,
     id_image: Array,

@@ -13,6 +13,7 @@ import numpy as np
 import ivy
 from ivy.typing import Array, Framework
 from ivy_vision import _common as C
+from ivy_vision._checks import InputError, checked
 
 __all__ = [
     "transform",
@@ -25,7 +26,7 @@ __all__ = [
 MAX_CONDITION = 1e12
 
 
-def check_invertible(xp, m, fn: str, what: str, hint: str) -> None:
+def check_invertible(xp, m, what: str, hint: str) -> None:
     """Raise a ValueError when the square matrices ``m`` are singular (eager mode only; under
     compilation the values are unknown and the inverse of a singular matrix is inf or nan)."""
     values = C.concrete(xp, m)
@@ -35,12 +36,13 @@ def check_invertible(xp, m, fn: str, what: str, hint: str) -> None:
         cond = np.linalg.cond(values.astype(np.float64).reshape(-1, *values.shape[-2:]))
     bad = ~np.isfinite(cond) | (cond > MAX_CONDITION)
     if np.any(bad):
-        raise ValueError(
-            f"{fn}: {what} is singular (condition number {np.max(cond):.3g} for "
+        raise InputError(
+            f"{what} is singular (condition number {np.max(cond):.3g} for "
             f"{int(np.sum(bad))} of {bad.size} matrices); {hint}"
         )
 
 
+@checked
 def transform(coords: Array, trans: Array, *, f: Framework = None) -> Array:
     """Transform every ``n``-vector of a coordinate image by an ``m x n`` matrix.
 
@@ -61,12 +63,11 @@ def transform(coords: Array, trans: Array, *, f: Framework = None) -> Array:
     """
     xp = ivy.get_framework(coords, trans, f=f)
     if len(C.shape_of(xp, trans)) < 2:
-        raise ValueError(
-            f"transform: trans must be [..., m, n]; got shape {C.shape_of(xp, trans)}."
-        )
-    return C.transform(xp, coords, trans, "transform", "coords", "trans")
+        raise InputError(f"trans must be [..., m, n]; got shape {C.shape_of(xp, trans)}.")
+    return C.transform(xp, coords, trans, "coords", "trans")
 
 
+@checked
 def projection_matrix_inverse(proj_mat: Array, *, f: Framework = None) -> Array:
     """Inverse ``[M^-1 | -M^-1 t]`` of a projection (or extrinsic) matrix ``[M | t]``: the top
     three rows of the inverse of the homogeneous ``4 x 4`` matrix.
@@ -86,11 +87,10 @@ def projection_matrix_inverse(proj_mat: Array, *, f: Framework = None) -> Array:
                [ 0. ,  0. ,  1. , -0. ]])
     """
     xp = ivy.get_framework(proj_mat, f=f)
-    C.check_matrix(xp, proj_mat, 3, 4, "projection_matrix_inverse", "proj_mat")
+    C.check_matrix(xp, proj_mat, 3, 4, "proj_mat")
     check_invertible(
         xp,
         proj_mat[..., 0:3],
-        "projection_matrix_inverse",
         "the left 3x3 block of proj_mat",
         "a calibration matrix needs non-zero focal lengths and a rotation must be orthonormal.",
     )
@@ -103,6 +103,7 @@ def invert_affine(xp, mat):
     return xp.concat([inv, -xp.matmul(inv, mat[..., 3:4])], axis=-1)
 
 
+@checked
 def projection_matrix_pseudo_inverse(proj_mat: Array, *, f: Framework = None) -> Array:
     """Right pseudo-inverse ``P^T (P P^T)^-1`` of full-rank projection matrices.
 
@@ -118,14 +119,13 @@ def projection_matrix_pseudo_inverse(proj_mat: Array, *, f: Framework = None) ->
         (4, 3)
     """
     xp = ivy.get_framework(proj_mat, f=f)
-    C.check_matrix(xp, proj_mat, 3, 4, "projection_matrix_pseudo_inverse", "proj_mat")
+    C.check_matrix(xp, proj_mat, 3, 4, "proj_mat")
     gram = xp.matmul(proj_mat, xp.swapaxes(proj_mat, -1, -2))
-    check_invertible(
-        xp, gram, "projection_matrix_pseudo_inverse", "P P^T", "proj_mat must have rank 3."
-    )
+    check_invertible(xp, gram, "P P^T", "proj_mat must have rank 3.")
     return xp.matmul(xp.swapaxes(proj_mat, -1, -2), xp.inv(gram))
 
 
+@checked
 def solve_homogeneous_dlt(A: Array, *, f: Framework = None) -> Array:
     """Solve ``A x = 0`` for a unit vector ``x`` by the homogeneous DLT: the right singular
     vector of the smallest singular value.
@@ -145,5 +145,5 @@ def solve_homogeneous_dlt(A: Array, *, f: Framework = None) -> Array:
     xp = ivy.get_framework(A, f=f)
     shape = C.shape_of(xp, A)
     if len(shape) < 2:
-        raise ValueError(f"solve_homogeneous_dlt: A must be [..., k, d]; got shape {shape}.")
+        raise InputError(f"A must be [..., k, d]; got shape {shape}.")
     return xp.svd(A, full_matrices=True)[2][..., -1, :]

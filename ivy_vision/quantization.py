@@ -15,6 +15,7 @@ import ivy
 from ivy.typing import Array, Framework, Shape
 from ivy_vision import _common as C
 from ivy_vision import _splat as S
+from ivy_vision._checks import InputError, checked
 
 __all__ = ["quantize_to_image"]
 
@@ -26,6 +27,7 @@ def _as_array(xp, value, shape, like):
     return xp.broadcast_to(xp.astype(value, xp.dtype(like)), shape)
 
 
+@checked
 def quantize_to_image(
     pixel_coords: Array,
     final_image_dims: Shape,
@@ -81,22 +83,21 @@ def quantize_to_image(
         >>> mean[0, 0], count[0, 0]
         (array([0.1, 0. , 1. , 7. ]), array([2.]))
     """
-    fn = "quantize_to_image"
     xp = ivy.get_framework(pixel_coords, feat, f=f)
-    C.check_last_dim(xp, pixel_coords, 2, fn, "pixel_coords")
+    C.check_last_dim(xp, pixel_coords, 2, "pixel_coords")
     shape = C.shape_of(xp, pixel_coords)
     if len(shape) < 2:
-        raise ValueError(f"{fn}: pixel_coords must be [..., num_points, 2]; got shape {shape}.")
+        raise InputError(f"pixel_coords must be [..., num_points, 2]; got shape {shape}.")
     batch, n = shape[:-2], shape[-2]
-    h, w = C.image_dims_of(final_image_dims, fn)
+    h, w = C.image_dims_of(final_image_dims, "final_image_dims")
     d = 0 if feat is None else C.shape_of(xp, feat)[-1]
     if feat is not None and C.shape_of(xp, feat)[:-1] != shape[:-1]:
-        raise ValueError(
-            f"{fn}: feat {C.shape_of(xp, feat)} must be [..., num_points, d] with the leading "
+        raise InputError(
+            f"feat {C.shape_of(xp, feat)} must be [..., num_points, d] with the leading "
             f"shape {shape[:-1]} of pixel_coords."
         )
     if with_db and d == 0:
-        raise ValueError(f"{fn}: with_db needs features whose first channel is the depth.")
+        raise InputError("with_db needs features whose first channel is the depth.")
     like = pixel_coords
     means = (
         pixel_coords

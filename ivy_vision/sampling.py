@@ -29,6 +29,7 @@ import ivy
 from ivy.typing import Array, Framework, Shape
 from ivy_vision import _common as C
 from ivy_vision import _splat as S
+from ivy_vision._checks import InputError, checked
 
 __all__ = [
     "sample_image",
@@ -41,11 +42,11 @@ METHODS = ("bilinear", "nearest")
 PADDINGS = ("border", "zeros")
 
 
-def _check_options(fn, method, padding):
+def _check_options(method, padding):
     if method not in METHODS:
-        raise ValueError(f"{fn}: method must be one of {METHODS}; got {method!r}.")
+        raise InputError(f"method must be one of {METHODS}; got {method!r}.")
     if padding not in PADDINGS:
-        raise ValueError(f"{fn}: padding must be one of {PADDINGS}; got {padding!r}.")
+        raise InputError(f"padding must be one of {PADDINGS}; got {padding!r}.")
 
 
 def _floating(xp, image, like):
@@ -73,17 +74,23 @@ def padded_planes(xp, image, padding):
     return xp.reshape(padded, (c, b * (h + 3) * (w + 3)))
 
 
-def sample_planes(xp, planes, dims, xq, yq, method):
+def sample_planes(xp, planes, dims, xq, yq, method, padding):
     """Sample padded channel planes (:func:`padded_planes` of images of ``dims = (b, H, W)``)
     at coordinates already shifted by +1 into the padded image, ``xq``, ``yq`` ``[b, n]``.
     Returns ``[C, b, n]``.
 
     The coordinates are clamped to the padded image, so that points beyond the border get the
     padding value and both paddings share one code path; the four corners of every point are
-    gathered in one call."""
+    gathered in one call. A NaN coordinate is moved to the padded corner ``(0, 0)`` before any
+    index is computed from it (a NaN cast to an integer is an arbitrary index: numpy and
+    tensorflow raise, torch reads out of bounds, jax clamps), and its sample is 0 on both
+    paddings."""
     b, h, w = dims
     c = C.shape_of(xp, planes)[0]
     n = C.shape_of(xp, xq)[-1]
+    unknown = xp.isnan(xq + yq)  # either is NaN (or they are opposite infinities)
+    xq = xp.where(unknown, xp.zeros_like(xq), xq)
+    yq = xp.where(unknown, xp.zeros_like(yq), yq)
     xq = xp.clip(xq, 0.0, float(w + 1))
     yq = xp.clip(yq, 0.0, float(h + 1))
     index_type = C.index_dtype(xp)
@@ -97,16 +104,20 @@ def sample_planes(xp, planes, dims, xq, yq, method):
 
     if method == "nearest":
         index = flat_index(xp.floor(yq + 0.5), xp.floor(xq + 0.5))
-        return xp.reshape(xp.take(planes, xp.reshape(index, (-1,)), axis=1), (c, b, n))
-    x0, y0 = xp.floor(xq), xp.floor(yq)
-    wx, wy = xq - x0, yq - y0
-    top = flat_index(y0, x0)
-    corners = xp.asarray([0, 1, w + 3, w + 4], dtype=index_type, device=xp.dev(xq))
-    index = xp.reshape(top, (1, b * n)) + corners[:, None]  # corner-major [4, b*n]
-    values = xp.reshape(xp.take(planes, xp.reshape(index, (-1,)), axis=1), (c, 4, b, n))
-    upper = values[:, 0] + (values[:, 1] - values[:, 0]) * wx
-    lower = values[:, 2] + (values[:, 3] - values[:, 2]) * wx
-    return upper + (lower - upper) * wy
+        out = xp.reshape(xp.take(planes, xp.reshape(index, (-1,)), axis=1), (c, b, n))
+    else:
+        x0, y0 = xp.floor(xq), xp.floor(yq)
+        wx, wy = xq - x0, yq - y0
+        top = flat_index(y0, x0)
+        corners = xp.asarray([0, 1, w + 3, w + 4], dtype=index_type, device=xp.dev(xq))
+        index = xp.reshape(top, (1, b * n)) + corners[:, None]  # corner-major [4, b*n]
+        values = xp.reshape(xp.take(planes, xp.reshape(index, (-1,)), axis=1), (c, 4, b, n))
+        upper = values[:, 0] + (values[:, 1] - values[:, 0]) * wx
+        lower = values[:, 2] + (values[:, 3] - values[:, 2]) * wx
+        out = upper + (lower - upper) * wy
+    if padding == "zeros":  # the padded corner (0, 0) is 0 already
+        return out
+    return xp.where(unknown, xp.zeros_like(out), out)  # not the corner pixel
 
 
 def channels_last(xp, planes_out, shape):
@@ -114,14 +125,14 @@ def channels_last(xp, planes_out, shape):
     return xp.reshape(xp.permute_dims(planes_out, (1, 2, 0)), shape)
 
 
-def sample_kernel(xp, image, coords, method, padding, fn):
+def sample_kernel(xp, image, coords, method, padding):
     """Sample ``image`` ``[*B, H, W, C]`` at ``coords`` ``[*B, *I, 2]`` -> ``[*B, *I, C]``."""
-    h, w = C.check_image(xp, image, fn, "image")
-    C.check_last_dim(xp, coords, 2, fn, "the sampling coordinates")
+    h, w = C.check_image(xp, image, "image")
+    C.check_last_dim(xp, coords, 2, "the sampling coordinates")
     ishape = C.shape_of(xp, image)
     ib = ishape[:-3]
-    cb, points = C.split_batch(xp, coords, ib, fn, "the sampling coordinates", "image")
-    batch = C.broadcast_batch(cb, ib, fn, "the sampling coordinates", "image")
+    cb, points = C.split_batch(xp, coords, ib, "the sampling coordinates", "image")
+    batch = C.broadcast_batch(cb, ib, "the sampling coordinates", "image")
     c = ishape[-1]
     b, n = math.prod(batch), math.prod(points)
     if ib != batch:
@@ -131,10 +142,12 @@ def sample_kernel(xp, image, coords, method, padding, fn):
     image = xp.reshape(_floating(xp, image, coords), (b, h, w, c))
     coords = xp.reshape(coords, (b, n, 2))
     planes = padded_planes(xp, image, padding)
-    out = sample_planes(xp, planes, (b, h, w), coords[..., 0] + 1.0, coords[..., 1] + 1.0, method)
+    xq, yq = coords[..., 0] + 1.0, coords[..., 1] + 1.0
+    out = sample_planes(xp, planes, (b, h, w), xq, yq, method, padding)
     return channels_last(xp, out, (*batch, *points, c))
 
 
+@checked
 def sample_image(
     image: Array,
     pixel_coords: Array,
@@ -164,10 +177,11 @@ def sample_image(
                [2.5]])
     """
     xp = ivy.get_framework(image, pixel_coords, f=f)
-    _check_options("sample_image", method, padding)
-    return sample_kernel(xp, image, pixel_coords, method, padding, "sample_image")
+    _check_options(method, padding)
+    return sample_kernel(xp, image, pixel_coords, method, padding)
 
 
+@checked
 def bilinearly_interpolate_image(
     image: Array, sampling_pixel_coords: Array, *, f: Framework = None
 ) -> Array:
@@ -187,23 +201,20 @@ def bilinearly_interpolate_image(
         array([[1.5]])
     """
     xp = ivy.get_framework(image, sampling_pixel_coords, f=f)
-    return sample_kernel(
-        xp, image, sampling_pixel_coords, "bilinear", "border", "bilinearly_interpolate_image"
-    )
+    return sample_kernel(xp, image, sampling_pixel_coords, "bilinear", "border")
 
 
-def project_depth(xp, depth, full_mat, uniform_pixel_coords, fn):
+def project_depth(xp, depth, full_mat, uniform_pixel_coords):
     """Depth-scaled pixel coordinates in another camera of every pixel of a depth image, as
     ``d * (M [u, v, 1]) + t`` for ``full_mat = [M | t]``, channel-first: ``[*B, 3, H*W]`` (each
     component contiguous, which the sampling reads fastest). For the default pixel grid the
     rays ``M [u, v, 1]`` are sums of a row term and a column term (no matrix product over the
     image)."""
-    C.check_image(xp, depth, fn, "the depth image", channels=1)
-    C.check_matrix(xp, full_mat, 3, 4, fn, "the camera-to-camera full matrix")
+    C.check_image(xp, depth, "the depth image", channels=1)
+    C.check_matrix(xp, full_mat, 3, 4, "the camera-to-camera full matrix")
     C.broadcast_right(
         C.shape_of(xp, depth)[:-3],
         C.shape_of(xp, full_mat)[:-2],
-        fn,
         "the depth image",
         "the camera-to-camera full matrix",
     )
@@ -218,7 +229,7 @@ def project_depth(xp, depth, full_mat, uniform_pixel_coords, fn):
         rays = m[..., 0, :, :] * cols + (m[..., 1, :, :] * rows[:, None] + m[..., 2, :, :])
         rays = xp.reshape(rays, (*C.shape_of(xp, rays)[:-2], h * w))
     else:
-        C.check_last_dim(xp, uniform_pixel_coords, 3, fn, "uniform_pixel_coords")
+        C.check_last_dim(xp, uniform_pixel_coords, 3, "uniform_pixel_coords")
         gshape = C.shape_of(xp, uniform_pixel_coords)
         grid = xp.swapaxes(xp.reshape(uniform_pixel_coords, (*gshape[:-3], h * w, 3)), -1, -2)
         rays = xp.matmul(full_mat[..., 0:3], grid)
@@ -233,6 +244,7 @@ def _shift_by_one(xp, full_mat):
     )
 
 
+@checked
 def inverse_warp(
     image_src: Array,
     depth_tgt: Array,
@@ -274,25 +286,30 @@ def inverse_warp(
         array([[0., 1., 2.],
                [3., 4., 5.]])
     """
-    fn = "inverse_warp"
     xp = ivy.get_framework(image_src, depth_tgt, tgt_to_src_full_mat, f=f)
-    _check_options(fn, method, padding)
-    hs, ws = C.check_image(xp, image_src, fn, "image_src")
-    C.check_matrix(xp, tgt_to_src_full_mat, 3, 4, fn, "tgt_to_src_full_mat")
-    h, w = C.shape_of(xp, depth_tgt)[-3:-1]
+    _check_options(method, padding)
+    C.check_matrix(xp, tgt_to_src_full_mat, 3, 4, "tgt_to_src_full_mat")
+    h, w = C.check_image(xp, depth_tgt, "depth_tgt", channels=1)
+    hs, ws = C.check_image(xp, image_src, "image_src")
+    C.reject_channel_first(xp, image_src, "image_src", (h, w), "depth_tgt")
+    # missing depth (NaN, as depth sensors report it, or infinite) is replaced by 0 before the
+    # projection, so that no NaN reaches an index or a gradient, and the pixel is invalid
+    measured = xp.isfinite(depth_tgt)
+    depth = xp.where(measured, depth_tgt, xp.zeros_like(depth_tgt))
     shifted = _shift_by_one(xp, tgt_to_src_full_mat)
-    projected = project_depth(xp, depth_tgt, shifted, uniform_pixel_coords, fn)
+    projected = project_depth(xp, depth, shifted, uniform_pixel_coords)
     batch = C.broadcast_right(
         C.shape_of(xp, projected)[:-2],
         C.shape_of(xp, image_src)[:-3],
-        fn,
         "the target depth",
         "image_src",
     )
     c = C.shape_of(xp, image_src)[-1]
     b = math.prod(batch)
     z = projected[..., 2, :]
-    in_front = z > 0
+    dshape = C.shape_of(xp, depth_tgt)
+    measured = xp.reshape(measured, (*dshape[:-3], h * w))
+    in_front = xp.logical_and(z > 0, measured)
     inverse_z = 1.0 / xp.where(in_front, z, xp.ones_like(z))
     # coordinates in the padded source image (x + 1, y + 1)
     xq, yq = projected[..., 0, :] * inverse_z, projected[..., 1, :] * inverse_z
@@ -306,7 +323,13 @@ def inverse_warp(
         yq = xp.broadcast_to(yq, (*batch, h * w))
     planes = padded_planes(xp, image, padding)
     warped = sample_planes(
-        xp, planes, (b, hs, ws), xp.reshape(xq, (b, h * w)), xp.reshape(yq, (b, h * w)), method
+        xp,
+        planes,
+        (b, hs, ws),
+        xp.reshape(xq, (b, h * w)),
+        xp.reshape(yq, (b, h * w)),
+        method,
+        padding,
     )
     front = xp.reshape(xp.broadcast_to(in_front, (*batch, h * w)), (b, h * w))
     if padding == "border":
@@ -317,12 +340,13 @@ def inverse_warp(
     inside = xp.logical_and(
         xp.logical_and(xq >= 0.5, xq <= ws + 0.5), xp.logical_and(yq >= 0.5, yq <= hs + 0.5)
     )
-    measured = xp.reshape(depth_tgt, (*C.shape_of(xp, depth_tgt)[:-3], h * w)) > 0
-    inside = xp.logical_and(inside, measured)
+    positive = xp.reshape(depth, (*dshape[:-3], h * w)) > 0
+    inside = xp.logical_and(inside, positive)
     valid = xp.logical_and(front, xp.reshape(xp.broadcast_to(inside, (*batch, h * w)), (b, h * w)))
     return warped, xp.reshape(valid, (*batch, h, w, 1))
 
 
+@checked
 def forward_warp(
     image_src: Array,
     depth_src: Array,
@@ -363,20 +387,25 @@ def forward_warp(
         array([[0., 1., 2.],
                [3., 4., 5.]])
     """
-    fn = "forward_warp"
     xp = ivy.get_framework(image_src, depth_src, src_to_tgt_full_mat, f=f)
-    h, w = C.check_image(xp, image_src, fn, "image_src")
-    if C.shape_of(xp, depth_src)[-3:-1] != (h, w):
-        raise ValueError(
-            f"{fn}: image_src {C.shape_of(xp, image_src)} and depth_src "
+    h, w = C.check_image(xp, depth_src, "depth_src", channels=1)
+    C.reject_channel_first(xp, image_src, "image_src", (h, w), "depth_src")
+    if C.check_image(xp, image_src, "image_src") != (h, w):
+        raise InputError(
+            f"image_src {C.shape_of(xp, image_src)} and depth_src "
             f"{C.shape_of(xp, depth_src)} must have the same height and width."
         )
-    dims = (h, w) if target_image_dims is None else C.image_dims_of(target_image_dims, fn)
-    projected = project_depth(xp, depth_src, src_to_tgt_full_mat, uniform_pixel_coords, fn)
+    dims = (
+        (h, w)
+        if target_image_dims is None
+        else C.image_dims_of(target_image_dims, "target_image_dims")
+    )
+    # missing depth (NaN or infinite) becomes 0, a source pixel without depth: left out
+    depth_src = xp.where(xp.isfinite(depth_src), depth_src, xp.zeros_like(depth_src))
+    projected = project_depth(xp, depth_src, src_to_tgt_full_mat, uniform_pixel_coords)
     batch = C.broadcast_right(
         C.shape_of(xp, projected)[:-2],
         C.shape_of(xp, image_src)[:-3],
-        fn,
         "the source depth",
         "image_src",
     )

@@ -10,19 +10,21 @@ from __future__ import annotations
 import ivy
 from ivy.typing import Array, Framework
 from ivy_vision import _common as C
+from ivy_vision._checks import InputError, checked
 
 __all__ = ["sphere_signed_distances", "cuboid_signed_distances"]
 
 
-def _queries(xp, query_positions, fn):
-    C.check_last_dim(xp, query_positions, 3, fn, "query_positions")
+def _queries(xp, query_positions):
+    C.check_last_dim(xp, query_positions, 3, "query_positions")
     if len(C.shape_of(xp, query_positions)) < 2:
-        raise ValueError(
-            f"{fn}: query_positions must be [..., num_points, 3]; got shape "
+        raise InputError(
+            f"query_positions must be [..., num_points, 3]; got shape "
             f"{C.shape_of(xp, query_positions)}."
         )
 
 
+@checked
 def sphere_signed_distances(
     sphere_positions: Array, sphere_radii: Array, query_positions: Array, *, f: Framework = None
 ) -> Array:
@@ -41,16 +43,16 @@ def sphere_signed_distances(
         >>> sphere_signed_distances(np.zeros((1, 3)), np.full((1, 1), 2.), np.zeros((1, 3)))
         array([[-2.]])
     """
-    fn = "sphere_signed_distances"
     xp = ivy.get_framework(sphere_positions, sphere_radii, query_positions, f=f)
-    _queries(xp, query_positions, fn)
-    C.check_last_dim(xp, sphere_positions, 3, fn, "sphere_positions")
-    C.check_last_dim(xp, sphere_radii, 1, fn, "sphere_radii")
+    _queries(xp, query_positions)
+    C.check_last_dim(xp, sphere_positions, 3, "sphere_positions")
+    C.check_last_dim(xp, sphere_radii, 1, "sphere_radii")
     offsets = query_positions[..., None, :, :] - sphere_positions[..., :, None, :]
     distances = xp.safe_norm(offsets, axis=-1, keepdims=True) - sphere_radii[..., None, :]
     return xp.min(distances, axis=-3)
 
 
+@checked
 def cuboid_signed_distances(
     cuboid_ext_mats: Array, cuboid_dims: Array, query_positions: Array, *, f: Framework = None
 ) -> Array:
@@ -72,13 +74,12 @@ def cuboid_signed_distances(
         array([[-1.],
                [ 2.]])
     """
-    fn = "cuboid_signed_distances"
     xp = ivy.get_framework(cuboid_ext_mats, cuboid_dims, query_positions, f=f)
-    _queries(xp, query_positions, fn)
+    _queries(xp, query_positions)
     mshape = C.shape_of(xp, cuboid_ext_mats)
     if len(mshape) < 3 or mshape[-2:] != (3, 4):
-        raise ValueError(f"{fn}: cuboid_ext_mats must be [..., num_cuboids, 3, 4]; got {mshape}.")
-    C.check_last_dim(xp, cuboid_dims, 3, fn, "cuboid_dims")
+        raise InputError(f"cuboid_ext_mats must be [..., num_cuboids, 3, 4]; got {mshape}.")
+    C.check_last_dim(xp, cuboid_dims, 3, "cuboid_dims")
     # [*B, NC, NP, 3]: every point in every cuboid's frame
     rot, t = cuboid_ext_mats[..., None, :, 0:3], cuboid_ext_mats[..., None, :, 3]
     local = xp.matvec(rot, query_positions[..., None, :, :]) + t

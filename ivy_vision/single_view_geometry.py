@@ -29,6 +29,7 @@ from __future__ import annotations
 import ivy
 from ivy.typing import Array, Device, Dtype, Framework, Shape
 from ivy_vision import _common as C
+from ivy_vision._checks import InputError, checked
 from ivy_vision.projective_geometry import check_invertible
 
 __all__ = [
@@ -66,6 +67,7 @@ __all__ = [
 # ----------------------------------------------------------------------------------------------
 
 
+@checked
 def create_uniform_pixel_coords_image(
     image_dims: Shape,
     batch_shape: Shape | None = None,
@@ -98,7 +100,7 @@ def create_uniform_pixel_coords_image(
         array([2., 1., 1.], dtype=float32)
     """
     xp = ivy.get_framework(f=f)
-    h, w = C.image_dims_of(image_dims, "create_uniform_pixel_coords_image")
+    h, w = C.image_dims_of(image_dims)
     grid = C.pixel_grid(xp, (h, w), dtype, device, homogeneous_coords=homogeneous)
     if normalized:
         scale = [1.0 / w, 1.0 / h] + ([1.0] if homogeneous else [])
@@ -108,15 +110,15 @@ def create_uniform_pixel_coords_image(
     return grid
 
 
-def _grid_for(xp, like, image_dims, uniform_pixel_coords, fn):
+def _grid_for(xp, like, image_dims, uniform_pixel_coords):
     """The pixel grid ``[H, W, 3]`` in ``like``'s dtype, or the given one (checked)."""
     if uniform_pixel_coords is not None:
-        C.check_last_dim(xp, uniform_pixel_coords, 3, fn, "uniform_pixel_coords")
+        C.check_last_dim(xp, uniform_pixel_coords, 3, "uniform_pixel_coords")
         return uniform_pixel_coords
     return C.pixel_grid(xp, image_dims, xp.dtype(like), xp.dev(like))
 
 
-def _rays(xp, grid, mat, fn):
+def _rays(xp, grid, mat):
     """``mat[..., :3] @ grid`` for a pixel grid ``[H, W, 3]`` (shared by the batch) or a batched
     one ``[*B, H, W, 3]``: ``[*B, H, W, 3]``."""
     gshape = C.shape_of(xp, grid)
@@ -126,19 +128,20 @@ def _rays(xp, grid, mat, fn):
         flat = xp.reshape(grid, (gshape[0] * gshape[1], 3))
         out = xp.matmul(flat, xp.swapaxes(m, -1, -2))
         return xp.reshape(out, (*mshape[:-2], gshape[0], gshape[1], mshape[-2]))
-    return C.transform(xp, grid, m, fn, "uniform_pixel_coords", "the matrix")
+    return C.transform(xp, grid, m, "uniform_pixel_coords", "the matrix")
 
 
-def _check_depth(xp, depth, fn, what="depth"):
-    C.check_image(xp, depth, fn, what, channels=1)
+def _check_depth(xp, depth, what="depth"):
+    C.check_image(xp, depth, what, channels=1)
 
 
-def _broadcast_image_batch(xp, image, mat, fn, what, mat_what):
+def _broadcast_image_batch(xp, image, mat, what, mat_what):
     """Check that the batch dimensions of an image ``[*Bi, H, W, C]`` and a matrix
     ``[*Bm, r, c]`` broadcast (numpy's rules, aligned on the right)."""
-    C.broadcast_right(C.shape_of(xp, image)[:-3], C.shape_of(xp, mat)[:-2], fn, what, mat_what)
+    C.broadcast_right(C.shape_of(xp, image)[:-3], C.shape_of(xp, mat)[:-2], what, mat_what)
 
 
+@checked
 def depth_to_ds_pixel_coords(
     depth: Array, uniform_pixel_coords: Array | None = None, *, f: Framework = None
 ) -> Array:
@@ -158,13 +161,12 @@ def depth_to_ds_pixel_coords(
                 [2., 0., 2.]]])
     """
     xp = ivy.get_framework(depth, f=f)
-    _check_depth(xp, depth, "depth_to_ds_pixel_coords")
-    grid = _grid_for(
-        xp, depth, C.shape_of(xp, depth)[-3:-1], uniform_pixel_coords, "depth_to_ds_pixel_coords"
-    )
+    _check_depth(xp, depth)
+    grid = _grid_for(xp, depth, C.shape_of(xp, depth)[-3:-1], uniform_pixel_coords)
     return grid * depth
 
 
+@checked
 def ds_pixel_coords_to_pixel_coords(ds_pixel_coords: Array, *, f: Framework = None) -> Array:
     """Pixel coordinates ``[u, v]`` of depth-scaled pixel coordinates ``[u*d, v*d, d]``.
 
@@ -182,7 +184,7 @@ def ds_pixel_coords_to_pixel_coords(ds_pixel_coords: Array, *, f: Framework = No
         array([2., 3.])
     """
     xp = ivy.get_framework(ds_pixel_coords, f=f)
-    C.check_last_dim(xp, ds_pixel_coords, 3, "ds_pixel_coords_to_pixel_coords", "ds_pixel_coords")
+    C.check_last_dim(xp, ds_pixel_coords, 3, "ds_pixel_coords")
     return xp.safe_divide(ds_pixel_coords[..., 0:2], ds_pixel_coords[..., 2:3])
 
 
@@ -191,11 +193,12 @@ def ds_pixel_coords_to_pixel_coords(ds_pixel_coords: Array, *, f: Framework = No
 # ----------------------------------------------------------------------------------------------
 
 
-def _wh(xp, like, image_dims, fn):
-    h, w = C.image_dims_of(image_dims, fn)
+def _wh(xp, like, image_dims):
+    h, w = C.image_dims_of(image_dims)
     return xp.asarray([float(w), float(h)], dtype=xp.dtype(like), device=xp.dev(like))
 
 
+@checked
 def persp_angles_to_focal_lengths(
     persp_angles: Array, image_dims: Shape, *, f: Framework = None
 ) -> Array:
@@ -217,11 +220,12 @@ def persp_angles_to_focal_lengths(
         array([100.,  50.])
     """
     xp = ivy.get_framework(persp_angles, f=f)
-    C.check_last_dim(xp, persp_angles, 2, "persp_angles_to_focal_lengths", "persp_angles")
-    wh = _wh(xp, persp_angles, image_dims, "persp_angles_to_focal_lengths")
+    C.check_last_dim(xp, persp_angles, 2, "persp_angles")
+    wh = _wh(xp, persp_angles, image_dims)
     return wh / (2.0 * xp.tan(persp_angles / 2.0))
 
 
+@checked
 def focal_lengths_to_persp_angles(
     focal_lengths: Array, image_dims: Shape, *, f: Framework = None
 ) -> Array:
@@ -241,11 +245,12 @@ def focal_lengths_to_persp_angles(
         array([0.5, 0.5])
     """
     xp = ivy.get_framework(focal_lengths, f=f)
-    C.check_last_dim(xp, focal_lengths, 2, "focal_lengths_to_persp_angles", "focal_lengths")
-    wh = _wh(xp, focal_lengths, image_dims, "focal_lengths_to_persp_angles")
+    C.check_last_dim(xp, focal_lengths, 2, "focal_lengths")
+    wh = _wh(xp, focal_lengths, image_dims)
     return 2.0 * xp.atan(wh / (2.0 * focal_lengths))
 
 
+@checked
 def focal_lengths_and_pp_offsets_to_calib_mat(
     focal_lengths: Array, pp_offsets: Array, *, f: Framework = None
 ) -> Array:
@@ -265,14 +270,12 @@ def focal_lengths_and_pp_offsets_to_calib_mat(
                [0., 3., 5.],
                [0., 0., 1.]])
     """
-    fn = "focal_lengths_and_pp_offsets_to_calib_mat"
     xp = ivy.get_framework(focal_lengths, pp_offsets, f=f)
-    C.check_last_dim(xp, focal_lengths, 2, fn, "focal_lengths")
-    C.check_last_dim(xp, pp_offsets, 2, fn, "pp_offsets")
+    C.check_last_dim(xp, focal_lengths, 2, "focal_lengths")
+    C.check_last_dim(xp, pp_offsets, 2, "pp_offsets")
     C.broadcast_right(
         C.shape_of(xp, focal_lengths)[:-1],
         C.shape_of(xp, pp_offsets)[:-1],
-        fn,
         "focal_lengths",
         "pp_offsets",
     )
@@ -282,6 +285,7 @@ def focal_lengths_and_pp_offsets_to_calib_mat(
     return xp.stack_matrix([[fx, zero, px], [zero, fy, py], [zero, zero, one]])
 
 
+@checked
 def calib_mat_to_focal_lengths_and_pp_offsets(calib_mat: Array, *, f: Framework = None) -> tuple:
     """Focal lengths and principal point of calibration matrices.
 
@@ -297,11 +301,12 @@ def calib_mat_to_focal_lengths_and_pp_offsets(calib_mat: Array, *, f: Framework 
         (array([2., 3.]), array([4., 5.]))
     """
     xp = ivy.get_framework(calib_mat, f=f)
-    C.check_matrix(xp, calib_mat, 3, 3, "calib_mat_to_focal_lengths_and_pp_offsets", "calib_mat")
+    C.check_matrix(xp, calib_mat, 3, 3, "calib_mat")
     focal = xp.stack([calib_mat[..., 0, 0], calib_mat[..., 1, 1]], axis=-1)
     return focal, calib_mat[..., 0:2, 2]
 
 
+@checked
 def invert_calib_mat(calib_mat: Array, *, f: Framework = None) -> Array:
     """Inverse of upper-triangular calibration matrices (skew allowed), in closed form.
 
@@ -322,11 +327,10 @@ def invert_calib_mat(calib_mat: Array, *, f: Framework = None) -> Array:
                [ 0.  ,  0.  ,  1.  ]])
     """
     xp = ivy.get_framework(calib_mat, f=f)
-    C.check_matrix(xp, calib_mat, 3, 3, "invert_calib_mat", "calib_mat")
+    C.check_matrix(xp, calib_mat, 3, 3, "calib_mat")
     check_invertible(
         xp,
         calib_mat,
-        "invert_calib_mat",
         "the calibration matrix",
         "its focal lengths must be non-zero.",
     )
@@ -341,11 +345,12 @@ def invert_calib_mat(calib_mat: Array, *, f: Framework = None) -> Array:
     return xp.stack_matrix([[a, b, c * one], [zero, d, e * one], [zero, zero, one]])
 
 
-def _center_vector(xp, camera_center, fn):
-    C.check_last_dim(xp, camera_center, 3, fn, "camera_center")
+def _center_vector(xp, camera_center):
+    C.check_last_dim(xp, camera_center, 3, "camera_center")
     return camera_center
 
 
+@checked
 def rot_mat_and_cam_center_to_ext_mat(
     rotation_mat: Array, camera_center: Array, *, f: Framework = None
 ) -> Array:
@@ -365,19 +370,19 @@ def rot_mat_and_cam_center_to_ext_mat(
                [ 0.,  1.,  0., -2.],
                [ 0.,  0.,  1., -3.]])
     """
-    fn = "rot_mat_and_cam_center_to_ext_mat"
     xp = ivy.get_framework(rotation_mat, camera_center, f=f)
-    C.check_matrix(xp, rotation_mat, 3, 3, fn, "rotation_mat")
-    center = _center_vector(xp, camera_center, fn)
+    C.check_matrix(xp, rotation_mat, 3, 3, "rotation_mat")
+    center = _center_vector(xp, camera_center)
     t = -xp.matvec(rotation_mat, center)
     rb, tb = C.shape_of(xp, rotation_mat)[:-2], C.shape_of(xp, t)[:-1]
     if rb != tb:
-        batch = C.broadcast_batch(rb, tb, fn, "rotation_mat", "camera_center")
+        batch = C.broadcast_batch(rb, tb, "rotation_mat", "camera_center")
         rotation_mat = xp.broadcast_to(rotation_mat, (*batch, 3, 3))
         t = xp.broadcast_to(t, (*batch, 3))
     return xp.concat([rotation_mat, t[..., None]], axis=-1)
 
 
+@checked
 def ext_mat_to_rot_mat_and_cam_center(ext_mat: Array, *, f: Framework = None) -> tuple:
     """Rotation and camera centre of extrinsic matrices ``[R | t]``: ``C = -R^T t``.
 
@@ -393,11 +398,12 @@ def ext_mat_to_rot_mat_and_cam_center(ext_mat: Array, *, f: Framework = None) ->
         array([-0., -0., -0.])
     """
     xp = ivy.get_framework(ext_mat, f=f)
-    C.check_matrix(xp, ext_mat, 3, 4, "ext_mat_to_rot_mat_and_cam_center", "ext_mat")
+    C.check_matrix(xp, ext_mat, 3, 4, "ext_mat")
     rot = ext_mat[..., 0:3]
     return rot, -xp.matvec(xp.swapaxes(rot, -1, -2), ext_mat[..., 3])
 
 
+@checked
 def calib_and_ext_to_full_mat(calib_mat: Array, ext_mat: Array, *, f: Framework = None) -> Array:
     """Full projection matrix ``P = K E``.
 
@@ -414,18 +420,18 @@ def calib_and_ext_to_full_mat(calib_mat: Array, ext_mat: Array, *, f: Framework 
         array([2., 0., 0., 0.])
     """
     xp = ivy.get_framework(calib_mat, ext_mat, f=f)
-    C.check_matrix(xp, calib_mat, 3, 3, "calib_and_ext_to_full_mat", "calib_mat")
-    C.check_matrix(xp, ext_mat, 3, 4, "calib_and_ext_to_full_mat", "ext_mat")
+    C.check_matrix(xp, calib_mat, 3, 3, "calib_mat")
+    C.check_matrix(xp, ext_mat, 3, 4, "ext_mat")
     C.broadcast_batch(
         C.shape_of(xp, calib_mat)[:-2],
         C.shape_of(xp, ext_mat)[:-2],
-        "calib_and_ext_to_full_mat",
         "calib_mat",
         "ext_mat",
     )
     return xp.matmul(calib_mat, ext_mat)
 
 
+@checked
 def inv_ext_mat_to_camera_center(inv_ext_mat: Array, *, f: Framework = None) -> Array:
     """Camera centre: the last column of an inverse extrinsic (or inverse full) matrix.
 
@@ -441,7 +447,7 @@ def inv_ext_mat_to_camera_center(inv_ext_mat: Array, *, f: Framework = None) -> 
         array([5., 6., 7.])
     """
     xp = ivy.get_framework(inv_ext_mat, f=f)
-    C.check_matrix(xp, inv_ext_mat, 3, 4, "inv_ext_mat_to_camera_center", "inv_ext_mat")
+    C.check_matrix(xp, inv_ext_mat, 3, 4, "inv_ext_mat")
     return inv_ext_mat[..., 3]
 
 
@@ -450,14 +456,15 @@ def inv_ext_mat_to_camera_center(inv_ext_mat: Array, *, f: Framework = None) -> 
 # ----------------------------------------------------------------------------------------------
 
 
-def _ray_lengths(xp, depth, inv_calib_mat, uniform_pix_coords, fn):
-    _check_depth(xp, depth, fn, "the depth image")
-    C.check_matrix(xp, inv_calib_mat, 3, 3, fn, "inv_calib_mat")
-    _broadcast_image_batch(xp, depth, inv_calib_mat, fn, "the depth image", "inv_calib_mat")
-    grid = _grid_for(xp, depth, C.shape_of(xp, depth)[-3:-1], uniform_pix_coords, fn)
-    return xp.safe_norm(_rays(xp, grid, inv_calib_mat, fn), axis=-1, keepdims=True)
+def _ray_lengths(xp, depth, inv_calib_mat, uniform_pix_coords):
+    _check_depth(xp, depth, "the depth image")
+    C.check_matrix(xp, inv_calib_mat, 3, 3, "inv_calib_mat")
+    _broadcast_image_batch(xp, depth, inv_calib_mat, "the depth image", "inv_calib_mat")
+    grid = _grid_for(xp, depth, C.shape_of(xp, depth)[-3:-1], uniform_pix_coords)
+    return xp.safe_norm(_rays(xp, grid, inv_calib_mat), axis=-1, keepdims=True)
 
 
+@checked
 def depth_to_radial_depth(
     depth: Array,
     inv_calib_mat: Array,
@@ -481,11 +488,10 @@ def depth_to_radial_depth(
         array([1.41421356])
     """
     xp = ivy.get_framework(depth, inv_calib_mat, f=f)
-    return depth * _ray_lengths(
-        xp, depth, inv_calib_mat, uniform_pix_coords, "depth_to_radial_depth"
-    )
+    return depth * _ray_lengths(xp, depth, inv_calib_mat, uniform_pix_coords)
 
 
+@checked
 def radial_depth_to_depth(
     radial_depth: Array,
     inv_calib_mat: Array,
@@ -509,11 +515,10 @@ def radial_depth_to_depth(
         array([1.])
     """
     xp = ivy.get_framework(radial_depth, inv_calib_mat, f=f)
-    return radial_depth / _ray_lengths(
-        xp, radial_depth, inv_calib_mat, uniform_pix_coords, "radial_depth_to_depth"
-    )
+    return radial_depth / _ray_lengths(xp, radial_depth, inv_calib_mat, uniform_pix_coords)
 
 
+@checked
 def ds_pixel_coords_to_radial_depth(
     ds_pixel_coords: Array, inv_calib_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -531,11 +536,10 @@ def ds_pixel_coords_to_radial_depth(
         >>> ds_pixel_coords_to_radial_depth(np.array([3., 0., 4.]), np.eye(3))
         array([5.])
     """
-    fn = "ds_pixel_coords_to_radial_depth"
     xp = ivy.get_framework(ds_pixel_coords, inv_calib_mat, f=f)
-    C.check_last_dim(xp, ds_pixel_coords, 3, fn, "ds_pixel_coords")
-    C.check_matrix(xp, inv_calib_mat, 3, 3, fn, "inv_calib_mat")
-    cam = C.transform(xp, ds_pixel_coords, inv_calib_mat, fn, "ds_pixel_coords", "inv_calib_mat")
+    C.check_last_dim(xp, ds_pixel_coords, 3, "ds_pixel_coords")
+    C.check_matrix(xp, inv_calib_mat, 3, 3, "inv_calib_mat")
+    cam = C.transform(xp, ds_pixel_coords, inv_calib_mat, "ds_pixel_coords", "inv_calib_mat")
     return xp.safe_norm(cam, axis=-1, keepdims=True)
 
 
@@ -544,12 +548,13 @@ def ds_pixel_coords_to_radial_depth(
 # ----------------------------------------------------------------------------------------------
 
 
-def _points(xp, coords, fn, what):
+def _points(xp, coords, what):
     """3-D points ``[..., 3]`` of plain or homogeneous coordinates ``[..., 3 | 4]``."""
-    C.check_last_dim(xp, coords, (3, 4), fn, what)
+    C.check_last_dim(xp, coords, (3, 4), what)
     return coords[..., 0:3]
 
 
+@checked
 def cam_to_ds_pixel_coords(
     coords_wrt_cam: Array, calib_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -567,13 +572,13 @@ def cam_to_ds_pixel_coords(
         >>> cam_to_ds_pixel_coords(np.array([1., 1., 2., 1.]), np.eye(3))
         array([1., 1., 2.])
     """
-    fn = "cam_to_ds_pixel_coords"
     xp = ivy.get_framework(coords_wrt_cam, calib_mat, f=f)
-    C.check_matrix(xp, calib_mat, 3, 3, fn, "calib_mat")
-    points = _points(xp, coords_wrt_cam, fn, "coords_wrt_cam")
-    return C.transform(xp, points, calib_mat, fn, "coords_wrt_cam", "calib_mat")
+    C.check_matrix(xp, calib_mat, 3, 3, "calib_mat")
+    points = _points(xp, coords_wrt_cam, "coords_wrt_cam")
+    return C.transform(xp, points, calib_mat, "coords_wrt_cam", "calib_mat")
 
 
+@checked
 def cam_coords_to_depth(coords_wrt_cam: Array, calib_mat: Array, *, f: Framework = None) -> Array:
     """Planar depth of camera-frame points (their ``z``, via the calibration matrix).
 
@@ -592,6 +597,7 @@ def cam_coords_to_depth(coords_wrt_cam: Array, calib_mat: Array, *, f: Framework
     return cam_to_ds_pixel_coords(coords_wrt_cam, calib_mat, f=f)[..., 2:3]
 
 
+@checked
 def ds_pixel_to_cam_coords(
     ds_pixel_coords: Array, inv_calib_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -609,25 +615,25 @@ def ds_pixel_to_cam_coords(
         >>> ds_pixel_to_cam_coords(np.array([1., 1., 2.]), np.eye(3))
         array([1., 1., 2., 1.])
     """
-    fn = "ds_pixel_to_cam_coords"
     xp = ivy.get_framework(ds_pixel_coords, inv_calib_mat, f=f)
-    C.check_last_dim(xp, ds_pixel_coords, 3, fn, "ds_pixel_coords")
-    C.check_matrix(xp, inv_calib_mat, 3, 3, fn, "inv_calib_mat")
-    cam = C.transform(xp, ds_pixel_coords, inv_calib_mat, fn, "ds_pixel_coords", "inv_calib_mat")
+    C.check_last_dim(xp, ds_pixel_coords, 3, "ds_pixel_coords")
+    C.check_matrix(xp, inv_calib_mat, 3, 3, "inv_calib_mat")
+    cam = C.transform(xp, ds_pixel_coords, inv_calib_mat, "ds_pixel_coords", "inv_calib_mat")
     return C.homogeneous(xp, cam)
 
 
-def _unproject_depth(xp, depth, mat, uniform_pixel_coords, fn, mat_what):
+def _unproject_depth(xp, depth, mat, uniform_pixel_coords, mat_what):
     """``mat @ [d*u, d*v, d(, 1)]`` for every pixel, as ``d * (M @ [u, v, 1]) (+ t)``."""
-    _check_depth(xp, depth, fn)
-    _broadcast_image_batch(xp, depth, mat, fn, "depth", mat_what)
-    grid = _grid_for(xp, depth, C.shape_of(xp, depth)[-3:-1], uniform_pixel_coords, fn)
-    points = _rays(xp, grid, mat, fn) * depth
+    _check_depth(xp, depth)
+    _broadcast_image_batch(xp, depth, mat, "depth", mat_what)
+    grid = _grid_for(xp, depth, C.shape_of(xp, depth)[-3:-1], uniform_pixel_coords)
+    points = _rays(xp, grid, mat) * depth
     if C.shape_of(xp, mat)[-1] == 4:
         points = points + mat[..., None, None, :, 3]
     return C.homogeneous(xp, points)
 
 
+@checked
 def depth_to_cam_coords(
     depth: Array,
     inv_calib_mat: Array,
@@ -651,12 +657,11 @@ def depth_to_cam_coords(
         array([2., 0., 2., 1.])
     """
     xp = ivy.get_framework(depth, inv_calib_mat, f=f)
-    C.check_matrix(xp, inv_calib_mat, 3, 3, "depth_to_cam_coords", "inv_calib_mat")
-    return _unproject_depth(
-        xp, depth, inv_calib_mat, uniform_pixel_coords, "depth_to_cam_coords", "inv_calib_mat"
-    )
+    C.check_matrix(xp, inv_calib_mat, 3, 3, "inv_calib_mat")
+    return _unproject_depth(xp, depth, inv_calib_mat, uniform_pixel_coords, "inv_calib_mat")
 
 
+@checked
 def world_to_cam_coords(coords_wrt_world: Array, ext_mat: Array, *, f: Framework = None) -> Array:
     """Transform world-frame points to homogeneous camera-frame points: ``E [X, 1]``.
 
@@ -672,13 +677,13 @@ def world_to_cam_coords(coords_wrt_world: Array, ext_mat: Array, *, f: Framework
         >>> world_to_cam_coords(np.array([1., 2., 3.]), np.eye(3, 4))
         array([1., 2., 3., 1.])
     """
-    fn = "world_to_cam_coords"
     xp = ivy.get_framework(coords_wrt_world, ext_mat, f=f)
-    C.check_matrix(xp, ext_mat, 3, 4, fn, "ext_mat")
-    points = _points(xp, coords_wrt_world, fn, "coords_wrt_world")
-    return C.homogeneous(xp, C.affine(xp, points, ext_mat, fn, "coords_wrt_world", "ext_mat"))
+    C.check_matrix(xp, ext_mat, 3, 4, "ext_mat")
+    points = _points(xp, coords_wrt_world, "coords_wrt_world")
+    return C.homogeneous(xp, C.affine(xp, points, ext_mat, "coords_wrt_world", "ext_mat"))
 
 
+@checked
 def cam_to_world_coords(coords_wrt_cam: Array, inv_ext_mat: Array, *, f: Framework = None) -> Array:
     """Transform camera-frame points to homogeneous world-frame points: ``E^-1 [x, 1]``.
 
@@ -694,13 +699,13 @@ def cam_to_world_coords(coords_wrt_cam: Array, inv_ext_mat: Array, *, f: Framewo
         >>> cam_to_world_coords(np.array([1., 2., 3.]), np.eye(3, 4))
         array([1., 2., 3., 1.])
     """
-    fn = "cam_to_world_coords"
     xp = ivy.get_framework(coords_wrt_cam, inv_ext_mat, f=f)
-    C.check_matrix(xp, inv_ext_mat, 3, 4, fn, "inv_ext_mat")
-    points = _points(xp, coords_wrt_cam, fn, "coords_wrt_cam")
-    return C.homogeneous(xp, C.affine(xp, points, inv_ext_mat, fn, "coords_wrt_cam", "inv_ext_mat"))
+    C.check_matrix(xp, inv_ext_mat, 3, 4, "inv_ext_mat")
+    points = _points(xp, coords_wrt_cam, "coords_wrt_cam")
+    return C.homogeneous(xp, C.affine(xp, points, inv_ext_mat, "coords_wrt_cam", "inv_ext_mat"))
 
 
+@checked
 def world_to_ds_pixel_coords(
     coords_wrt_world: Array, full_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -718,13 +723,13 @@ def world_to_ds_pixel_coords(
         >>> world_to_ds_pixel_coords(np.array([1., 2., 3.]), np.eye(3, 4))
         array([1., 2., 3.])
     """
-    fn = "world_to_ds_pixel_coords"
     xp = ivy.get_framework(coords_wrt_world, full_mat, f=f)
-    C.check_matrix(xp, full_mat, 3, 4, fn, "full_mat")
-    points = _points(xp, coords_wrt_world, fn, "coords_wrt_world")
-    return C.affine(xp, points, full_mat, fn, "coords_wrt_world", "full_mat")
+    C.check_matrix(xp, full_mat, 3, 4, "full_mat")
+    points = _points(xp, coords_wrt_world, "coords_wrt_world")
+    return C.affine(xp, points, full_mat, "coords_wrt_world", "full_mat")
 
 
+@checked
 def world_coords_to_depth(
     coords_wrt_world: Array, full_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -745,6 +750,7 @@ def world_coords_to_depth(
     return world_to_ds_pixel_coords(coords_wrt_world, full_mat, f=f)[..., 2:3]
 
 
+@checked
 def ds_pixel_to_world_coords(
     ds_pixel_coords: Array, inv_full_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -762,15 +768,15 @@ def ds_pixel_to_world_coords(
         >>> ds_pixel_to_world_coords(np.array([1., 2., 3.]), np.eye(3, 4))
         array([1., 2., 3., 1.])
     """
-    fn = "ds_pixel_to_world_coords"
     xp = ivy.get_framework(ds_pixel_coords, inv_full_mat, f=f)
-    C.check_last_dim(xp, ds_pixel_coords, 3, fn, "ds_pixel_coords")
-    C.check_matrix(xp, inv_full_mat, 3, 4, fn, "inv_full_mat")
+    C.check_last_dim(xp, ds_pixel_coords, 3, "ds_pixel_coords")
+    C.check_matrix(xp, inv_full_mat, 3, 4, "inv_full_mat")
     return C.homogeneous(
-        xp, C.affine(xp, ds_pixel_coords, inv_full_mat, fn, "ds_pixel_coords", "inv_full_mat")
+        xp, C.affine(xp, ds_pixel_coords, inv_full_mat, "ds_pixel_coords", "inv_full_mat")
     )
 
 
+@checked
 def depth_to_world_coords(
     depth: Array,
     inv_full_mat: Array,
@@ -794,12 +800,11 @@ def depth_to_world_coords(
         array([0., 0., 2., 1.])
     """
     xp = ivy.get_framework(depth, inv_full_mat, f=f)
-    C.check_matrix(xp, inv_full_mat, 3, 4, "depth_to_world_coords", "inv_full_mat")
-    return _unproject_depth(
-        xp, depth, inv_full_mat, uniform_pixel_coords, "depth_to_world_coords", "inv_full_mat"
-    )
+    C.check_matrix(xp, inv_full_mat, 3, 4, "inv_full_mat")
+    return _unproject_depth(xp, depth, inv_full_mat, uniform_pixel_coords, "inv_full_mat")
 
 
+@checked
 def pixel_coords_to_world_ray_vectors(
     inv_full_mat: Array,
     pixel_coords: Array | None = None,
@@ -830,24 +835,23 @@ def pixel_coords_to_world_ray_vectors(
         >>> pixel_coords_to_world_ray_vectors(np.eye(3, 4), np.array([0., 0., 1.]))
         array([0., 0., 1.])
     """
-    fn = "pixel_coords_to_world_ray_vectors"
     xp = ivy.get_framework(inv_full_mat, pixel_coords, camera_center, f=f)
-    C.check_matrix(xp, inv_full_mat, 3, 4, fn, "inv_full_mat")
+    C.check_matrix(xp, inv_full_mat, 3, 4, "inv_full_mat")
     if pixel_coords is None:
         if image_dims is None:
-            raise ValueError(f"{fn}: give pixel_coords or image_dims (height, width).")
+            raise InputError("give pixel_coords or image_dims (height, width).")
         grid = C.pixel_grid(
-            xp, C.image_dims_of(image_dims, fn), xp.dtype(inv_full_mat), xp.dev(inv_full_mat)
+            xp, C.image_dims_of(image_dims), xp.dtype(inv_full_mat), xp.dev(inv_full_mat)
         )
-        vectors = _rays(xp, grid, inv_full_mat, fn)
+        vectors = _rays(xp, grid, inv_full_mat)
     else:
-        if C.check_last_dim(xp, pixel_coords, (2, 3), fn, "pixel_coords") == 2:
+        if C.check_last_dim(xp, pixel_coords, (2, 3), "pixel_coords") == 2:
             pixel_coords = C.homogeneous(xp, pixel_coords)
         vectors = C.transform(
-            xp, pixel_coords, inv_full_mat[..., 0:3], fn, "pixel_coords", "inv_full_mat"
+            xp, pixel_coords, inv_full_mat[..., 0:3], "pixel_coords", "inv_full_mat"
         )
     if camera_center is not None:
-        C.check_last_dim(xp, camera_center, 3, fn, "camera_center")
+        C.check_last_dim(xp, camera_center, 3, "camera_center")
         ni = len(C.shape_of(xp, vectors)) - len(C.shape_of(xp, camera_center))
         offset = inv_full_mat[..., 3] - camera_center
         vectors = vectors + xp.reshape(offset, (*C.shape_of(xp, offset)[:-1], *(1,) * ni, 3))

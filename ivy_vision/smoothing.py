@@ -14,6 +14,7 @@ import math
 import ivy
 from ivy.typing import Array, Framework
 from ivy_vision import _common as C
+from ivy_vision._checks import InputError, checked
 
 __all__ = [
     "weighted_image_smooth",
@@ -30,19 +31,20 @@ def _window_sums(xp, image, kernel):
     return xp.reshape(out, (*batch, *C.shape_of(xp, out)[1:]))
 
 
-def _check(xp, mean, other, kernel_dim, fn, other_what):
-    h, w = C.check_image(xp, mean, fn, "mean")
+def _check(xp, mean, other, kernel_dim, other_what):
+    h, w = C.check_image(xp, mean, "mean")
     if C.shape_of(xp, other) != C.shape_of(xp, mean):
-        raise ValueError(
-            f"{fn}: mean {C.shape_of(xp, mean)} and {other_what} {C.shape_of(xp, other)} must "
+        raise InputError(
+            f"mean {C.shape_of(xp, mean)} and {other_what} {C.shape_of(xp, other)} must "
             f"have the same shape."
         )
     k = int(kernel_dim)
     if k < 1 or k > min(h, w):
-        raise ValueError(f"{fn}: kernel_dim must be in [1, {min(h, w)}]; got {kernel_dim}.")
+        raise InputError(f"kernel_dim must be in [1, {min(h, w)}]; got {kernel_dim}.")
     return k
 
 
+@checked
 def weighted_image_smooth(
     mean: Array, weights: Array, kernel_dim: int, *, f: Framework = None
 ) -> tuple:
@@ -63,9 +65,8 @@ def weighted_image_smooth(
         >>> weighted_image_smooth(image, np.array([[[1.], [3.]]]), 1)[0][..., 0]
         array([[1., 3.]])
     """
-    fn = "weighted_image_smooth"
     xp = ivy.get_framework(mean, weights, f=f)
-    k = _check(xp, mean, weights, kernel_dim, fn, "weights")
+    k = _check(xp, mean, weights, kernel_dim, "weights")
     d = C.shape_of(xp, mean)[-1]
     kernel = xp.ones((k, k, d), dtype=xp.dtype(mean), device=xp.dev(mean))
     weight_sums = _window_sums(xp, weights, kernel)
@@ -73,6 +74,7 @@ def weighted_image_smooth(
     return smoothed, weight_sums / float(k * k)
 
 
+@checked
 def smooth_image_from_var_image(
     mean: Array, var: Array, kernel_dim: int, kernel_scale, *, f: Framework = None
 ) -> tuple:
@@ -98,13 +100,12 @@ def smooth_image_from_var_image(
         >>> smooth_image_from_var_image(np.ones((3, 3, 1)), np.full((3, 3, 1), 2.), 3, 0.)
         (array([[[1.]]]), array([[[2.]]]))
     """
-    fn = "smooth_image_from_var_image"
     xp = ivy.get_framework(mean, var, f=f)
-    k = _check(xp, mean, var, kernel_dim, fn, "var")
+    k = _check(xp, mean, var, kernel_dim, "var")
     d = C.shape_of(xp, mean)[-1]
     offsets = xp.arange(k, dtype=xp.dtype(mean), device=xp.dev(mean)) - float(k // 2)
     distance = xp.sqrt(offsets[:, None] ** 2 + offsets[None, :] ** 2)[..., None]
-    scale = xp.astype(xp.asarray(kernel_scale), xp.dtype(mean))
+    scale = xp.astype(xp.asarray(kernel_scale, device=xp.dev(mean)), xp.dtype(mean))
     kernel = 1.0 / (1.0 + distance * scale)  # [k, k, d or 1]: how much a neighbour counts
     kernel = xp.broadcast_to(kernel, (k, k, d))
     precision = 1.0 / var
@@ -113,6 +114,7 @@ def smooth_image_from_var_image(
     return fused_mean, float(k * k) / total
 
 
+@checked
 def smooth_image_fom_var_image(
     mean: Array, var: Array, kernel_dim: int, kernel_scale, *, f: Framework = None
 ) -> tuple:

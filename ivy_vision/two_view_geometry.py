@@ -16,6 +16,7 @@ import ivy
 from ivy.typing import Array, Framework
 from ivy_vision import _common as C
 from ivy_vision import omnidirectional as omni
+from ivy_vision._checks import InputError, checked
 from ivy_vision.projective_geometry import check_invertible, invert_affine
 
 __all__ = [
@@ -32,6 +33,7 @@ __all__ = [
 ]
 
 
+@checked
 def ds_pixel_to_ds_pixel_coords(
     ds_pixel_coords1: Array, cam1to2_full_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -51,15 +53,13 @@ def ds_pixel_to_ds_pixel_coords(
         >>> ds_pixel_to_ds_pixel_coords(np.array([0., 0., 2.]), np.eye(3, 4) + np.eye(3, 4, 3))
         array([1., 0., 2.])
     """
-    fn = "ds_pixel_to_ds_pixel_coords"
     xp = ivy.get_framework(ds_pixel_coords1, cam1to2_full_mat, f=f)
-    C.check_last_dim(xp, ds_pixel_coords1, 3, fn, "ds_pixel_coords1")
-    C.check_matrix(xp, cam1to2_full_mat, 3, 4, fn, "cam1to2_full_mat")
-    return C.affine(
-        xp, ds_pixel_coords1, cam1to2_full_mat, fn, "ds_pixel_coords1", "cam1to2_full_mat"
-    )
+    C.check_last_dim(xp, ds_pixel_coords1, 3, "ds_pixel_coords1")
+    C.check_matrix(xp, cam1to2_full_mat, 3, 4, "cam1to2_full_mat")
+    return C.affine(xp, ds_pixel_coords1, cam1to2_full_mat, "ds_pixel_coords1", "cam1to2_full_mat")
 
 
+@checked
 def cam_to_cam_coords(cam_coords1: Array, cam1to2_ext_mat: Array, *, f: Framework = None) -> Array:
     """Transform camera-1 points to homogeneous camera-2 points.
 
@@ -75,16 +75,14 @@ def cam_to_cam_coords(cam_coords1: Array, cam1to2_ext_mat: Array, *, f: Framewor
         >>> cam_to_cam_coords(np.array([1., 2., 3.]), np.eye(3, 4))
         array([1., 2., 3., 1.])
     """
-    fn = "cam_to_cam_coords"
     xp = ivy.get_framework(cam_coords1, cam1to2_ext_mat, f=f)
-    C.check_last_dim(xp, cam_coords1, (3, 4), fn, "cam_coords1")
-    C.check_matrix(xp, cam1to2_ext_mat, 3, 4, fn, "cam1to2_ext_mat")
-    points = C.affine(
-        xp, cam_coords1[..., 0:3], cam1to2_ext_mat, fn, "cam_coords1", "cam1to2_ext_mat"
-    )
+    C.check_last_dim(xp, cam_coords1, (3, 4), "cam_coords1")
+    C.check_matrix(xp, cam1to2_ext_mat, 3, 4, "cam1to2_ext_mat")
+    points = C.affine(xp, cam_coords1[..., 0:3], cam1to2_ext_mat, "cam_coords1", "cam1to2_ext_mat")
     return C.homogeneous(xp, points)
 
 
+@checked
 def sphere_to_sphere_coords(
     sphere_coords1: Array, cam1to2_ext_mat: Array, *, f: Framework = None
 ) -> Array:
@@ -107,6 +105,7 @@ def sphere_to_sphere_coords(
     return omni.cam_to_sphere_coords(cam_to_cam_coords(cam1, cam1to2_ext_mat, f=xp), f=xp)
 
 
+@checked
 def angular_pixel_to_angular_pixel_coords(
     angular_pixel_coords1: Array,
     cam1to2_ext_mat: Array,
@@ -143,6 +142,7 @@ def _compose_affine(xp, a, b):
     )
 
 
+@checked
 def ext_mats_to_cam1to2_ext_mat(ext_mat1: Array, ext_mat2: Array, *, f: Framework = None) -> Array:
     """Camera-1-to-camera-2 extrinsic matrix ``E_2 E_1^-1`` of two extrinsic matrices.
 
@@ -160,16 +160,14 @@ def ext_mats_to_cam1to2_ext_mat(ext_mat1: Array, ext_mat2: Array, *, f: Framewor
                [0., 1., 0., 0.],
                [0., 0., 1., 0.]])
     """
-    fn = "ext_mats_to_cam1to2_ext_mat"
     xp = ivy.get_framework(ext_mat1, ext_mat2, f=f)
-    C.check_matrix(xp, ext_mat1, 3, 4, fn, "ext_mat1")
-    C.check_matrix(xp, ext_mat2, 3, 4, fn, "ext_mat2")
-    check_invertible(
-        xp, ext_mat1[..., 0:3], fn, "the rotation of ext_mat1", "it must be a rotation."
-    )
+    C.check_matrix(xp, ext_mat1, 3, 4, "ext_mat1")
+    C.check_matrix(xp, ext_mat2, 3, 4, "ext_mat2")
+    check_invertible(xp, ext_mat1[..., 0:3], "the rotation of ext_mat1", "it must be a rotation.")
     return _compose_affine(xp, ext_mat2, invert_affine(xp, ext_mat1))
 
 
+@checked
 def full_mats_to_cam1to2_full_mat(
     full_mat1: Array, full_mat2: Array, *, f: Framework = None
 ) -> Array:
@@ -187,20 +185,19 @@ def full_mats_to_cam1to2_full_mat(
         >>> full_mats_to_cam1to2_full_mat(np.eye(3, 4), 2 * np.eye(3, 4))[0]
         array([2., 0., 0., 0.])
     """
-    fn = "full_mats_to_cam1to2_full_mat"
     xp = ivy.get_framework(full_mat1, full_mat2, f=f)
-    C.check_matrix(xp, full_mat1, 3, 4, fn, "full_mat1")
-    C.check_matrix(xp, full_mat2, 3, 4, fn, "full_mat2")
+    C.check_matrix(xp, full_mat1, 3, 4, "full_mat1")
+    C.check_matrix(xp, full_mat2, 3, 4, "full_mat2")
     check_invertible(
         xp,
         full_mat1[..., 0:3],
-        fn,
         "the left 3x3 block of full_mat1",
         "its calibration matrix needs non-zero focal lengths.",
     )
     return _compose_affine(xp, full_mat2, invert_affine(xp, full_mat1))
 
 
+@checked
 def get_fundamental_matrix(
     full_mat1: Array,
     full_mat2: Array,
@@ -228,31 +225,30 @@ def get_fundamental_matrix(
         >>> float(np.array([2., 1., 1.]) @ F @ np.array([1., 1., 1.]))  # same row: epipolar
         0.0
     """
-    fn = "get_fundamental_matrix"
     xp = ivy.get_framework(full_mat1, full_mat2, camera_center1, pinv_full_mat1, f=f)
-    C.check_matrix(xp, full_mat1, 3, 4, fn, "full_mat1")
-    C.check_matrix(xp, full_mat2, 3, 4, fn, "full_mat2")
+    C.check_matrix(xp, full_mat1, 3, 4, "full_mat1")
+    C.check_matrix(xp, full_mat2, 3, 4, "full_mat2")
     if camera_center1 is None:
         check_invertible(
             xp,
             full_mat1[..., 0:3],
-            fn,
             "the left 3x3 block of full_mat1",
             "its calibration matrix needs non-zero focal lengths.",
         )
         camera_center1 = invert_affine(xp, full_mat1)[..., 3]
     else:
-        C.check_last_dim(xp, camera_center1, 3, fn, "camera_center1")
+        C.check_last_dim(xp, camera_center1, 3, "camera_center1")
     if pinv_full_mat1 is None:
         transposed = xp.swapaxes(full_mat1, -1, -2)
         pinv_full_mat1 = xp.matmul(transposed, xp.inv(xp.matmul(full_mat1, transposed)))
     else:
-        C.check_matrix(xp, pinv_full_mat1, 4, 3, fn, "pinv_full_mat1")
+        C.check_matrix(xp, pinv_full_mat1, 4, 3, "pinv_full_mat1")
     epipole2 = xp.matvec(full_mat2[..., 0:3], camera_center1) + full_mat2[..., 3]
     skew = xp.vector_to_skew_symmetric_matrix(epipole2)
     return xp.matmul(skew, xp.matmul(full_mat2, pinv_full_mat1))
 
 
+@checked
 def get_essential_matrix(ext_mat1: Array, ext_mat2: Array, *, f: Framework = None) -> Array:
     """Essential matrix ``E = [t]_x R`` of the relative pose ``[R | t] = E_2 E_1^-1``, with
     ``y_2^T E y_1 = 0`` for corresponding normalised image points ``y = K^-1 x``.
@@ -276,17 +272,17 @@ def get_essential_matrix(ext_mat1: Array, ext_mat2: Array, *, f: Framework = Non
     return xp.matmul(xp.vector_to_skew_symmetric_matrix(rel[..., 3]), rel[..., 0:3])
 
 
-def _check_pairs(xp, x, batch, fn, what, batch_what) -> int:
+def _check_pairs(xp, x, batch, what, batch_what) -> int:
     """Raise a ValueError unless ``x`` is ``[*batch, 2, *image_shape, 3]`` (its batch
     broadcasting with ``batch``); return the number of image dimensions."""
     nb = len(batch)
     shape = C.shape_of(xp, x)
     if len(shape) < nb + 2 or shape[nb] != 2 or shape[-1] != 3:
-        raise ValueError(
-            f"{fn}: {what} must be [*batch, 2, *image_shape, 3] with the batch shape {batch} of "
+        raise InputError(
+            f"{what} must be [*batch, 2, *image_shape, 3] with the batch shape {batch} of "
             f"{batch_what}; got shape {shape}."
         )
-    C.broadcast_batch(shape[:nb], batch, fn, what, batch_what)
+    C.broadcast_batch(shape[:nb], batch, what, batch_what)
     return len(shape) - nb - 2
 
 
@@ -295,6 +291,7 @@ def _rays_pair(xp, world_ray_vectors, nb):
     return world_ray_vectors[(*index, 0)], world_ray_vectors[(*index, 1)]
 
 
+@checked
 def closest_mutual_points_along_two_skew_rays(
     camera_centers: Array, world_ray_vectors: Array, *, f: Framework = None
 ) -> Array:
@@ -317,13 +314,12 @@ def closest_mutual_points_along_two_skew_rays(
         array([[2., 2., 0., 3.],
                [3., 1., 1., 3.]])
     """
-    fn = "closest_mutual_points_along_two_skew_rays"
     xp = ivy.get_framework(camera_centers, world_ray_vectors, f=f)
     cshape = C.shape_of(xp, camera_centers)
     if len(cshape) < 2 or cshape[-2:] != (2, 3):
-        raise ValueError(f"{fn}: camera_centers must be [..., 2, 3]; got shape {cshape}.")
+        raise InputError(f"camera_centers must be [..., 2, 3]; got shape {cshape}.")
     nb = len(cshape) - 2
-    ni = _check_pairs(xp, world_ray_vectors, cshape[:-2], fn, "world_ray_vectors", "camera_centers")
+    ni = _check_pairs(xp, world_ray_vectors, cshape[:-2], "world_ray_vectors", "camera_centers")
     c1, c2 = camera_centers[..., 0, :], camera_centers[..., 1, :]
     c1 = xp.reshape(c1, (*cshape[:nb], *(1,) * ni, 3))
     c2 = xp.reshape(c2, (*cshape[:nb], *(1,) * ni, 3))
@@ -348,17 +344,16 @@ def _pixel_rays(xp, inv_full_mats, ds_pixel_coords, nb):
     return xp.matvec(m, ds_pixel_coords)
 
 
-def _triangulate_cmp(xp, ds_pixel_coords, full_mats, inv_full_mats, camera_centers, nb, fn):
+def _triangulate_cmp(xp, ds_pixel_coords, full_mats, inv_full_mats, camera_centers, nb):
     if inv_full_mats is None:
         check_invertible(
             xp,
             full_mats[..., 0:3],
-            fn,
             "the left 3x3 block of full_mats",
             "their calibration matrices need non-zero focal lengths.",
         )
         inv_full_mats = invert_affine(xp, full_mats)
-    C.check_matrix(xp, inv_full_mats, 3, 4, fn, "inv_full_mats")
+    C.check_matrix(xp, inv_full_mats, 3, 4, "inv_full_mats")
     if camera_centers is None:
         camera_centers = inv_full_mats[..., 3]
     rays = _pixel_rays(xp, inv_full_mats, ds_pixel_coords, nb)
@@ -382,6 +377,7 @@ def _triangulate_dlt(xp, ds_pixel_coords, full_mats, nb):
     return xp.safe_divide(x, x[..., 3:4])
 
 
+@checked
 def triangulate_depth(
     ds_pixel_coords: Array,
     full_mats: Array,
@@ -416,20 +412,17 @@ def triangulate_depth(
         >>> triangulate_depth(pixels, P)
         array([[1., 0., 2.]])
     """
-    fn = "triangulate_depth"
     xp = ivy.get_framework(ds_pixel_coords, full_mats, inv_full_mats, camera_centers, f=f)
     if method not in ("cmp", "dlt"):
-        raise ValueError(f"{fn}: method must be 'cmp' or 'dlt'; got {method!r}.")
+        raise InputError(f"method must be 'cmp' or 'dlt'; got {method!r}.")
     fshape = C.shape_of(xp, full_mats)
     if len(fshape) < 3 or fshape[-3:] != (2, 3, 4):
-        raise ValueError(f"{fn}: full_mats must be [..., 2, 3, 4]; got shape {fshape}.")
+        raise InputError(f"full_mats must be [..., 2, 3, 4]; got shape {fshape}.")
     nb = len(fshape) - 3
-    _check_pairs(xp, ds_pixel_coords, fshape[:-3], fn, "ds_pixel_coords", "full_mats")
+    _check_pairs(xp, ds_pixel_coords, fshape[:-3], "ds_pixel_coords", "full_mats")
     if method == "cmp":
-        world = _triangulate_cmp(
-            xp, ds_pixel_coords, full_mats, inv_full_mats, camera_centers, nb, fn
-        )
+        world = _triangulate_cmp(xp, ds_pixel_coords, full_mats, inv_full_mats, camera_centers, nb)
     else:
         world = _triangulate_dlt(xp, ds_pixel_coords, full_mats, nb)
     p1 = full_mats[(*(slice(None),) * nb, 0)]
-    return C.affine(xp, world[..., 0:3], p1, fn, "the triangulated points", "full_mats")
+    return C.affine(xp, world[..., 0:3], p1, "the triangulated points", "full_mats")

@@ -59,6 +59,29 @@ def test_bspline_matches_scipy(backend):
     assert_close(numpy_of(got), want, **TOL)
 
 
+def test_bspline_extrapolates_as_scipy(backend):
+    # past the anchors (even by a rounding error) the first and last cubic pieces continue,
+    # as make_interp_spline's BSpline does; before the fix the path dropped to 0 there. The
+    # shapes are those of test_bspline_matches_scipy (jax compiles them once).
+    rng = np.random.default_rng(3)
+    times = np.concatenate([[0.0], np.sort(rng.uniform(0.1, 0.9, 5)), [1.0]])
+    values = rng.normal(size=(7, 4)) + 3.0
+    outside = [-0.5, -1e-4, -1e-12, 1.0 + 1e-12, 1.0 + 1e-4, 1.7, np.nan]
+    samples = np.concatenate([outside, np.linspace(0.0, 1.0, 26)])
+    got = numpy_of(
+        ivy_robot.sample_spline_path(
+            native(times[:, None], backend),
+            native(values, backend),
+            native(samples[:, None], backend),
+            method="bspline",
+        )
+    )
+    known = ~np.isnan(samples)
+    want = interpolate.make_interp_spline(times, values, k=3)(samples[known])
+    assert_close(got[known], want, **TOL)
+    assert np.all(np.isnan(got[~known]))  # a NaN time stays NaN, never 0
+
+
 def test_batches_and_weights(backend):
     rng = np.random.default_rng(4)
     times = np.linspace(0.0, 1.0, 6)[:, None]

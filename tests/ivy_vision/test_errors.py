@@ -24,12 +24,12 @@ CASES = [
     (
         "depth with 3 channels",
         lambda a: vis.depth_to_ds_pixel_coords(a(IMAGE)),
-        r"depth must have 1 channels.*\(2, 3, 4, 3\)",
+        r"depth must be \[\.\.\., H, W, 1\]; got shape \(2, 3, 4, 3\)",
     ),
     (
         "depth with 3 channels (radial)",
         lambda a: vis.depth_to_radial_depth(a(IMAGE), a(K)),
-        r"must have 1 channels",
+        r"must be \[\.\.\., H, W, 1\]",
     ),
     (
         "ds pixel coords with 2 channels",
@@ -39,7 +39,7 @@ CASES = [
     (
         "flow with 3 channels",
         lambda a: vis.depth_from_flow_and_cam_mats(a(IMAGE), a(S([P, P]))),
-        r"flow must have 2 channels",
+        r"flow must be \[\.\.\., H, W, 2\]",
     ),
     (
         "sampling coords with 3 channels",
@@ -49,12 +49,12 @@ CASES = [
     (
         "image without channels",
         lambda a: vis.sample_image(a(np.ones(4)), a(np.ones((5, 2)))),
-        r"image must be an image \[\.\.\., H, W, C\]",
+        r"image must be \[\.\.\., H, W, C\]",
     ),
     (
         "inverse warp depth with 2 channels",
         lambda a: vis.inverse_warp(a(IMAGE), a(np.ones((2, 3, 4, 2))), a(P)),
-        r"depth image must have 1",
+        r"depth_tgt must be \[\.\.\., H, W, 1\]",
     ),
     (
         "points with 5 components",
@@ -189,8 +189,57 @@ def test_errors_say_what_to_do():
     with pytest.raises(ValueError) as info:
         vis.depth_to_ds_pixel_coords(IMAGE)
     message = str(info.value)
-    assert message.startswith("depth_to_ds_pixel_coords: depth must have 1 channels")
+    assert message.startswith("depth_to_ds_pixel_coords: depth must be [..., H, W, 1]")
     assert "channel-last" in message
     with pytest.raises(ValueError) as info:
         vis.invert_calib_mat(SINGULAR_K)
     assert re.search(r"focal lengths must be non-zero", str(info.value))
+
+
+def test_shape_errors_name_the_argument_the_shape_and_the_fix(backend):
+    """Checked before anything is unpacked: a depth without its channel axis, and channel-first
+    images that would otherwise be read as a wrong size."""
+    image, depth, full = np.ones((5, 6, 3)), np.ones((5, 6, 1)), np.eye(3, 4)
+
+    def a(x):
+        return native(x, backend)
+
+    with pytest.raises(ValueError) as info:
+        vis.inverse_warp(a(image), a(depth[..., 0]), a(full))
+    assert str(info.value) == (
+        "inverse_warp: depth_tgt must be [..., H, W, 1]; got shape (5, 6). Give the channel "
+        "axis: depth_tgt[..., None] has shape (5, 6, 1)."
+    )
+    channel_first = np.ones((3, 5, 6))
+    with pytest.raises(ValueError, match=r"inverse_warp: image_src of shape \(3, 5, 6\) looks "):
+        vis.inverse_warp(a(channel_first), a(depth), a(full))
+    with pytest.raises(ValueError, match=r"channel-last \[\.\.\., H, W, C\]: move the channel"):
+        vis.forward_warp(a(channel_first), a(depth), a(full))
+    with pytest.raises(ValueError, match=r"depth looks channel-first|It looks channel-first"):
+        vis.depth_to_ds_pixel_coords(a(np.ones((2, 1, 5, 6))))
+    with pytest.raises(ValueError, match=r"sample_image: image must be \[\.\.\., H, W, C\]"):
+        vis.sample_image(a(np.ones((5,))), a(np.ones((4, 2))))
+
+
+def test_errors_name_the_function_the_user_called():
+    """The checks do not know their function: the ``checked`` decorator names the public
+    function the user called, the outermost one when public functions call each other."""
+    with pytest.raises(ValueError) as info:
+        vis.Camera.from_focal_lengths(np.ones(3), np.zeros(2), np.eye(3), np.zeros(3))
+    assert str(info.value).startswith("Camera.from_focal_lengths: focal_lengths must have 2")
+    with pytest.raises(ValueError) as info:
+        vis.focal_lengths_and_pp_offsets_to_calib_mat(np.ones(3), np.zeros(2))
+    assert str(info.value).startswith("focal_lengths_and_pp_offsets_to_calib_mat: focal_lengths")
+
+
+def test_no_function_repeats_its_own_name_for_errors():
+    import pathlib
+    import re
+
+    names = set(vis.__all__) | {"Camera.from_calib_and_ext_mats"}
+    for path in pathlib.Path(vis.__file__).parent.glob("*.py"):
+        body = re.sub(r"__all__ = \[.*?\]", "", path.read_text(), flags=re.S)
+        body = "\n".join(line for line in body.splitlines() if ">>>" not in line)
+        repeated = {n for n in re.findall(r"\"([\w.]+)(?::|\")", body) if n in names}
+        assert not repeated, f"{path.name} names {sorted(repeated)} in strings"
+        assert not re.search(r"\bfn = \"", body), path.name
