@@ -87,6 +87,12 @@ class _BackendSpec:
     namespace: Any = None  # a registered library's Array API namespace (or its import name)
 
 
+# The module that assembles a registered library's namespace (its ``assemble_registered(name,
+# spec)``), imported by name when the library is first used, as the built-in backends' packages
+# are: framework selection sits below the backends and imports none of them itself.
+_REGISTERED_ASSEMBLY = "ivy.backends.array_api._register"
+
+
 _BACKENDS: dict[str, _BackendSpec] = {
     "numpy": _BackendSpec(
         "ivy.backends.numpy", "numpy", "numpy", Capabilities(mutable_arrays=True)
@@ -298,9 +304,7 @@ def load_backend(name: str) -> types.ModuleType:
             f"{', '.join(installed_frameworks())}."
         )
     if spec.namespace is not None:  # a registered library: assembled from the shared layer
-        from ivy.backends.array_api._register import assemble_registered
-
-        assemble_registered(name, spec)
+        importlib.import_module(_REGISTERED_ASSEMBLY).assemble_registered(name, spec)
         return _loaded[name]
     __import__(spec.module)  # its package assembles and registers it (a builtin: see above)
     return _loaded[name]
@@ -511,15 +515,24 @@ def _recover(ns: Any, name: str, err: Exception, args: tuple, kwargs: dict) -> A
             return fn(*args, **kwargs)
         except Exception as again:  # noqa: BLE001 - explained below
             err = again
-    from ivy.core._diagnose import explain
-
-    better = explain(full, name, err, args, kwargs)
+    better = _explain[0](full, name, err, args, kwargs)
     if better is err:
         raise err
     raise better from err
 
 
 dispatch_globals["_recover"] = _recover
+
+# What turns a backend's error into ivy's typed error (``ivy/core/_diagnose.py``, installed by the
+# core with :func:`explain_errors_with`); until then errors pass as they are.
+_explain: list[Callable[..., Exception]] = [lambda ns, name, err, args, kwargs: err]
+
+
+def explain_errors_with(explain: Callable[..., Exception]) -> None:
+    """Install ``explain(ns, name, err, args, kwargs) -> Exception``, which the dispatchers call
+    when a backend function raised ``err``: the core's diagnosis (this module sits below the
+    core and imports nothing of it)."""
+    _explain[0] = explain
 
 
 # ----------------------------------------------------------------------------------------------
