@@ -42,6 +42,8 @@ __all__ = [
     "available_frameworks",
     "installed_frameworks",
     "framework_of_type",
+    "set_matmul_precision",
+    "matmul_precision",
 ]
 
 
@@ -332,6 +334,7 @@ def register_loaded(
         _fast_by_f[key] = _fast(ns)
     for t in array_types:
         _register_type(t, ns)
+    _switch_precision(ns)  # ivy's precision from the start (see set_matmul_precision)
     if "numpy" not in _loaded and "numpy" in _BACKENDS:
         load_backend("numpy")
 
@@ -641,6 +644,57 @@ def unset_framework() -> None:
 
 
 # ----------------------------------------------------------------------------------------------
+# Precision of float32 matrix products and convolutions
+# ----------------------------------------------------------------------------------------------
+
+MATMUL_PRECISIONS = ("highest", "high")
+_matmul_precision = ["highest"]
+_restorers: list[Callable[[], None] | None] = []  # one per entry of _stack
+
+
+def set_matmul_precision(precision: str) -> None:
+    """Choose the precision of ivy's float32 matrix products and convolutions, on every backend.
+
+    ``'highest'`` (the default): full float32, so that every backend gives the same answer, on
+    GPUs too. ``'high'``: the framework may use TF32 tensor cores (torch, tensorflow) or bf16
+    passes (jax), faster on recent GPUs and about 3 significant digits less exact.
+
+    ivy sets the frameworks' own switches (jax's ``jax_default_matmul_precision``; torch's
+    ``fp32_precision`` of ``torch.backends.cuda.matmul`` and cuDNN; tensorflow's TF32
+    execution) when it loads a backend and when ``set_framework`` (or a ``with`` block) binds
+    one; unsetting it restores the values found before. Changing the precision applies it to
+    every loaded backend at once.
+
+    Args:
+        precision: ``'highest'`` or ``'high'``.
+
+    Example:
+        >>> ivy.set_matmul_precision("high")     # opt into TF32 / bf16 passes
+        >>> ivy.set_matmul_precision("highest")  # back to full float32
+    """
+    if precision not in MATMUL_PRECISIONS:
+        raise ValueError(
+            f"set_matmul_precision: precision must be one of {MATMUL_PRECISIONS}, got "
+            f"{precision!r} ('highest': full float32; 'high': TF32 or bf16 passes)."
+        )
+    _matmul_precision[0] = precision
+    for ns in _loaded.values():
+        _switch_precision(ns)
+
+
+def matmul_precision() -> str:
+    """The precision of ivy's float32 matrix products and convolutions (see
+    :func:`set_matmul_precision`)."""
+    return _matmul_precision[0]
+
+
+def _switch_precision(ns: types.ModuleType) -> Callable[[], None] | None:
+    """Set ``ns``'s framework switches to ivy's precision; what restores them, or None."""
+    switch = getattr(ns, "__ivy_precision__", None)
+    return None if switch is None else switch(_matmul_precision[0])
+
+
+# ----------------------------------------------------------------------------------------------
 # Binding into the ivy namespace
 # ----------------------------------------------------------------------------------------------
 
@@ -650,6 +704,7 @@ _saved: dict[str, Any] = {}  # ivy's own (framework-agnostic) attributes replace
 
 def _push(ns: types.ModuleType) -> None:
     _stack.append(ns)
+    _restorers.append(_switch_precision(ns))
     _bind(ns)
 
 
@@ -657,6 +712,10 @@ def _restore_depth(depth: int) -> None:
     if len(_stack) <= depth:
         return
     del _stack[depth:]
+    while len(_restorers) > depth:
+        restore = _restorers.pop()
+        if restore is not None:
+            restore()
     if _stack:
         _bind(_stack[-1])
     else:
