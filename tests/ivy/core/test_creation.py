@@ -368,6 +368,38 @@ def test_from_dlpack_from_every_framework(backend, producer, dtype):
     _exact(ivy.from_dlpack(src, f=backend), a, backend)
 
 
+# The frameworks whose arrays live on host or accelerator memory and convert by DLPack both ways
+# (issue 24: numpy's host arrays, torch's and jax's on either).
+INTERCHANGE = ("numpy", "torch", "jax")
+
+
+@pytest.mark.parametrize("producer", INTERCHANGE)
+@pytest.mark.parametrize("consumer", INTERCHANGE)
+def test_from_dlpack_between_the_host_and_the_target_device(
+    request, consumer, producer, target_device
+):
+    """Host arrays to the device the test run targets, and back to the host and to the
+    producer's framework (jax <-> torch where the run targets a GPU)."""
+    for name in (consumer, producer):
+        if name not in request.config.ivy_backends:
+            pytest.skip(f"{name} is not among the backends of this run")
+    xp, back = getattr(ivy, consumer), getattr(ivy, producer)
+    kind = target_device.split(":")[0]
+    device = target_device if kind in xp.capabilities.devices else "cpu"
+    a = np.arange(6.0, dtype=np.float32).reshape(2, 3)
+    out = xp.from_dlpack(_source(producer, a), device=device)  # host -> target
+    _exact(out, a, consumer)
+    assert xp.dev(out) == device
+    np.testing.assert_array_equal(ivy.numpy.from_dlpack(out), a)  # target -> host
+    np.testing.assert_array_equal(ivy.to_numpy(ivy.to_framework(out, "numpy")), a)
+    home = back.from_dlpack(out)  # -> the producer's framework, where ``out`` is
+    _exact(home, a, producer)
+    if device in back.capabilities.devices or kind in back.capabilities.devices:
+        assert back.dev(home) == device
+    for copy in (None, True):
+        _exact(xp.from_dlpack(out, device=device, copy=copy), a, consumer)
+
+
 @pytest.mark.parametrize("producer", ["numpy", "torch"])
 def test_from_dlpack_copy_true_never_shares_memory(backend, producer):
     a = np.zeros(64, np.float64)
