@@ -33,8 +33,10 @@ from ivy.framework_handler import (
     framework_of_type,
     get_framework,
     installed_frameworks,
+    matmul_precision,
     register_framework,
     set_framework,
+    set_matmul_precision,
     unset_framework,
 )
 from ivy.registry import FunctionInfo, function_info, list_functions

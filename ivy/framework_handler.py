@@ -42,6 +42,8 @@ __all__ = [
     "available_frameworks",
     "installed_frameworks",
     "framework_of_type",
+    "set_matmul_precision",
+    "matmul_precision",
 ]
 
 
@@ -85,6 +87,12 @@ class _BackendSpec:
     extra: str | None  # the pyproject extra that installs it (None: a registered library)
     capabilities: Capabilities = Capabilities()
     namespace: Any = None  # a registered library's Array API namespace (or its import name)
+
+
+# The module that assembles a registered library's namespace (its ``assemble_registered(name,
+# spec)``), imported by name when the library is first used, as the built-in backends' packages
+# are: framework selection sits below the backends and imports none of them itself.
+_REGISTERED_ASSEMBLY = "ivy.backends.array_api._register"
 
 
 _BACKENDS: dict[str, _BackendSpec] = {
@@ -298,9 +306,7 @@ def load_backend(name: str) -> types.ModuleType:
             f"{', '.join(installed_frameworks())}."
         )
     if spec.namespace is not None:  # a registered library: assembled from the shared layer
-        from ivy.backends.array_api._register import assemble_registered
-
-        assemble_registered(name, spec)
+        importlib.import_module(_REGISTERED_ASSEMBLY).assemble_registered(name, spec)
         return _loaded[name]
     __import__(spec.module)  # its package assembles and registers it (a builtin: see above)
     return _loaded[name]
@@ -328,6 +334,7 @@ def register_loaded(
         _fast_by_f[key] = _fast(ns)
     for t in array_types:
         _register_type(t, ns)
+    _switch_precision(ns)  # ivy's precision from the start (see set_matmul_precision)
     if "numpy" not in _loaded and "numpy" in _BACKENDS:
         load_backend("numpy")
 
@@ -511,15 +518,24 @@ def _recover(ns: Any, name: str, err: Exception, args: tuple, kwargs: dict) -> A
             return fn(*args, **kwargs)
         except Exception as again:  # noqa: BLE001 - explained below
             err = again
-    from ivy.core._diagnose import explain
-
-    better = explain(full, name, err, args, kwargs)
+    better = _explain[0](full, name, err, args, kwargs)
     if better is err:
         raise err
     raise better from err
 
 
 dispatch_globals["_recover"] = _recover
+
+# What turns a backend's error into ivy's typed error (``ivy/core/_diagnose.py``, installed by the
+# core with :func:`explain_errors_with`); until then errors pass as they are.
+_explain: list[Callable[..., Exception]] = [lambda ns, name, err, args, kwargs: err]
+
+
+def explain_errors_with(explain: Callable[..., Exception]) -> None:
+    """Install ``explain(ns, name, err, args, kwargs) -> Exception``, which the dispatchers call
+    when a backend function raised ``err``: the core's diagnosis (this module sits below the
+    core and imports nothing of it)."""
+    _explain[0] = explain
 
 
 # ----------------------------------------------------------------------------------------------
@@ -628,6 +644,57 @@ def unset_framework() -> None:
 
 
 # ----------------------------------------------------------------------------------------------
+# Precision of float32 matrix products and convolutions
+# ----------------------------------------------------------------------------------------------
+
+MATMUL_PRECISIONS = ("highest", "high")
+_matmul_precision = ["highest"]
+_restorers: list[Callable[[], None] | None] = []  # one per entry of _stack
+
+
+def set_matmul_precision(precision: str) -> None:
+    """Choose the precision of ivy's float32 matrix products and convolutions, on every backend.
+
+    ``'highest'`` (the default): full float32, so that every backend gives the same answer, on
+    GPUs too. ``'high'``: the framework may use TF32 tensor cores (torch, tensorflow) or bf16
+    passes (jax), faster on recent GPUs and about 3 significant digits less exact.
+
+    ivy sets the frameworks' own switches (jax's ``jax_default_matmul_precision``; torch's
+    ``fp32_precision`` of ``torch.backends.cuda.matmul`` and cuDNN; tensorflow's TF32
+    execution) when it loads a backend and when ``set_framework`` (or a ``with`` block) binds
+    one; unsetting it restores the values found before. Changing the precision applies it to
+    every loaded backend at once.
+
+    Args:
+        precision: ``'highest'`` or ``'high'``.
+
+    Example:
+        >>> ivy.set_matmul_precision("high")     # opt into TF32 / bf16 passes
+        >>> ivy.set_matmul_precision("highest")  # back to full float32
+    """
+    if precision not in MATMUL_PRECISIONS:
+        raise ValueError(
+            f"set_matmul_precision: precision must be one of {MATMUL_PRECISIONS}, got "
+            f"{precision!r} ('highest': full float32; 'high': TF32 or bf16 passes)."
+        )
+    _matmul_precision[0] = precision
+    for ns in _loaded.values():
+        _switch_precision(ns)
+
+
+def matmul_precision() -> str:
+    """The precision of ivy's float32 matrix products and convolutions (see
+    :func:`set_matmul_precision`)."""
+    return _matmul_precision[0]
+
+
+def _switch_precision(ns: types.ModuleType) -> Callable[[], None] | None:
+    """Set ``ns``'s framework switches to ivy's precision; what restores them, or None."""
+    switch = getattr(ns, "__ivy_precision__", None)
+    return None if switch is None else switch(_matmul_precision[0])
+
+
+# ----------------------------------------------------------------------------------------------
 # Binding into the ivy namespace
 # ----------------------------------------------------------------------------------------------
 
@@ -637,6 +704,7 @@ _saved: dict[str, Any] = {}  # ivy's own (framework-agnostic) attributes replace
 
 def _push(ns: types.ModuleType) -> None:
     _stack.append(ns)
+    _restorers.append(_switch_precision(ns))
     _bind(ns)
 
 
@@ -644,6 +712,10 @@ def _restore_depth(depth: int) -> None:
     if len(_stack) <= depth:
         return
     del _stack[depth:]
+    while len(_restorers) > depth:
+        restore = _restorers.pop()
+        if restore is not None:
+            restore()
     if _stack:
         _bind(_stack[-1])
     else:

@@ -113,6 +113,54 @@ def pytest_configure(config):
         import jax
 
         jax.config.update("jax_enable_x64", True)
+    _target_the_device(config.ivy_backends)
+
+
+def device_for(backend: str) -> str:
+    """The device a test of ``backend`` creates its arrays on: the run's target device where the
+    backend has that kind of device (``Capabilities.devices``), else the CPU (numpy)."""
+    kind = TARGET_DEVICE.partition(":")[0]
+    return TARGET_DEVICE if kind in ivy.framework_handler.capabilities(backend).devices else "cpu"
+
+
+def _torch_target(kind: str, index: int) -> None:
+    import torch
+
+    if kind != "gpu" or index >= torch.cuda.device_count():
+        raise pytest.UsageError(
+            f"IVY_TEST_DEVICE={TARGET_DEVICE}: torch sees {torch.cuda.device_count()} CUDA "
+            f"devices. Choose one it has, or leave torch out (IVY_BACKENDS=numpy,jax)."
+        )
+    torch.set_default_device(f"cuda:{index}")  # torch.zeros, torch.tensor... (tests' natives too)
+
+
+def _jax_target(kind: str, index: int) -> None:
+    import jax
+
+    try:
+        device = jax.devices(kind)[index]
+    except (RuntimeError, IndexError):
+        raise pytest.UsageError(
+            f"IVY_TEST_DEVICE={TARGET_DEVICE}: jax has no such device ({jax.devices()}). "
+            f"Choose one it has, or leave jax out (IVY_BACKENDS=numpy,torch)."
+        ) from None
+    jax.config.update("jax_default_device", device)
+
+
+# What makes a framework create its arrays on the target device by default (tensorflow places
+# them on its first GPU by itself; numpy has only the CPU).
+_TARGETERS = {"torch": _torch_target, "jax": _jax_target}
+
+
+def _target_the_device(backends) -> None:
+    """``IVY_TEST_DEVICE=gpu:0``: the frameworks' default device, so that the arrays the tests
+    make (``tests.helpers.native``, ``ivy.zeros(...)`` without ``device=``) live there."""
+    if TARGET_DEVICE == "cpu":
+        return
+    kind, _, index = TARGET_DEVICE.partition(":")
+    for backend in backends:
+        if backend in _TARGETERS:
+            _TARGETERS[backend](kind, int(index or 0))
 
 
 def _opted_in(metafunc) -> tuple[str, ...]:

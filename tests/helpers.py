@@ -42,7 +42,8 @@ _TYPE_ROOTS = {
 def _torch_native(a):
     import torch
 
-    return torch.from_numpy(a)
+    t = torch.from_numpy(a)  # (on the CPU whatever torch's default device: moved to that one)
+    return t.to(torch.get_default_device())
 
 
 def _jax_native(a):

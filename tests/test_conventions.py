@@ -6,6 +6,14 @@
 - Applied packages import nothing private from another package (``ivy.core._dispatch``,
   ``ivy_mechanics._kernels``, ...): shared numerics live in the core's public API.
 - ``import <package>`` imports no framework (tensorflow alone takes seconds).
+- Applied packages never compare a framework's name (``xp.backend == "numpy"``, ``backend in
+  ("jax", "tensorflow")``): they ask the backend's capabilities (``xp.capabilities.autodiff``,
+  ``.compilation``, ``.compiled_loops``, ``.float64``) or the core's functions
+  (``ivy.compiled_scan``, ``ivy.enable_float64``, ``ivy.dtype_name``).
+- Applied packages read no other object's private attributes (``env._boxes``, ``core._step``,
+  ``model._forward``): only those of ``self``, ``cls``, ``super()``, and of objects of the
+  module's own classes (a class of the module, a variable annotated with one, made by one, or a
+  copy of ``self``).
 
 Applied packages are found on disk (every top-level ``ivy_*`` package), so a new library is
 checked the day it lands.
@@ -194,3 +202,147 @@ def test_import_works_without_optree_and_nests_say_what_to_install():
     ).stdout
     assert out.startswith("[2.0, 2.0]\n")
     assert "pip install optree" in out
+
+
+# ----------------------------------------------------------------------------------------------
+# No framework names in applied code; no private attributes of other objects
+# ----------------------------------------------------------------------------------------------
+
+FRAMEWORK_NAMES = frozenset(
+    {"numpy", "np", "torch", "pytorch", "jax", "tensorflow", "tf", "array_api_strict"}
+)
+
+
+def _names_a_framework(node: ast.AST) -> bool:
+    """A string constant that is a framework's name, or a tuple, list or set holding one."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return node.value in FRAMEWORK_NAMES
+    if isinstance(node, (ast.Tuple, ast.List, ast.Set)):
+        return any(_names_a_framework(e) for e in node.elts)
+    return False
+
+
+def framework_name_comparisons(tree: ast.AST) -> list[tuple[int, str]]:
+    """``(line, code)`` of each comparison with a framework's name (``==``, ``!=``, ``in``,
+    ``is``...) and each ``match`` case on one."""
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Compare):
+            if any(_names_a_framework(o) for o in (node.left, *node.comparators)):
+                found.append((node.lineno, ast.unparse(node)))
+        elif isinstance(node, ast.match_case):
+            values = [p.value for p in ast.walk(node.pattern) if isinstance(p, ast.MatchValue)]
+            if any(_names_a_framework(v) for v in values):
+                found.append((node.pattern.lineno, f"case {ast.unparse(node.pattern)}"))
+    return found
+
+
+def _annotation_names(annotation: ast.AST | None) -> set[str]:
+    if annotation is None:
+        return set()
+    if isinstance(annotation, ast.Constant) and isinstance(annotation.value, str):
+        try:
+            annotation = ast.parse(annotation.value, mode="eval").body
+        except SyntaxError:
+            return set()
+    return {n.id for n in ast.walk(annotation) if isinstance(n, ast.Name)}
+
+
+def _own_receivers(tree: ast.AST) -> set[str]:
+    """Names whose private attributes the module may read: ``self``, ``cls``, its classes, and
+    variables of its classes (annotated with one, made by one, or made from ``self``)."""
+    classes = {n.name for n in ast.walk(tree) if isinstance(n, ast.ClassDef)}
+    names = {"self", "cls"} | classes
+    for node in ast.walk(tree):
+        if isinstance(node, ast.arg) and _annotation_names(node.annotation) & classes:
+            names.add(node.arg)
+        elif isinstance(node, ast.AnnAssign) and _annotation_names(node.annotation) & classes:
+            if isinstance(node.target, ast.Name):
+                names.add(node.target.id)
+        elif isinstance(node, ast.Assign) and isinstance(node.value, ast.Call):
+            call = node.value
+            made_by_own_class = isinstance(call.func, ast.Name) and call.func.id in classes
+            from_self = bool(call.args) and ast.unparse(call.args[0]) in ("self", "cls")
+            if made_by_own_class or from_self:  # (``copy.copy(self)``, ``replace(self, ...)``)
+                names |= {t.id for t in node.targets if isinstance(t, ast.Name)}
+    return names
+
+
+def private_attribute_reads(tree: ast.AST) -> list[tuple[int, str]]:
+    """``(line, code)`` of each read of a private attribute (``obj._name``, not a dunder) of an
+    object that is not the module's own (see :func:`_own_receivers`)."""
+    own = _own_receivers(tree)
+    found = []
+    for node in ast.walk(tree):
+        if not (isinstance(node, ast.Attribute) and _private(node.attr)):
+            continue
+        receiver = node.value
+        if isinstance(receiver, ast.Name) and receiver.id in own:
+            continue
+        if isinstance(receiver, ast.Call) and ast.unparse(receiver) in ("super()", "type(self)"):
+            continue
+        found.append((node.lineno, ast.unparse(node)))
+    return found
+
+
+def _offences(package: str, check) -> list[str]:
+    out = []
+    for path in sorted((ROOT / package).rglob("*.py")):
+        tree = ast.parse(path.read_text(), str(path))
+        out += [f"{path.relative_to(ROOT)}:{line}: {code}" for line, code in check(tree)]
+    return out
+
+
+@pytest.mark.parametrize("package", APPLIED)
+def test_applied_packages_compare_no_framework_names(package):
+    found = _offences(package, framework_name_comparisons)
+    assert not found, (
+        "ask the backend's capabilities (xp.capabilities.autodiff, .compilation, "
+        ".compiled_loops, .float64) or the core (ivy.compiled_scan, ivy.enable_float64, "
+        "ivy.dtype_name) instead of a framework's name:\n" + "\n".join(found)
+    )
+
+
+@pytest.mark.parametrize("package", APPLIED)
+def test_applied_packages_read_no_private_attributes_of_others(package):
+    found = _offences(package, private_attribute_reads)
+    assert not found, "make the contract public (or read it through self):\n" + "\n".join(found)
+
+
+def test_the_convention_checks_find_what_they_look_for():
+    """Both checks flag what they must and leave legitimate code alone."""
+    flagged = ast.parse(
+        "if xp.backend == 'numpy': pass\n"
+        "compile = xp.backend != 'torch'\n"
+        "fast = backend in ('jax', 'tensorflow')\n"
+        "same = 'tf' is name\n"
+        "match framework:\n"
+        "    case 'torch':\n"
+        "        pass\n"
+    )
+    assert [line for line, _ in framework_name_comparisons(flagged)] == [1, 2, 3, 4, 6]
+    fine = ast.parse(
+        "if dtype == 'float32' and mode in ('train', 'eval'): pass\n"
+        "ok = xp.capabilities.compiled_loops\n"
+    )
+    assert framework_name_comparisons(fine) == []
+    reads = ast.parse(
+        "import copy\n"
+        "class Env:\n"
+        "    def __init__(self):\n"
+        "        self._boxes = 1\n"
+        "    def __eq__(self, other: 'Env'):\n"
+        "        return self._boxes == other._boxes\n"
+        "    def narrowed(self):\n"
+        "        new = copy.copy(self)\n"
+        "        new._boxes = super()._boxes + Env._count + type(self)._count\n"
+        "        return new\n"
+        "def bad(env, core):\n"
+        "    low = env._boxes\n"
+        "    return core._step(self.model._forward, env.__class__)\n"
+    )
+    assert private_attribute_reads(reads) == [
+        (12, "env._boxes"),
+        (13, "core._step"),
+        (13, "self.model._forward"),
+    ]

@@ -76,6 +76,7 @@ def assemble(
     scalars_need_shims: bool = False,
     natives_in_namespace: bool = False,
     array_types: Sequence[type] = (),
+    precision: Callable[[str], Callable[[], None]] | None = None,
 ) -> types.ModuleType:
     """Fill ``namespace`` with the backend's public names and register it as backend ``backend``.
 
@@ -112,6 +113,10 @@ def assemble(
             that ivy's dispatchers use for calls with Python scalars.
         array_types: the framework's array types, registered for inference at once (see
             ``framework_handler.register_loaded``); others (subclasses) as they are met.
+        precision: ``precision(name) -> restore``: sets the framework's switches for the
+            precision of float32 matrix products and convolutions to ivy's ``'highest'`` or
+            ``'high'`` and returns what restores them (see ``ivy.set_matmul_precision``);
+            None: nothing to switch.
 
     Returns:
         The namespace module, complete.
@@ -185,6 +190,7 @@ def assemble(
             if getattr(ns.get(name), "__ivy_scalar_shim__", False):
                 ns[name] = ns[name].__ivy_native__
     fast = _fast_view(module, exported)
+    module.__ivy_precision__ = precision
     module.__ivy_fast__ = fast
     module.__ivy_scalars__ = scalars
     if fast is not module:

@@ -39,4 +39,27 @@ def exportable(x):
         return x, False
     if root == "tensorflow":
         return _TFExport(x), True
+    if root == "numpy" and hasattr(x, "flags") and not x.flags.writeable:
+        # (numpy refuses to export read-only memory, such as a view of a jax array, through
+        # the DLPack version the consumers ask for: a copy, which is writable, carries it)
+        return x.copy(), False
     return x, False
+
+
+# DLPack device types whose memory the host reads: kDLCPU, kDLCUDAHost (pinned), kDLROCMHost.
+_HOST_DEVICE_TYPES = (1, 3, 11)
+
+
+def on_host(x) -> bool:
+    """Whether the DLPack producer ``x`` (as :func:`exportable` returns it) holds host memory."""
+    device = getattr(x, "__dlpack_device__", None)
+    return device is None or int(device()[0]) in _HOST_DEVICE_TYPES
+
+
+def refuse_copy_between_devices(copy, where: str) -> None:
+    """``copy=False`` across the host and an accelerator cannot be honoured: say so."""
+    if copy is False:
+        raise ValueError(
+            f"from_dlpack: copy=False, but the array must move {where}, which copies it. Pass "
+            f"copy=None (or True), or give a device= where the array already is."
+        )

@@ -7,7 +7,9 @@ that backend (``ivy/backends/_assemble.py``). To add a group: add its module her
 package is listed).
 """
 
+from ivy import framework_handler as _fh
 from ivy.core import (
+    _diagnose,
     activations,
     compilation,
     control_flow,
@@ -67,6 +69,8 @@ GROUPS = (
     utility,
 )
 GROUP_NAMES = tuple(g.__name__.rpartition(".")[2] for g in GROUPS)
+
+_fh.explain_errors_with(_diagnose.explain)  # the dispatchers' typed errors
 
 __all__: list[str] = []
 __all__ += activations.__all__

@@ -25,6 +25,7 @@ import re
 from collections.abc import Callable, Sequence
 from typing import Any
 
+from ivy.core._dispatch import FUNCTIONS, REGISTRY
 from ivy.errors import (
     AxisError,
     DtypeError,
@@ -117,9 +118,7 @@ def explain(ns: Any, name: str, err: Exception, args: tuple, kwargs: dict) -> Ex
 
 
 def _bind(name: str, args: tuple, kwargs: dict) -> dict[str, Any]:
-    import ivy
-
-    sig = inspect.signature(getattr(ivy, name))
+    sig = inspect.signature(FUNCTIONS[name])
     return dict(sig.bind(*args, **kwargs).arguments)
 
 
@@ -305,7 +304,7 @@ def _axes(ns: Any, name: str, bound: dict, err: Exception) -> Exception | None:
 def _squeeze(ns: Any, name: str, bound: dict, err: Exception) -> Exception | None:
     if name != "squeeze" or bound.get("axis") is None:
         return None
-    from ivy.backends._axes import check_squeezable, normalize_axes
+    from ivy._args.axes import check_squeezable, normalize_axes
 
     shape = tuple(bound["x"].shape)
     axes = normalize_axes(bound["axis"], len(shape), name, ns.backend)
@@ -331,9 +330,8 @@ def broadcast_shapes(*shapes: Sequence[int]) -> tuple[int, ...] | None:
 
 
 def _broadcast(ns: Any, name: str, bound: dict, err: Exception) -> Exception | None:
-    import ivy
-
-    if name not in _BROADCASTING and ivy.function_info(name).group not in _BROADCASTING_GROUPS:
+    info = REGISTRY.get(name)
+    if name not in _BROADCASTING and (info is None or info.group not in _BROADCASTING_GROUPS):
         return None
     arrays = _arrays(bound)
     if isinstance(bound.get("arrays"), (list, tuple)):
@@ -419,12 +417,8 @@ def _indices(ns: Any, name: str, bound: dict, err: Exception) -> Exception | Non
 
 
 def _is_linalg(name: str) -> bool:
-    import ivy
-
-    try:
-        return ivy.function_info(name).group.startswith("linalg")
-    except Exception:  # noqa: BLE001 - not a registered function
-        return False
+    info = REGISTRY.get(name)
+    return info is not None and info.group.startswith("linalg")
 
 
 def _by_message(ns: Any, name: str, err: Exception) -> Exception:

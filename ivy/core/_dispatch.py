@@ -35,7 +35,7 @@ from typing import Any
 
 from ivy import framework_handler as _fh
 
-__all__ = ["dispatch", "composition", "alias", "by_hand", "FunctionInfo", "REGISTRY"]
+__all__ = ["dispatch", "composition", "alias", "by_hand", "FunctionInfo", "REGISTRY", "FUNCTIONS"]
 
 KINDS = ("dispatched", "by_hand", "composition", "alias")
 # The forms that the rule "functions of real numbers compute integer inputs in float32" takes,
@@ -72,6 +72,8 @@ class FunctionInfo:
 
 
 REGISTRY: dict[str, FunctionInfo] = {}
+#: name -> the framework-agnostic function (``ivy.<name>``), aliases included.
+FUNCTIONS: dict[str, Callable] = {}
 
 
 def _group_of(fn: Callable) -> str:
@@ -301,6 +303,7 @@ def by_hand(fn: Callable) -> Callable:
 
 def _register(fn: Callable, kind: str, reals: str | None = None) -> Callable:
     REGISTRY[fn.__name__] = FunctionInfo(fn.__name__, kind, _group_of(fn), reals=reals)
+    FUNCTIONS[fn.__name__] = fn
     return fn
 
 
@@ -332,4 +335,5 @@ def alias(name: str, target: Callable) -> Callable:
     """
     info = REGISTRY[target.__name__]
     REGISTRY[name] = FunctionInfo(name, "alias", info.group, target=target.__name__)
+    FUNCTIONS[name] = target
     return target

@@ -112,7 +112,8 @@ def softmax(x: Array, /, axis: int = -1, *, f: Framework = None) -> Array:
         axis: the axis that sums to one.
 
     Returns:
-        An array like ``x``. A slice that is all ``-inf`` gives NaN.
+        An array like ``x``. A slice that is all ``-inf``, or that holds NaN or ``+inf``, is NaN
+        throughout (``inf - inf`` is NaN), on every backend.
 
     Example:
         >>> ivy.softmax(np.array([1000., 1000.]))

@@ -29,7 +29,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from ivy import framework_handler as _fh
-from ivy.backends import _nn_args as A
+from ivy._args import nn as A
 from ivy.core._dispatch import composition, dispatch
 from ivy.typing import Array, Framework, Shape
 

@@ -70,4 +70,8 @@ def searchsorted(
 ) -> Array:
     """Indices (int64) where the values ``x2`` would be inserted into the sorted 1-D ``x1``
     (sorted by the indices ``sorter`` when given) to keep it sorted: before equal values with
-    ``side='left'``, after them with ``'right'``."""
+    ``side='left'``, after them with ``'right'``.
+
+    NaN sorts after every number, as :func:`ivy.sort` puts it (the standard leaves the order
+    of NaN open): NaNs of ``x1`` are at its end, a number is inserted before them, and a NaN of
+    ``x2`` before the first NaN (``'left'``) or at the end (``'right'``), on every backend."""

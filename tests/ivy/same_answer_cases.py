@@ -583,6 +583,8 @@ def _searching_sorting_sets() -> None:
     CASES["searchsorted"] = [
         C(a([1.0, 2.0, 2.0, 3.0], "float32"), a([2.0, 0.0, 5.0, nan], "float32")),
         C(a([1.0, 2.0, 2.0, 3.0], "float32"), a([2.0], "float32"), side="right"),
+        C(a([1.0, inf, nan, nan], "float32"), a([2.0, inf, nan, -inf], "float32")),
+        C(a([1.0, inf, nan, nan], "float64"), a([2.0, inf, nan, -inf], "float64"), side="right"),
         C(a([3, 1, 2], "int64"), a([2, 3], "int64"), sorter=a([1, 2, 0], "int64")),
         C(a([1, 5], "int8"), a([2, 9], "int16")),
     ]
@@ -993,6 +995,7 @@ def _nn() -> None:
             C(logits, axis=0),
             C(a(2.0, "float32")),
             C(a([-inf, 0.0], "float64")),
+            C(a([[inf, 1.0, 2.0], [nan, 0.0, 1.0], [-inf, -inf, -inf]], "float32")),
         ]
     CASES["linear"] = [
         C(logits, small("float32", (3, 4), 1)),

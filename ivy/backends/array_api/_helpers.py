@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from ivy import framework_handler as _fh
 from ivy.dtypes import DTYPE_NAMES
 
 _FLOATING = ("real floating", "complex floating")
@@ -122,9 +123,7 @@ def host_bridge(name: str, xp: Any, is_array: Callable[[Any], bool], dtype_name)
     """``ivy.numpy.<name>`` for arrays of ``xp``: array arguments go to numpy (by DLPack), native
     dtypes by name, and numpy results come back as ``xp`` arrays. For the functions the Array API
     does not define, on libraries whose arrays live in host memory."""
-    import ivy
-
-    target = getattr(ivy.numpy, name)
+    target = getattr(_fh.load_backend("numpy"), name)
 
     def to_host(v):
         if is_array(v):

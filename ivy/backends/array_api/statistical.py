@@ -4,7 +4,7 @@ float32 by the rule declared on the core's stubs."""
 
 from __future__ import annotations
 
-from ivy.backends._axes import too_few_for_correction
+from ivy._args.axes import too_few_for_correction
 from ivy.backends.array_api._unbound import xp
 
 

@@ -30,6 +30,7 @@ _assemble.assemble(
     scalars_need_shims=True,
     dtypes_now=_helpers.X64_DTYPES,
     devices=_helpers.devices,
+    precision=_helpers.set_precision,
     array_api_capabilities=_helpers.ARRAY_API_CAPABILITIES,
     array_types=(type(_jnp.zeros(())),),
 )

@@ -175,3 +175,12 @@ SHARED = {
     "device_name": device_name,
     "concrete": lambda value: not isinstance(value, jax.core.Tracer),
 }
+
+
+def set_precision(precision: str):
+    """jax's default precision of float32 matrix products and convolutions
+    (``jax_default_matmul_precision``: ``'highest'`` full float32, ``'high'`` bf16 passes or
+    TF32 where the platform has them); returns what restores the value found."""
+    saved = jax.config.jax_default_matmul_precision
+    jax.config.update("jax_default_matmul_precision", precision)
+    return lambda: jax.config.update("jax_default_matmul_precision", saved)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import jax.numpy as jnp
 from jax import lax
 
-from ivy.backends import _nn_args as A
+from ivy._args import nn as A
 
 _SPATIAL = {1: "W", 2: "HW", 3: "DHW"}
 

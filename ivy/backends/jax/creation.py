@@ -8,6 +8,7 @@ import numpy as np
 
 from ivy.backends._constants import ConstantCache
 from ivy.backends._creation_args import beyond_int64, check_fill_value, linspace_dtype
+from ivy.backends._dlpack import exportable, on_host, refuse_copy_between_devices
 from ivy.backends.jax._helpers import (
     check_x64_of,
     default_dtype_of_value,
@@ -121,7 +122,25 @@ triu = jnp.triu
 
 
 def from_dlpack(x, /, *, device=None, copy=None):
-    out = jax.dlpack.from_dlpack(x, device=native_device(device), copy=copy)
+    """Host memory is imported on jax's CPU device (jax's own import would ask the default
+    device, an accelerator's client, to take a host buffer, which its PJRT plugin refuses), and
+    moved to ``device`` when that is an accelerator; a device array moves to ``device`` after
+    its import. Without ``device`` the result stays where ``x`` is, as the standard says."""
+    target = native_device(device)
+    producer, copy_after = exportable(x)
+    source = x if copy_after else producer  # (jax imports tf's tensors itself)
+    if on_host(producer):
+        if target is None or target.platform == "cpu":
+            cpu = target or jax.devices("cpu")[0]
+            out = jax.dlpack.from_dlpack(source, device=cpu, copy=copy)
+        else:
+            refuse_copy_between_devices(copy, "from the host to an accelerator")
+            return jax.device_put(np.from_dlpack(producer), target)
+    else:
+        out = jax.dlpack.from_dlpack(source, copy=copy)
+        if target is not None and out.devices() != {target}:
+            refuse_copy_between_devices(copy, f"to {target}")
+            return jax.device_put(out, target)
     # jax 0.10 shares a torch tensor's memory even with copy=True: copy it here.
     return jnp.array(out, copy=True) if copy else out
 

@@ -7,7 +7,7 @@ import itertools
 import jax.numpy as jnp
 import numpy as np
 
-from ivy.backends._axes import new_axis_positions
+from ivy._args.axes import new_axis_positions
 
 reshape = jnp.reshape
 # (jnp.permute_dims refuses negative axes, which the standard's tests pass)

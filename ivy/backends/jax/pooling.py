@@ -11,7 +11,7 @@ import math
 import jax.numpy as jnp
 from jax import lax
 
-from ivy.backends import _nn_args as A
+from ivy._args import nn as A
 
 
 def pool_general(x, kernel, strides, padding, /, *, reduction="max"):

@@ -5,13 +5,14 @@ from __future__ import annotations
 import numpy as np
 
 from ivy.backends._creation_args import check_python_data, linspace_dtype
-from ivy.backends._dlpack import exportable
+from ivy.backends._dlpack import exportable, on_host, refuse_copy_between_devices
 from ivy.backends.numpy._helpers import (
     check_device,
     default_dtype_of_value,
     has_own_dtype,
     native_dtype,
 )
+from ivy.framework_handler import get_framework
 
 _DOWNCAST = {np.dtype(np.float64): np.float32, np.dtype(np.complex128): np.complex64}
 
@@ -106,7 +107,11 @@ triu = np.triu
 
 def from_dlpack(x, /, *, device=None, copy=None):
     check_device(device)
+    original = x
     x, copy_after = exportable(x)
+    if not on_host(x):  # an accelerator's array: its framework copies it to the host
+        refuse_copy_between_devices(copy, "from an accelerator to the host")
+        return np.asarray(get_framework(original).to_numpy(original))
     if copy_after:
         out = np.from_dlpack(x)
         return out.copy() if copy else out

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ivy.backends import _nn_args as A
+from ivy._args import nn as A
 from ivy.backends.numpy.convolutions import windows
 
 

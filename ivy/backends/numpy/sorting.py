@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ivy.backends._axes import normalize_axis
+from ivy._args.axes import normalize_axis
 from ivy.backends._sample_args import top_k_axis
 from ivy.core._results import TopKResult
 

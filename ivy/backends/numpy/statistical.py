@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ivy.backends._axes import cumulative_axis
+from ivy._args.axes import cumulative_axis
 from ivy.backends.numpy._helpers import native_dtype
 
 

@@ -14,6 +14,7 @@ _assemble.assemble(
     native_dtypes=_helpers.NATIVE_DTYPES,
     reals=_helpers.REALS,
     devices=_helpers.devices,
+    precision=_helpers.set_precision,
     array_types=_helpers.ARRAY_TYPES,
     # (tf converts Python scalars itself, but caches them by value: -0.0 could come back as 0.0,
     # and ints out of a dtype's range would wrap; the shims convert them, see ``_helpers.fast``)

@@ -20,8 +20,8 @@ import types
 import numpy as np
 import tensorflow as tf
 
-import ivy
 from ivy.backends.tensorflow._helpers import tf_device
+from ivy.core._dispatch import FUNCTIONS
 
 # The versions of the standard whose array object this one satisfies.
 _API_VERSIONS = ("2021.12", "2022.12", "2023.12")
@@ -71,16 +71,16 @@ def _methods(ns: types.ModuleType) -> dict:
             raise ValueError(
                 f"x.mT needs an array of two or more dimensions; this one has {self.shape.rank}."
             )
-        return ivy.matrix_transpose(self, f=ns)
+        return FUNCTIONS["matrix_transpose"](self, f=ns)
 
     def size(self):
         return self.shape.num_elements()  # None where a dimension is unknown (in tf.function)
 
     def __pos__(self):
-        return ivy.positive(self, f=ns)
+        return FUNCTIONS["positive"](self, f=ns)
 
     def binary(name: str, reflected: bool):
-        fn = getattr(ivy, name)  # ivy's dispatcher: its typed errors, numpy operands converted
+        fn = FUNCTIONS[name]  # ivy's dispatcher: its typed errors, numpy operands converted
 
         def method(self, other):
             if not isinstance(other, _OPERANDS):

@@ -326,3 +326,12 @@ def _as_is(native, name: str):
 # ivy's rule for the functions of real numbers that the core declares (@dispatch(reals=True)),
 # applied by the assembly.
 REALS = {"unary": _of_reals, "binary": _as_is, "options": _as_is}
+
+
+def set_precision(precision: str):
+    """tensorflow's TF32 switch for float32 matrix products and convolutions (on by default
+    in tf): off for ``'highest'``, on for ``'high'``; returns what restores the value found."""
+    experimental = tf.config.experimental
+    saved = experimental.tensor_float_32_execution_enabled()
+    experimental.enable_tensor_float_32_execution(precision != "highest")
+    return lambda: experimental.enable_tensor_float_32_execution(saved)

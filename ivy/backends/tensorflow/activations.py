@@ -31,10 +31,17 @@ def gelu(x, /, approximate=False):
 
 
 def softmax(x, /, axis=-1):
+    """A row holding NaN or +inf is NaN throughout, as ``exp(x - max(x))`` computes it on every
+    other backend (inf - inf is NaN); tf's kernel answers 0 beside it. Adding 0 * the row's
+    maximum (NaN for such rows; tf's maximum propagates NaN) costs about 2x tf's own softmax
+    (95 against 210 us on a (64, 1000) float32 batch), the least of the ways measured."""
     x = as_inexact(x)
     if len(x.shape) == 0 and axis in (0, -1):  # a 0-d array: one class (as numpy and torch)
         return tf.nn.softmax(x[None], axis=0)[0]
-    return tf.nn.softmax(x, axis=axis)
+    out = tf.nn.softmax(x, axis=axis)
+    if x.dtype.is_floating:
+        out = out + 0.0 * tf.math.reduce_max(x, axis=axis, keepdims=True)
+    return out
 
 
 def log_softmax(x, /, axis=-1):

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import tensorflow as tf
 
-from ivy.backends import _nn_args as A
+from ivy._args import nn as A
 from ivy.errors import UnsupportedError
 
 # The rank-specific functions: ``tf.nn.convolution`` builds 3-D ops whose gradient fails

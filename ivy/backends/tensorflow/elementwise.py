@@ -20,6 +20,7 @@ import math
 
 import tensorflow as tf
 
+from ivy import framework_handler as _fh
 from ivy.backends import _int_scalars
 from ivy.backends._clip_args import clip_bounds
 from ivy.backends._complex_special import namespace, wrap
@@ -274,9 +275,7 @@ def logical_not(x, /):
 def clip(x, /, min=None, max=None):
     """The result has ``x``'s dtype whatever the bounds' (``ivy/backends/_clip_args.py``)."""
     x = tensor(x)
-    import ivy
-
-    min, max = clip_bounds(ivy.tensorflow, x, min, max)
+    min, max = clip_bounds(_fh.load_backend("tensorflow"), x, min, max)
     if x.dtype is tf.bool:
         if min is not None:
             x = tf.math.logical_or(x, tensor_of(min, tf.bool))

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import tensorflow as tf
 
-from ivy.backends._axes import check_squeezable, new_axis_positions, normalize_axes
+from ivy._args.axes import check_squeezable, new_axis_positions, normalize_axes
 from ivy.backends.tensorflow._helpers import (
     FAST_TYPES,
     REFUSED,

@@ -14,7 +14,7 @@ import math
 
 import tensorflow as tf
 
-from ivy.backends import _nn_args as A
+from ivy._args import nn as A
 from ivy.backends.tensorflow.convolutions import native_padding
 
 

@@ -83,11 +83,15 @@ def searchsorted(x1, x2, /, *, side="left", sorter=None):
     x1, x2 = promote(x1, x2)
     if sorter is not None:
         x1 = tf.gather(x1, sorter)
+    nans = None
+    if x1.dtype.is_floating:  # NaN sorts after every number (see ivy.searchsorted)
+        nans = tf.math.is_nan(x1)
+        x1 = tf.where(nans, tf.constant(float("inf"), x1.dtype), x1)
     out = tf.searchsorted(x1[None], tf.reshape(x2, [1, -1]), side=side, out_type=tf.int64)
     out = tf.reshape(out, tf.shape(x2))
-    if x2.dtype.is_floating:  # NaN sorts last, as numpy's sort puts it: after every number
-        # ('left': before the first NaN of x1; 'right': at the end)
+    if nans is not None:
         n = tf.size(x1, out_type=tf.int64)
-        first_nan = n - tf.math.count_nonzero(tf.math.is_nan(x1), dtype=tf.int64)
-        out = tf.where(tf.math.is_nan(x2), first_nan if side == "left" else n, out)
+        numbers = n - tf.math.count_nonzero(nans, dtype=tf.int64)  # the NaNs: x1[numbers:]
+        out = tf.minimum(out, numbers)
+        out = tf.where(tf.math.is_nan(x2), numbers if side == "left" else n, out)
     return out

@@ -6,7 +6,7 @@ import math
 
 import tensorflow as tf
 
-from ivy.backends._axes import cumulative_axis
+from ivy._args.axes import cumulative_axis
 from ivy.backends.tensorflow._helpers import (
     floating,
     native_dtype,

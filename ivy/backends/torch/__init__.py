@@ -15,5 +15,6 @@ _assemble.assemble(
     native_dtypes=_helpers.NATIVE_DTYPES,
     reals=_helpers.REALS,
     devices=_helpers.devices,
+    precision=_helpers.set_precision,
     array_types=(_torch.Tensor, _torch.nn.Parameter),
 )

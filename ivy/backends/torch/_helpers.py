@@ -128,3 +128,25 @@ def devices() -> list[torch.device]:
     return [torch.device("cpu")] + [
         torch.device("cuda", i) for i in range(torch.cuda.device_count())
     ]
+
+
+def set_precision(precision: str):
+    """torch's float32 precision switches for matrix products and cuDNN (convolutions, RNNs):
+    IEEE float32 for ``'highest'``, TF32 for ``'high'``; returns what restores the values found.
+    (torch's newer ``fp32_precision`` switches: mixing them with the legacy ``allow_tf32`` ones
+    is an error in torch, so ivy uses only these.)"""
+    value = "ieee" if precision == "highest" else "tf32"
+    switches = (
+        torch.backends.cuda.matmul,
+        torch.backends.cudnn.conv,
+        torch.backends.cudnn.rnn,
+    )
+    saved = [s.fp32_precision for s in switches]
+    for s in switches:
+        s.fp32_precision = value
+
+    def restore() -> None:
+        for s, old in zip(switches, saved):
+            s.fp32_precision = old
+
+    return restore

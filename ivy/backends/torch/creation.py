@@ -7,7 +7,7 @@ import torch
 
 from ivy.backends._constants import ConstantCache
 from ivy.backends._creation_args import beyond_int64, check_fill_value
-from ivy.backends._dlpack import exportable
+from ivy.backends._dlpack import exportable, on_host, refuse_copy_between_devices
 from ivy.backends.torch._helpers import (
     default_dtype_of_value,
     has_own_dtype,
@@ -166,7 +166,13 @@ def full_like(x, /, fill_value, *, dtype=None, device=None):
 
 
 def from_dlpack(x, /, *, device=None, copy=None):
+    """Between the host and an accelerator the array is imported where it is and then moved
+    (``Tensor.to``: a copy); without ``device`` it stays where ``x`` is."""
     x, copy_after = exportable(x)
+    target = native_device(device)
+    if target is not None and on_host(x) != (torch.device(target).type == "cpu"):
+        refuse_copy_between_devices(copy, f"to {target}")
+        return from_dlpack(x).to(target)
     if copy_after:
         out = torch.from_dlpack(x, device=native_device(device))
         return out.clone() if copy else out

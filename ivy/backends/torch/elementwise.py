@@ -14,6 +14,7 @@ import operator
 import numpy as np
 import torch
 
+from ivy import framework_handler as _fh
 from ivy.backends import _int_scalars
 from ivy.backends._clip_args import clip_bounds
 from ivy.backends._complex_special import namespace, wrap
@@ -308,9 +309,7 @@ def _bool_clip(x, low, high):
 
 
 def _namespace():
-    import ivy
-
-    return ivy.torch
+    return _fh.load_backend("torch")
 
 
 def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):

@@ -6,7 +6,7 @@ import math
 
 import torch
 
-from ivy.backends._axes import normalize_axis
+from ivy._args.axes import normalize_axis
 from ivy.backends._index_checks import check_bounds
 from ivy.backends.torch._helpers import native_dtype
 from ivy.backends.torch._unsigned import SIGNED_OF, WIDE_UNSIGNED, from_order_key, order_key

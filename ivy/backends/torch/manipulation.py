@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import torch
 
-from ivy.backends._axes import check_squeezable, new_axis_positions, normalize_axes
+from ivy._args.axes import check_squeezable, new_axis_positions, normalize_axes
 from ivy.backends.torch._unsigned import promoted, unsigned_safe
 from ivy.backends.torch.creation import asarray
 

@@ -12,7 +12,7 @@ import math
 import torch
 import torch.nn.functional as F
 
-from ivy.backends import _nn_args as A
+from ivy._args import nn as A
 from ivy.backends.torch.convolutions import channels_first, channels_last, tensors, torch_pads
 from ivy.errors import UnsupportedError
 

@@ -63,4 +63,14 @@ def searchsorted(x1, x2, /, *, side="left", sorter=None):
         x1, x2 = x1.to(dtype), x2.to(dtype)
     if x1.dtype in WIDE_UNSIGNED:  # no torch kernel: their order keys
         x1, x2 = order_key(x1), order_key(x2)
-    return torch.searchsorted(x1, x2, side=side, sorter=sorter)
+    if not x1.is_floating_point():
+        return torch.searchsorted(x1, x2, side=side, sorter=sorter)
+    # NaN sorts after every number (see ivy.searchsorted); torch's search compares with NaN
+    if sorter is not None:
+        x1 = x1[sorter]
+    nans = torch.isnan(x1)
+    x1 = torch.where(nans, torch.tensor(float("inf"), dtype=x1.dtype, device=x1.device), x1)
+    out = torch.searchsorted(x1, x2, side=side)
+    numbers = x1.shape[-1] - nans.sum()  # the NaNs: x1[numbers:]
+    out = torch.minimum(out, numbers)
+    return torch.where(torch.isnan(x2), numbers if side == "left" else x1.shape[-1], out)

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import torch
 
-from ivy.backends._axes import normalize_axis
+from ivy._args.axes import normalize_axis
 from ivy.backends._sample_args import top_k_axis
 from ivy.backends.torch._unsigned import SIGNED_OF, WIDE_UNSIGNED, order_key
 from ivy.core._results import TopKResult

@@ -6,7 +6,7 @@ import math
 
 import torch
 
-from ivy.backends._axes import cumulative_axis, too_few_for_correction
+from ivy._args.axes import cumulative_axis, too_few_for_correction
 from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
 from ivy.backends.torch._unsigned import WIDE_UNSIGNED, unsigned_safe, work_dtype
 

@@ -168,3 +168,21 @@ def test_activation_derivatives_at_zero_and_in_the_tails(diff_backend, name):
     value, (grad,) = native_value_and_grads(diff_backend, fn, [x], np.ones(3))
     assert np.isfinite(value)
     np.testing.assert_allclose(grad, TAIL_DERIVATIVES[name], atol=1e-12)
+
+
+def test_softmax_of_rows_with_nan_or_infinities(backend, xp):
+    """``exp(x - max)`` in IEEE arithmetic, on every backend: a row holding NaN or +inf is NaN
+    throughout (inf - inf is NaN), a row of -inf only is NaN, -inf among numbers gives 0."""
+    inf, nan = math.inf, math.nan
+    rows = [[inf, 1.0, 2.0], [-inf, 1.0, 2.0], [inf, inf, 0.0], [-inf, -inf, -inf], [nan, 1.0, 0.0]]
+    x = np.array(rows, np.float64)
+    with np.errstate(invalid="ignore"):
+        shifted = x - x.max(axis=1, keepdims=True)
+        e = np.exp(shifted)
+        expected = e / e.sum(axis=1, keepdims=True)
+    assert np.isnan(expected[[0, 2, 3, 4]]).all() and not np.isnan(expected[1]).any()
+    for dtype in ("float32", "float64"):
+        out = xp.softmax(native(x.astype(dtype), backend), axis=-1)
+        check(out, expected.astype(dtype), backend)
+        out = ivy.softmax(native(x.T.astype(dtype), backend), axis=0)
+        check(out, expected.T.astype(dtype), backend)

@@ -16,16 +16,11 @@ import pytest
 
 import ivy
 from tests.compilers import GRAPH_COUNTERS, native_compile
-from tests.conftest import capable, require
+from tests.conftest import capable, device_for, require
 from tests.helpers import check, native, numpy_of
 
 rng = np.random.default_rng(23)
 K = rng.normal(size=(2, 3))  # a model constant, float64
-
-
-def _device(xp, target_device):
-    """The test run's device where the backend has that kind of device, else the CPU."""
-    return target_device if target_device.split(":")[0] in xp.capabilities.devices else "cpu"
 
 
 # ----------------------------------------------------------------------------------------------
@@ -33,8 +28,8 @@ def _device(xp, target_device):
 # ----------------------------------------------------------------------------------------------
 
 
-def test_constant_converts_numpy_arrays_scalars_and_lists(backend, xp, target_device):
-    device = _device(xp, target_device)
+def test_constant_converts_numpy_arrays_scalars_and_lists(backend, xp):
+    device = device_for(backend)
     out = xp.constant(K, dtype="float32", device=device)
     check(out, K.astype(np.float32), backend)
     assert xp.dev(out) == device
@@ -73,13 +68,13 @@ def test_constant_inside_fast_graph_compilers(graph_backend):
         assert len(traces) == 1
 
 
-def test_constant_inside_torch_compile_one_graph(backend, target_device):
+def test_constant_inside_torch_compile_one_graph(backend):
     """A compiler that reports graph breaks (``torch.compile``): constants of two objects and
     repeated calls make one graph and no break."""
     if backend not in GRAPH_COUNTERS:
         pytest.skip(f"{backend}'s compiler has no graph report (counted in the test above)")
     xp = getattr(ivy, backend)
-    device = _device(xp, target_device)
+    device = device_for(backend)
 
     class Model:
         def __init__(self, k):

@@ -208,3 +208,33 @@ def test_where_of_two_python_scalars_is_of_the_default_dtype(backend, x1, x2, dt
     c = np.array([True, False])
     for fn in api(backend, "where"):
         check(fn(native(c, backend), x1, x2), np.where(c, x1, x2).astype(dtype), backend)
+
+
+def _nan_last_key(v: float) -> tuple:
+    """The order ivy sorts floats in: numbers by value, NaN after every number."""
+    return (1, 0.0) if math.isnan(v) else (0, v)
+
+
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_searchsorted_with_nan_in_the_sorted_array(backend, xp, side):
+    """NaN sorts last (the standard leaves its order open; ivy.sort puts it last everywhere)."""
+    x1 = [1.0, math.inf, math.nan, math.nan]
+    x2 = [0.5, 1.0, 2.0, math.inf, math.nan, -math.inf]
+    search = bisect.bisect_left if side == "left" else bisect.bisect_right
+    keys = [_nan_last_key(v) for v in x1]
+    expected = np.array([search(keys, _nan_last_key(v)) for v in x2], np.int64)
+    for dtype in ("float32", "float64"):
+        a = native(np.array(x1, dtype), backend)
+        check(
+            xp.searchsorted(a, native(np.array(x2, dtype), backend), side=side), expected, backend
+        )
+    # through a sorter: x1 given out of order
+    shuffled = [math.nan, 1.0, math.nan, math.inf]
+    sorter = native(np.array([1, 3, 0, 2], np.int64), backend)
+    out = ivy.searchsorted(
+        native(np.array(shuffled, np.float32), backend),
+        native(np.array(x2, np.float32), backend),
+        side=side,
+        sorter=sorter,
+    )
+    check(out, expected, backend)

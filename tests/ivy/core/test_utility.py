@@ -21,6 +21,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import ivy
+from tests.conftest import device_for
 from tests.helpers import (
     HYPOTHESIS,
     api,
@@ -263,17 +264,21 @@ def test_dtype_of_trainable_arrays(backend):
     assert ivy.shape(x) == (2,)
 
 
-def test_dev_is_cpu(backend):
+def test_dev_is_the_target_device(backend):
+    """Arrays made without a device are on the device the test run targets; ``device='cpu'``
+    puts them on the CPU."""
+    target = device_for(backend)
     arrays = [
         native(np.ones((2, 2), np.float32), backend),
         native(np.int64(3), backend),
         _trainable(np.ones(2, np.float32), backend),
         ivy.zeros((2,), f=backend),
-        ivy.zeros((2,), device="cpu", f=backend),
     ]
     for x in arrays:
         for fn in api(backend, "dev"):
-            assert fn(x) == "cpu"
+            assert fn(x) == target
+    for fn in api(backend, "dev"):
+        assert fn(ivy.zeros((2,), device="cpu", f=backend)) == "cpu"
 
 
 GROUPS = [
