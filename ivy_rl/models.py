@@ -200,7 +200,7 @@ class MLPTorso(ivy.Module):
         self.out_size = sizes[-1]
 
     def _forward(self, v, x):
-        return self.mlp._forward(v["mlp"], x)
+        return self.mlp(x, v=v["mlp"])
 
 
 # ----------------------------------------------------------------------------------------------
@@ -251,11 +251,11 @@ class GaussianHead(ivy.Module):
 
     def _forward(self, v, x):
         xp = self._f
-        loc = self.loc._forward(v["loc"], x)
+        loc = self.loc(x, v=v["loc"])
         if self.loc_activation is not None:
             loc = self.loc_activation(loc)
         if self.state_dependent_scale:
-            log_std = self.scale_layer._forward(v["scale_layer"], x)
+            log_std = self.scale_layer(x, v=v["scale_layer"])
         else:
             log_std = v["log_std"]
         log_std = xp.clip(log_std, *self.log_scale_bounds)
@@ -308,7 +308,7 @@ class DeterministicHead(ivy.Module):
         self.action_size = action_size
 
     def _forward(self, v, x):
-        actions = self._f.tanh(self.layer._forward(v["layer"], x))
+        actions = self._f.tanh(self.layer(x, v=v["layer"]))
         return Deterministic(self._f, actions, self.noise_scale)
 
 
@@ -335,7 +335,7 @@ class CategoricalHead(ivy.Module):
         self.num_actions = num_actions
 
     def _forward(self, v, x):
-        return Categorical(self._f, self.logits._forward(v["logits"], x))
+        return Categorical(self._f, self.logits(x, v=v["logits"]))
 
 
 class ValueHead(ivy.Module):
@@ -353,7 +353,7 @@ class ValueHead(ivy.Module):
         self.layer = ivy.Linear(in_size, 1, weight_init=init, **self.build_args)
 
     def _forward(self, v, x):
-        return self.layer._forward(v["layer"], x)[..., 0]
+        return self.layer(x, v=v["layer"])[..., 0]
 
 
 # ----------------------------------------------------------------------------------------------
@@ -378,7 +378,7 @@ class Actor(ivy.Module):
 
     def _forward(self, v, obs, obs_stats=None):
         x = self.encoder(obs, obs_stats)
-        return self.head._forward(v["head"], self.torso._forward(v["torso"], x))
+        return self.head(self.torso(x, v=v["torso"]), v=v["head"])
 
 
 class Critic(ivy.Module):
@@ -400,7 +400,7 @@ class Critic(ivy.Module):
     def normalized(self, v: Nest, obs: Array, obs_stats: Nest = None) -> Array:
         """The head's output (normalised values when return statistics are used)."""
         x = self.encoder(obs, obs_stats)
-        return self.head._forward(v["head"], self.torso._forward(v["torso"], x))
+        return self.head(self.torso(x, v=v["torso"]), v=v["head"])
 
     def _forward(self, v, obs, obs_stats=None, return_stats=None):
         out = self.normalized(v, obs, obs_stats)
@@ -424,8 +424,8 @@ class ActorCritic(ivy.Module):
 
     def _forward(self, v, obs, obs_stats=None, return_stats=None):
         return (
-            self.actor._forward(v["actor"], obs, obs_stats),
-            self.critic._forward(v["critic"], obs, obs_stats, return_stats),
+            self.actor(obs, obs_stats, v=v["actor"]),
+            self.critic(obs, obs_stats, return_stats, v=v["critic"]),
         )
 
 

@@ -145,7 +145,8 @@ class A2C(Agent):
         "normalize_observations",
         "normalize_returns",
     )
-    _REPLAY = {
+    #: the Segment replay's flat settings and its parameters (PPO extends them)
+    REPLAY_SETTINGS = {
         "segment_size": "size",
         "batch_size": "batch_size",
         "discount": "discount",
@@ -155,7 +156,7 @@ class A2C(Agent):
     #: each part: its role, its default class and ``{flat setting: the class's parameter}``
     parts: dict[str, tuple[type, dict[str, str]]] = {
         "model": (ActorCriticModel, {k: k for k in _MODEL}),
-        "replay": (Segment, {**_REPLAY, "critic_iterations": "batch_iterations"}),
+        "replay": (Segment, {**REPLAY_SETTINGS, "critic_iterations": "batch_iterations"}),
         "actor_updater": (
             StochasticPolicyGradient,
             {

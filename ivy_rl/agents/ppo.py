@@ -56,7 +56,7 @@ class PPO(A2C):
     )
     parts = {
         **A2C.parts,
-        "replay": (Segment, {**A2C._REPLAY, "epochs": "batch_iterations"}),
+        "replay": (Segment, {**A2C.REPLAY_SETTINGS, "epochs": "batch_iterations"}),
         "actor_updater": (
             ClippedRatio,
             {
