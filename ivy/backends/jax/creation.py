@@ -116,7 +116,14 @@ def full_like(x, /, fill_value, *, dtype=None, device=None):
     return jnp.full_like(x, fill_value, native_dtype(dtype), device=native_device(device))
 
 
-meshgrid = jnp.meshgrid  # a list, as the Array API (2023.12) says
+if jax.__version_info__ < (0, 11):
+    meshgrid = jnp.meshgrid  # a list, as the Array API (2023.12) says
+else:  # jax 0.11 returns a tuple
+
+    def meshgrid(*arrays, indexing="xy"):
+        return list(jnp.meshgrid(*arrays, indexing=indexing))
+
+
 tril = jnp.tril
 triu = jnp.triu
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import itertools
 
+import jax
 import jax.numpy as jnp
 import numpy as np
 
@@ -53,5 +54,12 @@ def expand_dims(x, /, axis=0):
         raise
 
 
-broadcast_arrays = jnp.broadcast_arrays  # a list, as the Array API (2023.12) says
+if jax.__version_info__ < (0, 11):
+    broadcast_arrays = jnp.broadcast_arrays  # a list, as the Array API (2023.12) says
+else:  # jax 0.11 returns a tuple
+
+    def broadcast_arrays(*arrays):
+        return list(jnp.broadcast_arrays(*arrays))
+
+
 moveaxis = jnp.moveaxis
