@@ -68,7 +68,7 @@ def measure(case: str, backend: str, fusion: str, updates: int) -> dict:
     obs = data.normal(size=(workers, obs_size))
     agent.step(obs)  # compiles the acting function outside the timings
     times, ends = [], data.random((10_000, workers)) < 0.02
-    t = 0
+    t, compiles = 0, []
     while len(times) < updates:
         start = time.perf_counter()
         logs = agent.update(
@@ -76,9 +76,14 @@ def measure(case: str, backend: str, fusion: str, updates: int) -> dict:
         )
         if logs:
             times.append(time.perf_counter() - start)
+            compiles.append(agent.compiles)
         t += 1
         agent.step(obs)
-    return {"first": times[0], "later": float(np.median(times[1:]))}
+    return {
+        "first": times[0],
+        "later": float(np.median(times[1:])),
+        "compiles": f"{compiles[0]} / {compiles[-1]}",
+    }
 
 
 def main() -> None:
@@ -93,8 +98,11 @@ def main() -> None:
     if args.child:
         print(json.dumps(measure(*args.child, args.updates)))
         return
-    print("| case | backend | fusion | first update (compiles) s | later updates ms |")
-    print("|---|---|---|---|---|")
+    print(
+        "| case | backend | fusion | first update (compiles) s | later updates ms | "
+        "agent.compiles after the first / last update |"
+    )
+    print("|---|---|---|---|---|---|")
     for case in args.cases:
         for backend in args.backends:
             for fusion in args.fusions:
@@ -106,11 +114,16 @@ def main() -> None:
                     )
                     result = json.loads(done.stdout.strip().splitlines()[-1])
                     first, later = f"{result['first']:.1f}", f"{1000 * result['later']:.1f}"
+                    compiles = result["compiles"]
                 except subprocess.TimeoutExpired:
-                    first, later = f"> {args.limit:.0f} (stopped)", "–"
+                    first, later, compiles = f"> {args.limit:.0f} (stopped)", "–", "–"
                 except (IndexError, json.JSONDecodeError):
                     first, later = "failed", done.stderr.strip().splitlines()[-1][:80]
-                print(f"| {case} | {backend} | {fusion} | {first} | {later} |", flush=True)
+                    compiles = "–"
+                print(
+                    f"| {case} | {backend} | {fusion} | {first} | {later} | {compiles} |",
+                    flush=True,
+                )
 
 
 if __name__ == "__main__":

@@ -21,7 +21,8 @@ The base contract (what the trainer and every agent rely on):
 
 Subclass hooks: ``supported_action_spaces``, ``learns``, :meth:`_build` (models, optimisers,
 replays, after :meth:`initialize` set ``xp``, ``rng``, ``dtype``, ``device`` and the spaces),
-:meth:`_compile` (every compiled function goes through it, so that it is counted),
+:meth:`_compile` / :meth:`_counted` (every compiled function goes through one of them, so that
+it is counted),
 :meth:`_asarray` / :meth:`_placed` (arrays on the agent's device), :meth:`_arrays` /
 :meth:`_load_arrays` and :meth:`_meta` / :meth:`_load_meta` (checkpoints).
 
@@ -187,8 +188,12 @@ class Agent:
         the agent runs eagerly or the framework has no compiler), counted in :attr:`compiles`."""
         if not self.compiled or not self.xp.capabilities.compilation:
             return fn
-        compiled = ivy.compile_fn(fn, f=self.xp)
-        seen = self._signatures.setdefault(name or getattr(fn, "__name__", repr(fn)), set())
+        return self._counted(ivy.compile_fn(fn, f=self.xp), name or fn.__name__)
+
+    def _counted(self, compiled: Any, name: str) -> Any:
+        """``compiled`` (a compiled callable, e.g. from ``ivy.compiled_scan``) counting the
+        distinct input signatures of its calls in :attr:`compiles` under ``name``."""
+        seen = self._signatures.setdefault(name, set())
         xp = self.xp
 
         def counted(*args: Any) -> Any:

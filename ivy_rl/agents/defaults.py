@@ -52,7 +52,8 @@ DEFAULTS: dict[str, dict[str, dict[str, Any]]] = {
             actor_lr=1e-3,
             critic_lr=1e-3,
             kl_threshold=None,
-            gradient_clip=0.5,
+            actor_gradient_clip=0.5,
+            critic_gradient_clip=0.5,
         ),
         "classic_continuous": dict(
             segment_size=1024,
@@ -63,7 +64,8 @@ DEFAULTS: dict[str, dict[str, dict[str, Any]]] = {
             actor_lr=1e-3,
             critic_lr=1e-3,
             kl_threshold=None,
-            gradient_clip=0.5,
+            actor_gradient_clip=0.5,
+            critic_gradient_clip=0.5,
             normalize_returns=True,
         ),
         "mujoco": dict(
@@ -75,7 +77,8 @@ DEFAULTS: dict[str, dict[str, dict[str, Any]]] = {
             actor_lr=3e-4,
             critic_lr=3e-4,
             kl_threshold=None,
-            gradient_clip=0.5,
+            actor_gradient_clip=0.5,
+            critic_gradient_clip=0.5,
             normalize_returns=True,
         ),
         "ivy_gym": dict(
@@ -87,7 +90,8 @@ DEFAULTS: dict[str, dict[str, dict[str, Any]]] = {
             actor_lr=1e-3,
             critic_lr=1e-3,
             kl_threshold=None,
-            gradient_clip=0.5,
+            actor_gradient_clip=0.5,
+            critic_gradient_clip=0.5,
             normalize_returns=True,
         ),
     },
@@ -200,13 +204,17 @@ SETTINGS: dict[str, Setting] = {
     "critic_lr": Setting("float", 0.0, open_low=True, meaning="critic's Adam learning rate"),
     "entropy_coeff": Setting("float", 0.0, meaning="weight of the entropy bonus"),
     "gradient_clip": Setting("float", 0.0, meaning="global norm of gradients (0: none)"),
+    "actor_gradient_clip": Setting("float", 0.0, meaning="global norm of the actor's gradients"),
+    "critic_gradient_clip": Setting(
+        "float", 0.0, meaning="global norm of the critic's gradients (0: no clipping)"
+    ),
     "normalize_observations": Setting("bool"),
     "normalize_returns": Setting("bool"),
     "normalize_advantages": Setting("bool"),
     "fusion": Setting("str", choices=("auto", "update", "steps")),
     "ratio_clip": Setting("float", 0.0, open_low=True, meaning="PPO's epsilon"),
     "kl_threshold": Setting(
-        "float", 0.0, optional=True, meaning="KL that stops PPO's actor (None: never)"
+        "float", optional=True, meaning="KL that stops PPO's actor (None: never)"
     ),
     "max_kl": Setting("float", 0.0, open_low=True, meaning="TRPO's trust-region radius"),
     "cg_steps": Setting("int", 1, meaning="conjugate-gradient iterations"),
