@@ -139,8 +139,8 @@ def test_fusion_auto_follows_compiled_loops():
 def test_each_agent_trains_a_few_hundred_steps(diff_backend, name):
     agent = ivy_rl.agents.make(name, **dict(SETTINGS[name], update_every=80, batch_iterations=2))
     agent.initialize(OBSERVATIONS, _actions(name), seed=0, f=diff_backend, compile=False)
-    logs = _run(agent, 40, workers=8)  # 320 environment steps of eight workers, 4 updates
-    assert len(logs) == 4
+    logs = _run(agent, 40, workers=8)  # 320 environment steps of eight workers
+    assert len(logs) == 3  # after 88, 168 and 248 steps (a window of 2 steps needs 16)
     for key in ("critic/loss", "critic/iterations"):
         assert all(np.isfinite(row[key]) for row in logs), key
     actions = agent.test_step(np.zeros((4, 3)))
