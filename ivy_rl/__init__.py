@@ -26,21 +26,43 @@ Example:
 
 from ivy_rl import (
     agents,
+    buffers,
+    critics,
     distributions,
     environments,
+    explorations,
     models,
     normalizers,
     replays,
     returns,
     updaters,
 )
-from ivy_rl.agents import A2C, AGENTS, PPO, TRPO, Agent, Constant, Uniform, make
+from ivy_rl.agents import (
+    A2C,
+    AGENTS,
+    D4PG,
+    DDPG,
+    DQN,
+    MPO,
+    PPO,
+    SAC,
+    TD3,
+    TRPO,
+    Agent,
+    BranchingDQN,
+    Constant,
+    Uniform,
+    make,
+)
 from ivy_rl.returns import generalized_advantages, lambda_returns, n_step_returns
 
 __all__ = [
     "agents",
+    "buffers",
+    "critics",
     "distributions",
     "environments",
+    "explorations",
     "models",
     "normalizers",
     "replays",
@@ -50,6 +72,13 @@ __all__ = [
     "A2C",
     "PPO",
     "TRPO",
+    "DDPG",
+    "TD3",
+    "SAC",
+    "MPO",
+    "D4PG",
+    "DQN",
+    "BranchingDQN",
     "Uniform",
     "Constant",
     "AGENTS",
