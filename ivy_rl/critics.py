@@ -60,7 +60,7 @@ class ActionValueCritic(ivy.Module):
 
     def _forward(self, v, obs, actions, obs_stats=None):
         x = self._f.concat([self.encoder(obs, obs_stats), actions], axis=-1)
-        return self.head._forward(v["head"], self.torso._forward(v["torso"], x))
+        return self.head(self.torso(x, v=v["torso"]), v=v["head"])
 
 
 class CriticEnsemble(ivy.Module):
@@ -78,7 +78,7 @@ class CriticEnsemble(ivy.Module):
         self.critics = list(critics)
 
     def _forward(self, v, *args):
-        outs = [c._forward(v["critics"][str(i)], *args) for i, c in enumerate(self.critics)]
+        outs = [c(*args, v=v["critics"][str(i)]) for i, c in enumerate(self.critics)]
         return self._f.stack(outs, axis=0)
 
 
@@ -137,7 +137,7 @@ class CategoricalValueHead(ivy.Module):
         return self._f.asarray(values, dtype=self.dtype, device=self.device)
 
     def _forward(self, v, x):
-        return CategoricalValues(self._f, self.layer._forward(v["layer"], x), self.support())
+        return CategoricalValues(self._f, self.layer(x, v=v["layer"]), self.support())
 
 
 def project_categorical(
@@ -199,10 +199,10 @@ class DiscreteQHead(ivy.Module):
         self.num_actions = int(num_actions)
 
     def _forward(self, v, x):
-        advantages = self.advantages._forward(v["advantages"], x)
+        advantages = self.advantages(x, v=v["advantages"])
         if not self.dueling:
             return advantages
-        value = self.value._forward(v["value"], x)
+        value = self.value(x, v=v["value"])
         return value[..., None] + advantages - self._f.mean(advantages, axis=-1, keepdims=True)
 
 
@@ -240,10 +240,10 @@ class BranchingQHead(ivy.Module):
 
     def _forward(self, v, x):
         xp = self._f
-        outs = [b._forward(v["branches"][str(i)], x) for i, b in enumerate(self.branches)]
+        outs = [b(x, v=v["branches"][str(i)]) for i, b in enumerate(self.branches)]
         if not self.dueling:
             return outs
-        value = self.value._forward(v["value"], x)[..., None]
+        value = self.value(x, v=v["value"])[..., None]
         return [value + a - xp.mean(a, axis=-1, keepdims=True) for a in outs]
 
 
@@ -261,7 +261,7 @@ class QNetwork(ivy.Module):
 
     def _forward(self, v, obs, obs_stats=None):
         x = self.encoder(obs, obs_stats)
-        return self.head._forward(v["head"], self.torso._forward(v["torso"], x))
+        return self.head(self.torso(x, v=v["torso"]), v=v["head"])
 
 
 def soft_update(target_v: Nest, v: Nest, tau: float, *, f: Framework = None) -> Nest:
