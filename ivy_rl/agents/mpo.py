@@ -22,7 +22,6 @@ from typing import Any
 import numpy as np
 
 from ivy_rl.agents.ddpg import DDPG
-from ivy_rl.agents.off_policy import OffPolicyAgent
 from ivy_rl.models import GaussianHead
 
 __all__ = ["MPO"]
@@ -106,7 +105,7 @@ class MPO(DDPG):
         return self.xp.clip(dist.sample(noise), -1.0, 1.0)
 
     def _policy_actions(self, observations):
-        return OffPolicyAgent._policy_actions(self, observations)
+        return self._behaviour_actions(observations)  # it explores itself: no added noise
 
     def _reset_exploration(self, resets):
         pass

@@ -228,7 +228,11 @@ class OffPolicyAgent(Agent):
         return self.rng.uniform(-1.0, 1.0, size=(count, size)).astype(self.np_dtype)
 
     def _policy_actions(self, observations: np.ndarray) -> np.ndarray:
-        """Actions of the behaviour policy with the host's exploration."""
+        """Actions of the behaviour policy with the host's exploration (none here)."""
+        return self._behaviour_actions(observations)
+
+    def _behaviour_actions(self, observations: np.ndarray) -> np.ndarray:
+        """Actions of the compiled acting function, before any noise added on the host."""
         noise = self._act_noise(observations.shape[0])
         args = (self.v, self.obs_stats, self._asarray(observations))
         out = self._act(*args, None if noise is None else self._asarray(noise))

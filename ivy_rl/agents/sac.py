@@ -20,7 +20,6 @@ from typing import Any
 import numpy as np
 
 from ivy_rl.agents.ddpg import DDPG
-from ivy_rl.agents.off_policy import OffPolicyAgent
 from ivy_rl.models import SquashedGaussianHead
 
 __all__ = ["SAC"]
@@ -87,7 +86,7 @@ class SAC(DDPG):
         return self.model.actor(observations, obs_stats, v=v["actor"]).sample(noise)
 
     def _policy_actions(self, observations):
-        return OffPolicyAgent._policy_actions(self, observations)
+        return self._behaviour_actions(observations)  # it explores itself: no added noise
 
     def _reset_exploration(self, resets):
         pass
