@@ -23,7 +23,7 @@ import ivy_mechanics as mech
 from ivy.typing import Array, Framework
 from ivy_robot import _dynamics_model as D
 
-__all__ = ["DynamicsMixin"]
+__all__: list[str] = []  # KinematicTree carries these methods; the mixin is not used alone
 
 
 class DynamicsMixin:
@@ -34,9 +34,11 @@ class DynamicsMixin:
     ``qvel`` and forces *[..., nv]*, ``ctrl`` *[..., nu]*.
 
     Example:
-        >>> tree = KinematicTree.from_mjcf(hopper_xml)
-        >>> qacc = tree.forward_dynamics(qpos, qvel, ctrl)        # mj_forward's qacc
-        >>> qpos, qvel = tree.step(qpos, qvel, ctrl)              # mj_step
+        >>> tree = KinematicTree.from_mjcf(panda_mjcf())          # or Gymnasium's hopper.xml
+        >>> qacc = tree.forward_dynamics(np.zeros(7), np.zeros(7))   # mj_forward's qacc
+        >>> qpos, qvel = tree.step(np.zeros(7), np.zeros(7))         # mj_step
+        >>> tree.timestep, tree.integrator
+        (0.002, 'Euler')
     """
 
     def __new__(cls, *args: Any, **kwargs: Any):
@@ -96,8 +98,8 @@ class DynamicsMixin:
             *[batch_shape, nv, nv]*, symmetric positive definite.
 
         Example:
-            >>> tree.mass_matrix(np.zeros(tree.nq)).shape
-            (6, 6)
+            >>> tree.mass_matrix(np.zeros((5, tree.nq))).shape      # the Panda
+            (5, 7, 7)
         """
         xp = ivy.get_framework(qpos, f=f)
         model = self.dynamics_model
@@ -118,7 +120,8 @@ class DynamicsMixin:
             *[batch_shape, nv]*.
 
         Example:
-            >>> tree.bias_forces(np.zeros(tree.nq), np.zeros(tree.nv))   # gravity alone
+            >>> tree.bias_forces(np.zeros(7), np.zeros(7)).round(2)   # gravity alone
+            array([ 0.  , -3.87,  0.  , -2.89,  0.  ,  1.55,  0.  ])
         """
         xp = ivy.get_framework(qpos, qvel, f=f)
         model = self.dynamics_model
@@ -139,7 +142,8 @@ class DynamicsMixin:
             *[batch_shape, nv]*.
 
         Example:
-            >>> tree.passive_forces(qpos, qvel)          # -damping * qvel - stiffness * ...
+            >>> tree.passive_forces(np.zeros(7), np.ones(7))      # the Panda has no damping
+            array([0., 0., 0., 0., 0., 0., 0.])
         """
         xp = ivy.get_framework(qpos, qvel, f=f)
         model = self.dynamics_model
@@ -164,7 +168,8 @@ class DynamicsMixin:
             *[batch_shape, nv]*.
 
         Example:
-            >>> tree.actuator_forces(qpos, qvel, np.ones(tree.nu))
+            >>> tree.actuator_forces(np.zeros(7), np.zeros(7), np.zeros(tree.nu)).shape
+            (7,)
         """
         xp = ivy.get_framework(qpos, qvel, f=f)
         model = self.dynamics_model
@@ -187,7 +192,9 @@ class DynamicsMixin:
             *[batch_shape, nv]*: the applied plus actuator forces needed.
 
         Example:
-            >>> tree.inverse_dynamics(qpos, qvel, tree.forward_dynamics(qpos, qvel, ctrl))
+            >>> q, v = np.zeros(7), np.zeros(7)
+            >>> tree.inverse_dynamics(q, v, tree.forward_dynamics(q, v)).round(9) + 0.0
+            array([0., 0., 0., 0., 0., 0., 0.])
         """
         xp = ivy.get_framework(qpos, qvel, qacc, f=f)
         model = self.dynamics_model
@@ -224,7 +231,8 @@ class DynamicsMixin:
             *[batch_shape, nv]*.
 
         Example:
-            >>> qacc = tree.forward_dynamics(qpos, qvel, ctrl)
+            >>> tree.forward_dynamics(np.zeros(7), np.zeros(7)).round(1) + 0.0
+            array([  0. ,  17. ,   0. ,  37.2,   0. , -44. ,   0. ])
         """
         xp = ivy.get_framework(qpos, qvel, f=f)
         model = self.dynamics_model
@@ -260,7 +268,9 @@ class DynamicsMixin:
             ``(qpos, qvel)`` after ``timestep`` seconds.
 
         Example:
-            >>> qpos, qvel = tree.step(qpos, qvel, ctrl)
+            >>> qpos, qvel = tree.step(np.zeros((4, 7)), np.zeros((4, 7)))
+            >>> qpos.shape, qvel.shape
+            ((4, 7), (4, 7))
         """
         xp = ivy.get_framework(qpos, qvel, f=f)
         model = self.dynamics_model
@@ -285,7 +295,8 @@ class DynamicsMixin:
             bool *[batch_shape, njnt]* (False for unlimited joints).
 
         Example:
-            >>> tree.active_limits(qpos).any(axis=-1)
+            >>> tree.active_limits(np.zeros(7))           # the Panda's joint 4 is at its limit
+            array([False, False, False,  True, False, False, False])
         """
         xp = ivy.get_framework(qpos, f=f)
         model = self.dynamics_model
@@ -312,7 +323,8 @@ class DynamicsMixin:
             bool *[batch_shape]*.
 
         Example:
-            >>> tree.possible_contacts(qpos)       # a hopper standing on the floor: True
+            >>> tree.possible_contacts(np.zeros(7))   # no geom pair of the Panda may collide
+            np.False_
         """
         xp = ivy.get_framework(qpos, f=f)
         model = self.dynamics_model
@@ -331,7 +343,8 @@ class DynamicsMixin:
             bool *[batch_shape]*.
 
         Example:
-            >>> tree.constraint_free(qpos)
+            >>> tree.constraint_free(np.zeros((2, 7)))
+            array([False, False])
         """
         xp = ivy.get_framework(qpos, f=f)
         limits = self.active_limits(qpos, f=xp)
@@ -402,7 +415,7 @@ def _apply_inertia(xp, inertia, v):
     inertia J about the origin)`` moving with ``v``: ``(J w + h x v, m v + w x h)``."""
     mass, h, rot_inertia = inertia
     return (
-        ivy.matvec(rot_inertia, v[0], f=xp) + xp.cross(h, v[1], axis=-1),
+        xp.matvec(rot_inertia, v[0]) + xp.cross(h, v[1], axis=-1),
         mass * v[1] + xp.cross(v[0], h, axis=-1),
     )
 
@@ -449,13 +462,13 @@ def _kinematics(xp, model: D.DynamicsModel, qpos) -> _Frames:
             continue
         parent_rot, parent_pos = _static_or(xp, model, frames, body.parent, qpos, zero)
         rot = xp.matmul(parent_rot, _const(xp, body.rot, qpos))
-        pos = parent_pos + ivy.matvec(parent_rot, _const(xp, body.pos, qpos), f=xp)
+        pos = parent_pos + xp.matvec(parent_rot, _const(xp, body.pos, qpos))
         for j in body.joints:
             rot, pos = _joint(xp, model, frames, j, qpos, rot, pos, zero)
         for j in body.joints:
             _ball_like_axes(xp, model, frames, j, rot, pos)
         frames.rot[b], frames.pos[b] = rot, pos
-        com = pos + ivy.matvec(rot, _const(xp, body.ipos, qpos), f=xp)
+        com = pos + xp.matvec(rot, _const(xp, body.ipos, qpos))
         irot = xp.matmul(rot, _const(xp, body.irot, qpos))
         scaled = irot * _const(xp, body.inertia, qpos)[..., None, :]
         about_com = xp.matmul(scaled, xp.swapaxes(irot, -1, -2))
@@ -477,7 +490,7 @@ def _static_or(xp, model, frames, b, qpos, zero):
         b = model.bodies[b].parent
     rot, pos = frames.rot[0], frames.pos[0]
     for body in reversed(chain):
-        pos = pos + ivy.matvec(rot, _const(xp, body.pos, qpos), f=xp)
+        pos = pos + xp.matvec(rot, _const(xp, body.pos, qpos))
         rot = xp.matmul(rot, _const(xp, body.rot, qpos))
     return rot, pos
 
@@ -497,8 +510,8 @@ def _joint(xp, model, frames, j, qpos, rot, pos, zero):
                 zero + _const(xp, axis, qpos),
             )
         return rot, pos
-    anchor = pos + ivy.matvec(rot, _const(xp, joint.pos, qpos), f=xp)
-    axis = ivy.matvec(rot, _const(xp, joint.axis, qpos), f=xp)
+    anchor = pos + xp.matvec(rot, _const(xp, joint.pos, qpos))
+    axis = xp.matvec(rot, _const(xp, joint.axis, qpos))
     if joint.kind == D.SLIDE:
         frames.dofs[dof] = (xp.zeros_like(axis), axis)
         shift = qpos[..., adr] - joint.ref if joint.ref != 0.0 else qpos[..., adr]
@@ -517,7 +530,7 @@ def _joint(xp, model, frames, j, qpos, rot, pos, zero):
         frames.dofs[(dof, "anchor")] = anchor
         local = _quaternion_rot(xp, qpos[..., adr : adr + 4])
     rot = xp.matmul(rot, local)
-    return rot, anchor - ivy.matvec(rot, _const(xp, joint.pos, qpos), f=xp)
+    return rot, anchor - xp.matvec(rot, _const(xp, joint.pos, qpos))
 
 
 def _ball_like_axes(xp, model, frames, j, rot, pos):
@@ -736,12 +749,11 @@ def _fluid_wrenches(xp, model, frames, motion):
         irot, com = frames.irot[b], frames.com[b]
         w, v_origin = velocity[b]
         v_com = v_origin + xp.cross(w, com, axis=-1)
-        local_w = ivy.matvec(xp.swapaxes(irot, -1, -2), w, f=xp)
-        local_v = ivy.matvec(xp.swapaxes(irot, -1, -2), v_com, f=xp)
+        local_w = xp.matvec(xp.swapaxes(irot, -1, -2), w)
+        local_v = xp.matvec(xp.swapaxes(irot, -1, -2), v_com)
         if any(model.wind):
-            local_v = local_v - ivy.matvec(
-                xp.swapaxes(irot, -1, -2), _const(xp, model.wind, com), f=xp
-            )
+            wind = _const(xp, model.wind, com)
+            local_v = local_v - xp.matvec(xp.swapaxes(irot, -1, -2), wind)
         torque = [xp.zeros_like(local_w[..., 0])] * 3
         force = [xp.zeros_like(local_w[..., 0])] * 3
         if model.viscosity > 0:
@@ -761,8 +773,8 @@ def _fluid_wrenches(xp, model, frames, motion):
                 vk, wk = local_v[..., k], local_w[..., k]
                 force[k] = force[k] - 0.5 * rho * a * c * xp.abs(vk) * vk
                 torque[k] = torque[k] - rho * box[k] * (a**4 + c**4) * xp.abs(wk) * wk / 64.0
-        world_torque = ivy.matvec(irot, xp.stack(torque, axis=-1), f=xp)
-        world_force = ivy.matvec(irot, xp.stack(force, axis=-1), f=xp)
+        world_torque = xp.matvec(irot, xp.stack(torque, axis=-1))
+        world_force = xp.matvec(irot, xp.stack(force, axis=-1))
         wrenches[b] = (world_torque + xp.cross(com, world_force, axis=-1), world_force)
     return wrenches
 
@@ -844,14 +856,13 @@ def _integrate_positions(xp, model, qpos, qvel, h):
 def _quaternion_integrate(xp, quat, omega, h):
     """``normalise(quat) * exp(h omega / 2)``, ``omega`` in the body frame (``[w, x, y, z]``)."""
     half_sq = xp.sum(omega * omega, axis=-1) * (0.25 * h * h)
-    cos, sinc = ivy.taylor_switch(
+    cos, sinc = xp.taylor_switch(
         half_sq,
         ((1.0, -1 / 2, 1 / 24, -1 / 720), (1.0, -1 / 6, 1 / 120, -1 / 5040)),
         lambda x: (xp.cos(x), xp.sin(x) / x),
-        f=xp,
     )
     vector = omega * (0.5 * h * sinc)[..., None]
-    quat = quat / ivy.safe_norm(quat, axis=-1, keepdims=True, f=xp)
+    quat = quat / xp.safe_norm(quat, axis=-1, keepdims=True)
     w1, v1 = quat[..., :1], quat[..., 1:]
     w2 = cos[..., None]
     w = w1 * w2 - xp.sum(v1 * vector, axis=-1, keepdims=True)
@@ -925,7 +936,7 @@ def _possible_contacts(xp, model, frames, qpos):
                 brot, bpos = frames.rot[body], frames.pos[body]
             else:
                 brot, bpos = _static_or(xp, model, frames, body, qpos, None)
-            centres[g] = bpos + ivy.matvec(brot, _const(xp, pos, qpos), f=xp)
+            centres[g] = bpos + xp.matvec(brot, _const(xp, pos, qpos))
             normals[g] = xp.matmul(brot, _const(xp, rot, qpos))[..., :, 2]
         return centres[g], normals[g]
 

@@ -132,7 +132,7 @@ def test_every_gymnasium_model_matches_mujoco_numpy(name, oracles):
     _compare(tree, model, states, ref, "numpy")
 
 
-@pytest.mark.parametrize("name", ["inverted_double_pendulum"])
+@pytest.mark.parametrize("name", ["inverted_pendulum"])
 def test_dynamics_match_mujoco_on_every_backend(name, backend, oracles):
     model, tree, states, ref = oracles(name)
     _compare(tree, model, states, ref, backend)
@@ -167,7 +167,7 @@ def _inside_ctrl(model, ctrl):
 
 
 def test_forward_dynamics_gradients_match_finite_differences(diff_backend, oracles):
-    model, tree, states, _ = oracles("inverted_double_pendulum")
+    model, tree, states, _ = oracles("inverted_pendulum")
     q, v, u = states["qpos"][0], states["qvel"][0], _inside_ctrl(model, states["ctrl"][0])
     check_gradients(diff_backend, tree.forward_dynamics, [q, v, u], rtol=1e-6)
 
@@ -191,7 +191,7 @@ def test_compiled_equals_eager(graph_backend, oracles):
 
 
 def test_batch_shape_and_dtype(backend, oracles):
-    model, tree, states, ref = oracles("inverted_double_pendulum")
+    model, tree, states, ref = oracles("inverted_pendulum")
     q = native(states["qpos"].reshape(1, BATCH, -1).astype(np.float32), backend)
     v = native(states["qvel"].reshape(1, BATCH, -1).astype(np.float32), backend)
     qacc = tree.forward_dynamics(q, v, native(states["ctrl"].reshape(1, BATCH, -1), backend))
