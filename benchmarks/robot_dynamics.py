@@ -49,18 +49,26 @@ def hopper_path() -> str:
 
 
 def random_states(model, batch, rng):
-    """Lifted hopper states inside the joint ranges, random velocities and controls."""
-    q = np.tile(model.qpos0, (batch, 1))
-    q[:, 1] += 2.0  # rootz: above the floor
-    for j in range(model.njnt):
-        if model.jnt_limited[j]:
-            lo, hi = model.jnt_range[j]
-            q[:, model.jnt_qposadr[j]] = rng.uniform(
-                lo + 0.2 * (hi - lo), hi - 0.2 * (hi - lo), batch
-            )
+    """Lifted hopper states inside the joint ranges, random velocities and controls, kept where
+    MuJoCo finds no contact (the folded leg can touch the torso) and no constraint."""
+    import mujoco
+
+    data = mujoco.MjData(model)
+    kept = []
+    while len(kept) < batch:
+        q = model.qpos0.copy()
+        for j in range(model.njnt):
+            if model.jnt_limited[j]:
+                lo, hi = model.jnt_range[j]
+                q[model.jnt_qposadr[j]] = rng.uniform(lo + 0.2 * (hi - lo), hi - 0.2 * (hi - lo))
+        q[1] = 2.0  # rootz: above the floor
+        data.qpos[:] = q
+        mujoco.mj_forward(model, data)
+        if data.ncon == 0 and data.nefc == 0:
+            kept.append(q)
     v = rng.normal(scale=0.5, size=(batch, model.nv))
     u = rng.uniform(-1.0, 1.0, size=(batch, model.nu))
-    return q, v, u
+    return np.stack(kept), v, u
 
 
 def mujoco_reference(model, q, v, u):
@@ -71,7 +79,7 @@ def mujoco_reference(model, q, v, u):
     for qi, vi, ui in zip(q, v, u):
         data.qpos[:], data.qvel[:], data.ctrl[:] = qi, vi, ui
         mujoco.mj_forward(model, data)
-        assert data.ncon == 0
+        assert data.ncon == 0 and data.nefc == 0, "a state with contacts or limits"
         qacc.append(data.qacc.copy())
         mujoco.mj_step(model, data)
         nxt.append(np.concatenate([data.qpos, data.qvel]))
