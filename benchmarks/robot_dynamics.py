@@ -106,7 +106,7 @@ def mujoco_runs(model, q, v, u):
         return data.qacc
 
     def step_rollout():
-        return rollout.rollout(model, data, states, control, nstep=1, state=out, skip_checks=True)
+        return rollout.rollout(model, data, states, control, nstep=1, state=out)
 
     return {
         "MuJoCo mj_forward (Python loop)": forward_loop,
