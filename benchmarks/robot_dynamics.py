@@ -72,17 +72,23 @@ def random_states(model, batch, rng):
 
 
 def mujoco_reference(model, q, v, u):
+    """MuJoCo's qacc and next state; the step with contacts and limits disabled, since a step
+    from a constraint-free state may reach one (the Hopper's foot can touch its torso)."""
     import mujoco
 
-    data = mujoco.MjData(model)
+    smooth = mujoco.MjModel.from_xml_path(hopper_path())
+    for bit in (mujoco.mjtDisableBit.mjDSBL_CONTACT, mujoco.mjtDisableBit.mjDSBL_LIMIT):
+        smooth.opt.disableflags |= int(bit)
+    data, smooth_data = mujoco.MjData(model), mujoco.MjData(smooth)
     qacc, nxt = [], []
     for qi, vi, ui in zip(q, v, u):
         data.qpos[:], data.qvel[:], data.ctrl[:] = qi, vi, ui
         mujoco.mj_forward(model, data)
         assert data.ncon == 0 and data.nefc == 0, "a state with contacts or limits"
         qacc.append(data.qacc.copy())
-        mujoco.mj_step(model, data)
-        nxt.append(np.concatenate([data.qpos, data.qvel]))
+        smooth_data.qpos[:], smooth_data.qvel[:], smooth_data.ctrl[:] = qi, vi, ui
+        mujoco.mj_step(smooth, smooth_data)
+        nxt.append(np.concatenate([smooth_data.qpos, smooth_data.qvel]))
     return np.stack(qacc), np.stack(nxt)
 
 
