@@ -34,6 +34,7 @@ import ivy_mechanics as mech
 from ivy.typing import Array, Framework
 from ivy_robot import _arrays as A
 from ivy_robot import _entries as E
+from ivy_robot.dynamics import DynamicsMixin
 from ivy_robot.mjcf import SUPPORTED_JOINT_TYPES, load_mjcf, mujoco_quaternion_to_rot_mat
 
 __all__ = ["KinematicTree", "BodySpheres"]
@@ -101,7 +102,7 @@ class _BodyPlan(NamedTuple):
     # are applied one by one)
 
 
-class KinematicTree:
+class KinematicTree(DynamicsMixin):
     """A MuJoCo kinematic tree as float64 constants; forward kinematics and Jacobians on any
     backend.
 
