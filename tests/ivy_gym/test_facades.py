@@ -48,8 +48,8 @@ def test_make_without_importing_and_no_framework_imported():
 
 
 @pytest.mark.parametrize("dtype", ["float32", "float64"])
-def test_reset_seed_reproduces_observations(dtype):
-    env = gymnasium.make("ivy_gym/Swimmer-v0", framework="torch", dtype=dtype)
+def test_reset_seed_reproduces_observations(dtype, diff_backend):
+    env = gymnasium.make("ivy_gym/Swimmer-v0", framework=diff_backend, dtype=dtype)
     first = [env.reset(seed=5)[0] for _ in range(2)]
     other = env.reset(seed=6)[0]
     np.testing.assert_array_equal(first[0], first[1])
@@ -177,8 +177,8 @@ def test_vector_env_steps_every_copy_in_one_call():
     assert calls == [(64, 2)] * 5
 
 
-def test_vector_env_reset_seed_and_errors():
-    envs = _vec("Reacher-v0", 4, backend="torch", dtype="float64")
+def test_vector_env_reset_seed_and_errors(diff_backend):
+    envs = _vec("Reacher-v0", 4, backend=diff_backend, dtype="float64")
     a = envs.reset(seed=3)[0]
     b = envs.reset(seed=3)[0]
     np.testing.assert_array_equal(a, b)

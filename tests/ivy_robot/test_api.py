@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import doctest
 import importlib
+import importlib.util
 import inspect
 import pathlib
 import pkgutil
@@ -73,6 +74,11 @@ def test_signature_and_docstring(fn):
 @pytest.mark.parametrize("module", MODULES)
 def test_docstring_examples(module):
     import ivy_mechanics as mech
+
+    source = inspect.getsource(importlib.import_module(module))
+    for framework in ("torch", "jax", "tensorflow"):
+        if f">>> import {framework}" in source and importlib.util.find_spec(framework) is None:
+            pytest.skip(f"{module}'s examples use {framework}, which is not installed")
 
     globs = {
         "np": np,
