@@ -31,7 +31,7 @@ from ivy_rl import (
     returns,
     updaters,
 )
-from ivy_rl.agents import A2C, AGENTS, PPO, TRPO, Agent, Constant, Uniform
+from ivy_rl.agents import A2C, AGENTS, APG, PPO, SHAC, TRPO, Agent, Constant, Uniform
 from ivy_rl.returns import generalized_advantages, lambda_returns, n_step_returns
 
 __all__ = [
@@ -47,6 +47,8 @@ __all__ = [
     "A2C",
     "PPO",
     "TRPO",
+    "APG",
+    "SHAC",
     "Uniform",
     "Constant",
     "AGENTS",

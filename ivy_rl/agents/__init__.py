@@ -12,9 +12,11 @@ from typing import Any
 
 from ivy_rl.agents.a2c import A2C
 from ivy_rl.agents.agent import Agent
+from ivy_rl.agents.apg import APG
 from ivy_rl.agents.baselines import Constant, Uniform
 from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.agents.ppo import PPO
+from ivy_rl.agents.shac import SHAC
 from ivy_rl.agents.trpo import TRPO
 
 __all__ = [
@@ -24,6 +26,8 @@ __all__ = [
     "A2C",
     "PPO",
     "TRPO",
+    "APG",
+    "SHAC",
     "AGENTS",
     "make",
     "compiled_scan_unrolls",
@@ -34,6 +38,8 @@ AGENTS: dict[str, type[Agent]] = {
     "A2C": A2C,
     "PPO": PPO,
     "TRPO": TRPO,
+    "APG": APG,
+    "SHAC": SHAC,
     "Uniform": Uniform,
     "Constant": Constant,
 }

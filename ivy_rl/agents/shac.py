@@ -1,0 +1,240 @@
+"""SHAC: short-horizon actor-critic (Xu et al., 2022), learning through ivy_gym's gradients.
+
+A batch of ``batch_size`` simulated environments is carried from update to update. Each update
+runs the deterministic policy for ``horizon`` (K) steps from their current states through the
+ivy_gym core, and
+
+1. the actor takes one Adam step on the negative mean of ``sum_t γ^t r_t + γ^K V(s_K)``
+   (divided by K), differentiated through the K steps of dynamics and through the critic's
+   value of the last state (the critic's weights are constants here);
+2. the critic regresses on TD(λ) targets of the same rollout (values of the target critic,
+   bootstrapped at the end of the window, not after terminations), in ``critic_iterations``
+   passes of ``critic_batches`` mini-batches;
+3. the target critic moves towards the critic by ``target_update``.
+
+Environments whose episode reached its time limit (or terminated) restart from fresh initial
+states, drawn by the agent's numpy generator. The rollouts are truncated to K steps, so the
+gradient never runs through a long, chaotic horizon; the critic stands for what follows.
+
+Example:
+    >>> agent = SHAC(horizon=32, batch_size=64)
+    >>> agent.bind_environment("ivy_gym/Pendulum-v1", {})
+    >>> agent.initialize(obs_space, act_space, seed=0, f="jax")
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+import ivy
+from ivy_rl import updaters
+from ivy_rl.agents.through_gym import DifferentiableAgent
+from ivy_rl.models import Critic, ObservationEncoder, ValueHead, orthogonal_init, polyak_update
+from ivy_rl.returns import _lambda_returns
+
+__all__ = ["SHAC"]
+
+
+class SHAC(DifferentiableAgent):
+    """Short-horizon actor-critic through an ivy_gym environment.
+
+    Args:
+        horizon: K, steps per rollout (the gradient's horizon).
+        batch_size: simulated environments carried across updates.
+        critic_hidden_sizes: the critic's MLP (default: ``hidden_sizes``).
+        critic_lr: the critic's Adam learning rate.
+        trace_decay: λ of the TD(λ) targets.
+        critic_iterations: passes over a rollout's transitions per update.
+        critic_batches: mini-batches per pass.
+        target_update: step of the target critic towards the critic per update (1: copy).
+        Others: as for :class:`~ivy_rl.agents.APG`.
+
+    Example:
+        >>> SHAC(horizon=32, critic_iterations=16)
+    """
+
+    _defaults: dict[str, Any] = dict(
+        horizon=32,
+        batch_size=64,
+        update_every=16,
+        actor_lr=2e-3,
+        critic_hidden_sizes=None,
+        critic_lr=2e-3,
+        trace_decay=0.95,
+        critic_iterations=8,
+        critic_batches=4,
+        target_update=0.8,
+    )
+
+    def _build_learner(self) -> None:
+        c, xp = self.config, self.xp
+        sizes = tuple(c["critic_hidden_sizes"] or c["hidden_sizes"])
+        torso = self._torso(sizes)
+        head = ValueHead(
+            torso.out_size, weight_init=orthogonal_init(self.rng, 1.0), **self._build_args()
+        )
+        self.critic = Critic(ObservationEncoder(self.core.observation_dim, f=xp), torso, head)
+        self.critic_optimizer = ivy.Adam(c["critic_lr"], f=xp)
+        critic_v = self._placed(self.critic.v)
+        self.v = {
+            "actor": self._placed(self.actor.v),
+            "critic": critic_v,
+            "target": self._placed(self.critic.v),
+        }
+        self.optimizer_states = {
+            "actor": self.actor_optimizer.init(self.v["actor"]),
+            "critic": self.critic_optimizer.init(self.v["critic"]),
+        }
+        size = c["batch_size"] * c["horizon"]
+        if c["critic_batches"] < 1 or size % c["critic_batches"]:
+            raise ValueError(
+                f"SHAC: critic_batches must divide batch_size * horizon = {size}, got "
+                f"{c['critic_batches']!r}"
+            )
+        self._states = self._initial_states(c["batch_size"])
+        self._times = np.zeros(c["batch_size"], np.int64)
+
+    # ------------------------------------------------------------------------------------------
+    # Pure functions
+    # ------------------------------------------------------------------------------------------
+
+    def _update_fn(self, v, states, start, orders):
+        """The whole update from the states ``start`` with the critic's mini-batches
+        ``orders``: ``(v, states, final_states, restart, logs)``."""
+        actor_v, actor_state, data, logs = self._run_through_rollout(
+            self._actor_step, v["actor"], states["actor"], v["critic"], start
+        )
+        batch = self._critic_batch(v["target"], start, data)
+        (critic_v, critic_state), ys = self._run_loop(
+            "critic_step", self._critic_step, (v["critic"], states["critic"]), orders, batch
+        )
+        logs["critic/loss"] = self.xp.mean(ys["loss"])
+        target_v = polyak_update(v["target"], critic_v, self.config["target_update"], f=self.xp)
+        new_v = {"actor": actor_v, "critic": critic_v, "target": target_v}
+        new_states = {"actor": actor_state, "critic": critic_state}
+        return new_v, new_states, data["final_state"], data["ended"], logs
+
+    def _actor_step(self, actor_v, actor_state, critic_v, start):
+        xp = self.xp
+        horizon = self.config["horizon"]
+        gamma = self.config["discount"]
+
+        def loss_fn(w):
+            traj = self._rollout(w, start, horizon)
+            rewards = traj.rewards
+            discounted = xp.sum(rewards * self._discounts(horizon, rewards.dtype), axis=0)
+            last = traj.observations[horizon - 1]
+            alive = xp.logical_and(traj.valid[horizon - 1], xp.logical_not(traj.terminated[-1]))
+            values = self.critic(last, None, None, v=critic_v)
+            bootstrap = xp.where(alive, values, xp.zeros_like(values))
+            loss = -xp.mean(discounted + gamma**horizon * bootstrap) / horizon
+            ended = xp.logical_not(alive)
+            data = {
+                "observations": xp.stop_gradient(traj.observations),
+                "rewards": xp.stop_gradient(rewards),
+                "terminated": xp.logical_and(traj.terminated, traj.valid),
+                "valid": traj.valid,
+                "final_state": xp.stop_gradient(traj.final_state),
+                "ended": ended,
+                "rollout_reward": xp.stop_gradient(xp.mean(rewards)),
+            }
+            return loss, data
+
+        actor_v, actor_state, infos = self._actor_minimize(loss_fn, actor_v, actor_state)
+        logs = {
+            "actor/loss": infos.pop("loss"),
+            "actor/gradient_norm": infos.pop("gradient_norm"),
+            "actor/rollout_reward": infos.pop("rollout_reward"),
+        }
+        return actor_v, actor_state, infos, logs
+
+    def _critic_batch(self, target_v, start, data):
+        """The critic's regression data, flattened to ``[horizon * batch]``: the observation
+        before each step, its TD(λ) target and its weight (0 after a termination)."""
+        xp, c = self.xp, self.config
+        observations = data["observations"]
+        steps, batch = tuple(data["rewards"].shape)
+        first = xp.expand_dims(self.core.observe(start, f=xp), axis=0)
+        before = xp.concat([first, observations[: steps - 1]], axis=0)
+        next_values = xp.stop_gradient(self.critic(observations, None, None, v=target_v))
+        no_resets = xp.zeros_like(data["rewards"])
+        terminations = xp.astype(data["terminated"], data["rewards"].dtype)
+        targets = _lambda_returns(
+            xp,
+            data["rewards"],
+            next_values,
+            no_resets,
+            terminations,
+            c["discount"],
+            c["trace_decay"],
+        )
+        size = steps * batch
+        return {
+            "observations": xp.reshape(before, (size, -1)),
+            "targets": xp.stop_gradient(xp.reshape(targets, (size,))),
+            "weights": xp.reshape(xp.astype(data["valid"], targets.dtype), (size,)),
+        }
+
+    def _critic_step(self, carry, indices, batch):
+        xp = self.xp
+        critic_v, critic_state = carry
+        part = {k: xp.take(a, indices, axis=0) for k, a in batch.items()}
+
+        def loss_fn(w):
+            values = self.critic(part["observations"], None, None, v=w)
+            weights = part["weights"]
+            return updaters.value_loss(xp, values * weights, part["targets"] * weights)
+
+        loss, grads = xp.execute_with_gradients(loss_fn, critic_v)[:2]
+        critic_v, critic_state = self.critic_optimizer.step(critic_v, grads, critic_state)
+        return (critic_v, critic_state), {"loss": loss}
+
+    # ------------------------------------------------------------------------------------------
+    # Learning
+    # ------------------------------------------------------------------------------------------
+
+    def _orders(self) -> np.ndarray:
+        """``[critic_iterations * critic_batches, size]`` indices of the critic's mini-batches."""
+        c = self.config
+        total = c["batch_size"] * c["horizon"]
+        rows = [
+            self.rng.permutation(total).reshape(c["critic_batches"], -1)
+            for _ in range(c["critic_iterations"])
+        ]
+        return np.concatenate(rows).astype(np.int32)
+
+    def _learn(self) -> dict[str, float]:
+        c, xp = self.config, self.xp
+        v, states, final, ended, logs = self._update(
+            self.v,
+            self.optimizer_states,
+            self._asarray(self._states),
+            self._asarray(self._orders()),
+        )
+        self.v, self.optimizer_states = v, states
+        self.simulated_steps += c["batch_size"] * c["horizon"]
+        self._times += c["horizon"]
+        restart = (self._times >= self.episode_steps) | np.asarray(xp.to_numpy(ended), bool)
+        self._states = np.asarray(xp.to_numpy(final), self.np_dtype)
+        if restart.any():
+            self._states[restart] = self._initial_states(int(restart.sum()))
+            self._times[restart] = 0
+        out = self._logs(logs)
+        out["critic/iterations"] = float(c["critic_iterations"] * c["critic_batches"])
+        return out
+
+    # ------------------------------------------------------------------------------------------
+    # Checkpoints: the simulated environments too
+    # ------------------------------------------------------------------------------------------
+
+    def _arrays(self) -> dict[str, Any]:
+        arrays = super()._arrays()
+        arrays["simulation"] = {"states": self._states, "times": self._times}
+        return arrays
+
+    def _load_arrays(self, arrays: dict[str, Any]) -> None:
+        super()._load_arrays(arrays)
+        self._states = np.asarray(arrays["simulation"]["states"], self.np_dtype)
+        self._times = np.asarray(arrays["simulation"]["times"], np.int64)
