@@ -35,61 +35,13 @@ import time
 
 import numpy as np
 
-CARTPOLE = {  # the RL zoo's PPO hyperparameters for CartPole (constant learning rate and clip)
-    "PPO": dict(
-        segment_size=32,
-        batch_size=256,
-        epochs=20,
-        discount=0.98,
-        trace_decay=0.8,
-        actor_lr=1e-3,
-        critic_lr=1e-3,
-        kl_threshold=None,
-        gradient_clip=0.5,
-    ),
-    "A2C": dict(
-        segment_size=16,
-        actor_lr=3e-3,
-        critic_lr=1e-3,
-        critic_iterations=5,
-        discount=0.99,
-        trace_decay=0.95,
-    ),
-    "TRPO": dict(
-        segment_size=128,
-        max_kl=0.03,
-        critic_iterations=10,
-        batch_size=256,
-        discount=0.99,
-        trace_decay=0.95,
-    ),
-}
-PENDULUM = dict(  # the RL zoo's PPO settings for Pendulum (without gSDE)
-    segment_size=1024,
-    batch_size=64,
-    epochs=10,
-    discount=0.9,
-    trace_decay=0.95,
-    actor_lr=1e-3,
-    critic_lr=1e-3,
-    kl_threshold=None,
-    gradient_clip=0.5,
-    hidden_sizes=(64, 64),
-    normalize_returns=True,
-)
-HOPPER = dict(
-    segment_size=512,
-    batch_size=64,
-    epochs=10,
-    discount=0.99,
-    trace_decay=0.95,
-    actor_lr=3e-4,
-    critic_lr=3e-4,
-    kl_threshold=None,
-    gradient_clip=0.5,
-    hidden_sizes=(64, 64),
-    normalize_returns=True,
-)
+# Every run uses the command line's defaults: ivy_rl.agents.DEFAULTS, the row of the agent and the
+# environment's task family (the RL zoo's settings: for CartPole, PPO with a segment of 32 steps
+# x 8 workers, 20 epochs of one mini-batch of 256, discount 0.98, lambda 0.8, learning rates 1e-3;
+# Pendulum and Hopper: the classic-control-continuous and MuJoCo rows).
+CARTPOLE = {"PPO": {}, "A2C": {}, "TRPO": {}}
+PENDULUM: dict = {}
+HOPPER: dict = {}
 FIXED_EPISODES = range(1000, 1010)
 
 
@@ -126,7 +78,7 @@ def run_ivy(agent, env_id, framework, steps, workers, kwargs, root, seed, test_e
     )
     start = time.perf_counter()
     rows = trainer.run(
-        make(agent, **kwargs),
+        make(agent, environment=env_id, **kwargs),
         env_id,
         workers=workers,
         seed=seed,
@@ -203,7 +155,7 @@ def sb3_settings(config, workers):
         learning_rate=config["actor_lr"],
         clip_range=0.2,
         ent_coef=0.0,
-        max_grad_norm=config["gradient_clip"],
+        max_grad_norm=config["actor_gradient_clip"],
     )
 
 
@@ -278,9 +230,12 @@ def main():
                     )
                 )
             if have_sb3 and agent == "PPO":
-                normalize = config.get("normalize_observations", True)
+                from ivy_rl.agents import make
+
+                used = make(agent, environment=env_id, **config).config
+                normalize = used["normalize_observations"]
                 record(
-                    run_sb3(env_id, steps, workers, sb3_settings(config, workers), seed, normalize)
+                    run_sb3(env_id, steps, workers, sb3_settings(used, workers), seed, normalize)
                 )
     text = table(results)
     print(text)

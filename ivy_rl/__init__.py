@@ -14,9 +14,12 @@ commands ``python -m ivy_rl.train``, ``python -m ivy_rl.plot`` and ``python -m i
 
 ``import ivy_rl`` imports no deep-learning framework.
 
+Agents are composed of parts (a model, a replay, an actor updater and a critic updater), and
+:func:`ivy_rl.agents.make` builds them with the defaults of a task family.
+
 Example:
     >>> import ivy_rl
-    >>> agent = ivy_rl.agents.PPO(segment_size=32, batch_size=256, epochs=20)
+    >>> agent = ivy_rl.agents.make("PPO", environment="CartPole-v1")
     >>> trainer = ivy_rl.Trainer(steps=100_000)
     >>> trainer.run(agent, "CartPole-v1", workers=8, seed=0, f="torch", out="runs/ppo")
 """
@@ -31,7 +34,7 @@ from ivy_rl import (
     returns,
     updaters,
 )
-from ivy_rl.agents import A2C, AGENTS, APG, PPO, SHAC, TRPO, Agent, Constant, Uniform
+from ivy_rl.agents import A2C, AGENTS, APG, PPO, SHAC, TRPO, Agent, Constant, Uniform, make
 from ivy_rl.returns import generalized_advantages, lambda_returns, n_step_returns
 
 __all__ = [
@@ -52,7 +55,18 @@ __all__ = [
     "Uniform",
     "Constant",
     "AGENTS",
+    "make",
+    "Trainer",
     "lambda_returns",
     "generalized_advantages",
     "n_step_returns",
 ]
+
+
+def __getattr__(name: str):
+    # the trainer (environments, workers) is imported on first use
+    if name == "Trainer":
+        from ivy_rl.trainer import Trainer
+
+        return Trainer
+    raise AttributeError(f"module 'ivy_rl' has no attribute {name!r}")

@@ -48,6 +48,7 @@ __all__ = [
     "ActorCriticWithTargets",
     "polyak_update",
     "actor_critic",
+    "ActorCriticModel",
     "space_kind",
     "check_observation_space",
 ]
@@ -607,3 +608,78 @@ def actor_critic(
     )
     cls = ActorCriticWithTargets if with_targets else ActorCritic
     return cls(actor, critic)
+
+
+class ActorCriticModel:
+    """The model part of the on-policy agents (A2C, PPO, TRPO): what actor-critic to build
+    (:func:`actor_critic`) and which normalisers to keep, once the spaces are known.
+
+    After :meth:`initialize`, ``actor``, ``critic`` and ``v`` (the initial variables
+    ``{'actor', 'critic'}``) are those of the built :class:`ActorCritic`.
+
+    Args:
+        hidden_sizes: hidden sizes of the actor's torso.
+        critic_hidden_sizes: of the critic's torso (None: ``hidden_sizes``).
+        activation: activation of the torsos.
+        head: policy head (``'gaussian'``, ``'squashed_gaussian'`` for Box actions,
+            ``'categorical'`` for Discrete); None: by action space.
+        log_std_init: initial log standard deviation of Gaussian heads.
+        normalize_observations: normalise observations by their running mean and std.
+        normalize_returns: the critic predicts returns normalised by their running mean and std.
+
+    Example:
+        >>> model = ActorCriticModel(hidden_sizes=(64, 64), activation="tanh")
+        >>> agent = ivy_rl.PPO(model=model)
+    """
+
+    def __init__(
+        self,
+        hidden_sizes: Sequence[int] = (64, 64),
+        critic_hidden_sizes: Sequence[int] | None = None,
+        activation: str = "tanh",
+        head: str | None = None,
+        log_std_init: float = 0.0,
+        normalize_observations: bool = True,
+        normalize_returns: bool = False,
+    ) -> None:
+        if head == "deterministic":
+            raise ValueError(
+                "ActorCriticModel: the on-policy agents need a stochastic policy head "
+                "(log-probabilities); choose head='gaussian' or 'squashed_gaussian'"
+            )
+        self.hidden_sizes = tuple(hidden_sizes)
+        self.critic_hidden_sizes = (
+            None if critic_hidden_sizes is None else tuple(critic_hidden_sizes)
+        )
+        self.activation = activation
+        self.head = head
+        self.log_std_init = log_std_init
+        self.normalize_observations = normalize_observations
+        self.normalize_returns = normalize_returns
+
+    def initialize(
+        self,
+        observation_space: Any,
+        action_space: Any,
+        *,
+        rng: np.random.Generator,
+        dtype: Any = None,
+        device: Any = None,
+        f: Framework = None,
+    ) -> ActorCriticModel:
+        """Build the actor-critic for the spaces, its weights drawn from ``rng``."""
+        self.module = actor_critic(
+            observation_space,
+            action_space,
+            rng=rng,
+            actor_sizes=self.hidden_sizes,
+            critic_sizes=self.critic_hidden_sizes or self.hidden_sizes,
+            activation=self.activation,
+            head=self.head,
+            log_std_init=self.log_std_init,
+            dtype=dtype,
+            device=device,
+            f=f,
+        )
+        self.actor, self.critic, self.v = self.module.actor, self.module.critic, self.module.v
+        return self

@@ -1,10 +1,12 @@
-"""A segment replay for on-policy agents: the last ``size`` steps of every worker, and the
-orders of the mini-batches drawn from them.
+"""A segment replay for on-policy agents: the last ``size`` steps of every worker, how their
+returns are computed, and the orders of the mini-batches drawn from them.
 
-Buffers are numpy arrays ``[size, workers, ...]`` on the host. The agents compute λ-returns and
-advantages from them inside their compiled update (:mod:`ivy_rl.returns`, with partial-episode
-bootstrapping); the mini-batch orders come from the agent's numpy generator, so every backend
-sees the same mini-batches.
+Buffers are numpy arrays ``[size, workers, ...]`` on the host (a stored value may also be a
+dict of arrays, e.g. the parameters of the acting policy, kept as a dict of buffers). The
+agents copy a full segment to their device once per update and compute λ-returns and
+advantages from it inside their compiled update (:mod:`ivy_rl.returns`, with partial-episode
+bootstrapping, with the replay's ``discount`` and ``trace_decay``); the mini-batch orders come
+from the agent's numpy generator, so every backend sees the same mini-batches.
 
 Example:
     >>> seg = Segment(size=4, batch_size=8, batch_iterations=2)
@@ -29,6 +31,9 @@ class Segment:
         size: steps per worker in a segment (the update happens when it is full).
         batch_size: transitions per mini-batch (None: the whole segment).
         batch_iterations: passes over the segment (epochs) per update.
+        discount: γ of the returns.
+        trace_decay: λ of the λ-returns.
+        normalize_advantages: standardise the advantages of each segment.
 
     Example:
         >>> seg = Segment(size=2048, batch_size=64, batch_iterations=10)
@@ -40,15 +45,25 @@ class Segment:
         *,
         batch_size: int | None = None,
         batch_iterations: int = 10,
+        discount: float = 0.99,
+        trace_decay: float = 0.95,
+        normalize_advantages: bool = True,
     ) -> None:
         if size < 1:
             raise ValueError(f"Segment: size must be >= 1, got {size}")
         if batch_size is not None and batch_size < 1:
             raise ValueError(f"Segment: batch_size must be >= 1 or None, got {batch_size}")
+        if batch_iterations < 1:
+            raise ValueError(f"Segment: batch_iterations must be >= 1, got {batch_iterations}")
+        for name, value in (("discount", discount), ("trace_decay", trace_decay)):
+            if not 0.0 <= value <= 1.0:
+                raise ValueError(f"Segment: {name} must be in [0, 1], got {value}")
         self.size = int(size)
         self.batch_size = batch_size
         self.batch_iterations = int(batch_iterations)
-        self.buffers: dict[str, np.ndarray] | None = None
+        self.discount, self.trace_decay = float(discount), float(trace_decay)
+        self.normalize_advantages = bool(normalize_advantages)
+        self.buffers: dict[str, Any] | None = None
         self.index = 0
 
     def ready(self) -> bool:
@@ -56,21 +71,25 @@ class Segment:
         return self.index == self.size
 
     def store(self, **arrays: Any) -> None:
-        """Store one step of every worker: arrays ``[workers, ...]`` by name."""
+        """Store one step of every worker: arrays ``[workers, ...]`` (or dicts of them) by
+        name."""
         if self.index >= self.size:
             raise RuntimeError("Segment is full: learn from it and clear() it before storing more")
         if self.buffers is None:
-            self.buffers = {
-                k: np.zeros((self.size,) + np.shape(v), np.asarray(v).dtype)
-                for k, v in arrays.items()
-            }
+            self.buffers = {k: _allocate(self.size, v) for k, v in arrays.items()}
         for key, value in arrays.items():
-            self.buffers[key][self.index] = value
+            if isinstance(value, dict):
+                for name, part in value.items():
+                    self.buffers[key][name][self.index] = part
+            else:
+                self.buffers[key][self.index] = value
         self.index += 1
 
     @property
     def workers(self) -> int:
-        return 0 if self.buffers is None else next(iter(self.buffers.values())).shape[1]
+        if self.buffers is None:
+            return 0
+        return next(b for b in self.buffers.values() if not isinstance(b, dict)).shape[1]
 
     def batch_orders(self, rng: np.random.Generator) -> np.ndarray:
         """The mini-batches of all passes (epochs) of an update, as indices into the segment
@@ -100,14 +119,26 @@ class Segment:
         """Start a new segment."""
         self.index = 0
 
-    def state_dict(self) -> dict[str, np.ndarray]:
-        """The buffers and the write position."""
-        state = {"index": np.asarray(self.index, np.int64)}
-        for key, value in (self.buffers or {}).items():
-            state[f"buffers/{key}"] = value
+    def state_dict(self) -> dict[str, Any]:
+        """The buffers (a nest of numpy arrays) and the write position."""
+        state: dict[str, Any] = {"index": np.asarray(self.index, np.int64)}
+        if self.buffers is not None:
+            state["buffers"] = self.buffers
         return state
 
     def load_state_dict(self, state: dict[str, Any]) -> None:
+        """Restore :meth:`state_dict`."""
         self.index = int(state["index"])
-        buffers = {k.split("/", 1)[1]: np.array(v) for k, v in state.items() if "/" in k}
-        self.buffers = buffers or None
+        buffers = state.get("buffers")
+        self.buffers = None if not buffers else _copy(buffers)
+
+
+def _allocate(size: int, value: Any) -> Any:
+    if isinstance(value, dict):
+        return {k: _allocate(size, v) for k, v in value.items()}
+    value = np.asarray(value)
+    return np.zeros((size,) + value.shape, value.dtype)
+
+
+def _copy(buffers: dict[str, Any]) -> dict[str, Any]:
+    return {k: _copy(v) if isinstance(v, dict) else np.array(v) for k, v in buffers.items()}

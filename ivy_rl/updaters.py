@@ -1,12 +1,19 @@
-"""Losses and update rules of the agents, written once on a backend namespace ``xp``:
-policy gradients, PPO's clipped ratio, value regression, and TRPO's natural gradient step
-(conjugate gradient on Fisher-vector products, then a backtracking line search).
+"""Updaters, the parts of an agent that learn, and the losses and update rules they use,
+written once on a backend namespace ``xp``: policy gradients, PPO's clipped ratio, value
+regression, and TRPO's natural gradient step (conjugate gradient on Fisher-vector products,
+then a backtracking line search).
+
+Updater classes (an agent's ``actor_updater`` and ``critic_updater``):
+:class:`StochasticPolicyGradient` (A2C), :class:`ClippedRatio` (PPO),
+:class:`TrustRegionPolicyGradient` (TRPO) and :class:`ValueRegression` (the critics). Each holds
+its settings and, once :meth:`GradientUpdater.initialize` gave it a framework, its optimiser.
 
 Everything here is pure and branch-free (choices are made with ``xp.where``), so it runs inside
 one ``ivy.compile_fn``-compiled function per agent.
 
 Example:
     >>> loss, infos = clipped_ratio_loss(ivy.torch, dist, actions, old_log_probs, adv, 0.2)
+    >>> agent = ivy_rl.PPO(actor_updater=ClippedRatio(lr=1e-3, ratio_clip=0.1))
 """
 
 from __future__ import annotations
@@ -19,6 +26,11 @@ from ivy.nest import map_nest, multi_map_nest
 from ivy.typing import Array, Nest
 
 __all__ = [
+    "GradientUpdater",
+    "StochasticPolicyGradient",
+    "ClippedRatio",
+    "TrustRegionPolicyGradient",
+    "ValueRegression",
     "policy_gradient_loss",
     "clipped_ratio_loss",
     "value_loss",
@@ -176,3 +188,228 @@ def trust_region_step(
         found = ok if found is None else xp.logical_or(found, ok)
     infos = {"loss": chosen_loss, "kl": chosen_kl, "backtrack_steps": tries}
     return chosen, infos
+
+
+# ----------------------------------------------------------------------------------------------
+# Updaters: the parts of the agents that learn
+# ----------------------------------------------------------------------------------------------
+
+
+class GradientUpdater:
+    """An updater that takes Adam steps on gradients clipped by their global norm.
+
+    Args:
+        lr: Adam's learning rate.
+        gradient_clip: the global norm gradients are clipped to (0: no clipping).
+
+    Example:
+        >>> updater = ValueRegression(lr=1e-3).initialize(ivy.jax)
+        >>> state = updater.init_state(v)
+        >>> v, state, infos = updater.minimize(loss_fn, v, state)
+    """
+
+    has_optimizer = True
+
+    def __init__(self, lr: float = 3e-4, gradient_clip: float = 0.0) -> None:
+        if not lr > 0:
+            raise ValueError(f"{type(self).__name__}: lr must be > 0, got {lr!r}")
+        if not gradient_clip >= 0:
+            raise ValueError(
+                f"{type(self).__name__}: gradient_clip must be >= 0 (0: none), got {gradient_clip!r}"
+            )
+        self.lr, self.gradient_clip = lr, gradient_clip
+        self.xp = None
+
+    def initialize(self, xp: Any) -> GradientUpdater:
+        """Create the optimiser for the backend namespace ``xp``."""
+        self.xp = xp
+        self.optimizer = ivy.Adam(self.lr, f=xp)
+        return self
+
+    def init_state(self, v: Nest) -> Nest:
+        """The optimiser's state for the variables ``v``."""
+        return self.optimizer.init(v)
+
+    def minimize(
+        self, loss_fn: Callable[[Nest], Any], v: Nest, state: Nest
+    ) -> tuple[Nest, Nest, dict[str, Array]]:
+        """One step on ``loss_fn(v)`` (returning ``loss`` or ``(loss, infos)``): gradients,
+        clipped, and an Adam step.
+
+        Returns:
+            ``(v, state, {'loss': ..., **infos})``.
+        """
+        xp = self.xp
+        loss, grads, *aux = xp.execute_with_gradients(loss_fn, v)
+        if self.gradient_clip:
+            grads = xp.clip_by_global_norm(grads, self.gradient_clip)[0]
+        new_v, new_state = self.optimizer.step(v, grads, state)
+        return new_v, new_state, {"loss": loss, **(aux[0] if aux else {})}
+
+
+class ValueRegression(GradientUpdater):
+    """The critics' updater: regression of the values on their targets (mean squared error).
+
+    Args:
+        lr: Adam's learning rate.
+        gradient_clip: global norm of the gradients (0: no clipping).
+
+    Example:
+        >>> ivy_rl.A2C(critic_updater=ValueRegression(lr=1e-3))
+    """
+
+    def __init__(self, lr: float = 1e-3, gradient_clip: float = 0.0) -> None:
+        super().__init__(lr, gradient_clip)
+
+    def loss(self, predictions: Array, targets: Array) -> Array:
+        """``mean((predictions - targets)^2)``."""
+        return value_loss(self.xp, predictions, targets)
+
+
+class StochasticPolicyGradient(GradientUpdater):
+    """A2C's actor updater: ``-mean(A log π(a|s)) - c mean(entropy)``.
+
+    Args:
+        lr: Adam's learning rate.
+        entropy_coeff: weight ``c`` of the entropy bonus.
+        gradient_clip: global norm of the gradients (0: no clipping).
+
+    Example:
+        >>> ivy_rl.A2C(actor_updater=StochasticPolicyGradient(lr=3e-3))
+    """
+
+    needs_distribution = False  # whether the replay keeps the acting policy's parameters
+
+    def __init__(
+        self, lr: float = 3e-4, entropy_coeff: float = 0.0, gradient_clip: float = 0.0
+    ) -> None:
+        super().__init__(lr, gradient_clip)
+        self.entropy_coeff = entropy_coeff
+
+    def loss(self, dist: Any, batch: dict[str, Array]) -> tuple[Array, dict[str, Array]]:
+        """The loss of the policy ``dist`` on ``batch`` (``actions``, ``advantages``)."""
+        return policy_gradient_loss(
+            self.xp, dist, batch["actions"], batch["advantages"], self.entropy_coeff
+        )
+
+
+class ClippedRatio(StochasticPolicyGradient):
+    """PPO's actor updater: the clipped surrogate, and a KL threshold beyond which the actor
+    stops for the rest of an update.
+
+    Args:
+        lr: Adam's learning rate.
+        ratio_clip: ε of the clipped ratio ``[1 - ε, 1 + ε]``.
+        kl_threshold: KL estimate beyond which the actor stops (None: never).
+        entropy_coeff: weight of the entropy bonus.
+        gradient_clip: global norm of the gradients (0: no clipping).
+
+    Example:
+        >>> ivy_rl.PPO(actor_updater=ClippedRatio(lr=1e-3, ratio_clip=0.2, kl_threshold=None))
+    """
+
+    def __init__(
+        self,
+        lr: float = 3e-4,
+        ratio_clip: float = 0.2,
+        kl_threshold: float | None = 0.015,
+        entropy_coeff: float = 0.0,
+        gradient_clip: float = 0.0,
+    ) -> None:
+        super().__init__(lr, entropy_coeff, gradient_clip)
+        self.ratio_clip, self.kl_threshold = ratio_clip, kl_threshold
+
+    def loss(self, dist: Any, batch: dict[str, Array]) -> tuple[Array, dict[str, Array]]:
+        """The clipped surrogate on ``batch`` (``actions``, ``log_probs``, ``advantages``)."""
+        return clipped_ratio_loss(
+            self.xp,
+            dist,
+            batch["actions"],
+            batch["log_probs"],
+            batch["advantages"],
+            self.ratio_clip,
+            self.entropy_coeff,
+        )
+
+
+class TrustRegionPolicyGradient:
+    """TRPO's actor updater: a natural gradient step within a KL trust region (no optimiser);
+    the old policy of the KL is rebuilt from the parameters stored when acting
+    (``needs_distribution``).
+
+    Args:
+        max_kl: the trust region's radius δ.
+        cg_steps: conjugate-gradient iterations.
+        damping: added to the Fisher-vector products.
+        backtrack_steps: candidate steps of the line search.
+        backtrack_coefficient: shrink factor between candidates.
+        entropy_coeff: weight of the entropy bonus in the surrogate.
+
+    Example:
+        >>> ivy_rl.TRPO(actor_updater=TrustRegionPolicyGradient(max_kl=0.01))
+    """
+
+    has_optimizer = False
+    needs_distribution = True
+
+    def __init__(
+        self,
+        max_kl: float = 0.01,
+        cg_steps: int = 10,
+        damping: float = 0.1,
+        backtrack_steps: int = 10,
+        backtrack_coefficient: float = 0.8,
+        entropy_coeff: float = 0.0,
+    ) -> None:
+        self.max_kl, self.cg_steps, self.damping = max_kl, cg_steps, damping
+        self.backtrack_steps, self.backtrack_coefficient = backtrack_steps, backtrack_coefficient
+        self.entropy_coeff = entropy_coeff
+        self.xp = None
+
+    def initialize(self, xp: Any) -> TrustRegionPolicyGradient:
+        self.xp = xp
+        return self
+
+    def step(
+        self,
+        actor: Callable[[Nest], Any],
+        v: Nest,
+        old_distribution: dict[str, Array],
+        batch: dict[str, Array],
+    ) -> tuple[Nest, dict[str, Array]]:
+        """The trust-region step of the policy ``actor(w) -> distribution`` from ``v``.
+
+        Args:
+            actor: the policy's distribution on the batch's observations, given variables.
+            v: the policy's variables.
+            old_distribution: the acting policy's parameters on the batch.
+            batch: ``actions``, ``log_probs`` (of the acting policy), ``advantages``.
+
+        Returns:
+            ``(new_v, {'loss', 'kl', 'backtrack_steps'})``.
+        """
+        xp = self.xp
+        old = actor(v).like(old_distribution)
+
+        def surrogate(w):
+            dist = actor(w)
+            ratios = xp.exp(dist.log_prob_raw(batch["actions"]) - batch["log_probs"])
+            loss = -xp.mean(ratios * batch["advantages"])
+            if self.entropy_coeff:
+                loss = loss - self.entropy_coeff * xp.mean(dist.entropy())
+            return loss
+
+        def kl(w):
+            return xp.mean(old.kl(actor(w)))
+
+        return trust_region_step(
+            xp,
+            v,
+            surrogate,
+            kl,
+            max_kl=self.max_kl,
+            cg_steps=self.cg_steps,
+            damping=self.damping,
+            backtrack_steps=self.backtrack_steps,
+            backtrack_coefficient=self.backtrack_coefficient,
+        )

@@ -38,3 +38,20 @@ def native_compile(backend: str, fn: Callable, *, unknown_batch_of: Sequence | N
             (tensorflow's ``input_signature``).
     """
     return NATIVE_COMPILERS[backend](fn, unknown_batch_of)
+
+
+def _torch_graph_counter() -> Callable[[], tuple[int, dict]]:
+    import torch._dynamo
+
+    counters = torch._dynamo.utils.counters
+    counters.clear()
+    return lambda: (counters["stats"]["unique_graphs"], dict(counters["graph_break"]))
+
+
+#: Compilers that report what they compiled: backend -> a function that starts counting and
+#: returns ``report() -> (graphs compiled since, graph breaks since)``. A compiler that traces
+#: Python once per graph (``jax.jit``, ``tf.function``) is counted by the test itself, with a
+#: side effect in the traced function; dynamo replays such side effects at every call.
+GRAPH_COUNTERS: dict[str, Callable[[], Callable[[], tuple[int, dict]]]] = {
+    "torch": _torch_graph_counter,
+}

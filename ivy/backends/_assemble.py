@@ -177,6 +177,7 @@ def assemble(
         ns[ext] = ExtensionNamespace(f"ivy.{backend}.{ext}", group.__all__, ns.__getitem__, call)
         exported.add(ext)
     ns["__all__"] = sorted(exported)
+    _drop_unexported(module, exported)
     scalars = module
     if natives_in_namespace:
         scalars = _view(module, {}, "<scalars>")
@@ -193,6 +194,20 @@ def assemble(
         scalars.__ivy_fast__ = fast
     _fh.register_loaded(backend, module, capabilities, array_types)
     return module
+
+
+# Public attributes of every namespace besides ``__all__`` (set by the framework handler): the
+# backend's name, its :class:`Capabilities` and ``with ivy.<name>.use:``.
+NAMESPACE_ATTRIBUTES = ("backend", "capabilities", "use")
+
+
+def _drop_unexported(module: types.ModuleType, exported: set[str]) -> None:
+    """Remove what the package's imports left in its namespace (its group modules, which the
+    import system sets as attributes): every namespace has exactly the same public names."""
+    ns = module.__dict__
+    for name in [n for n in ns if not n.startswith("_")]:
+        if name not in exported and name not in NAMESPACE_ATTRIBUTES:
+            del ns[name]
 
 
 def _fast_view(module: types.ModuleType, exported: set[str]) -> Any:

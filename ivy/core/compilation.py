@@ -18,9 +18,10 @@ from collections.abc import Callable, Sequence
 
 from ivy import framework_handler as _fh
 from ivy.core._dispatch import composition, dispatch
-from ivy.typing import Framework
+from ivy.nest import flatten_nest, unflatten_nest
+from ivy.typing import Framework, Nest
 
-__all__ = ["compile_fn", "compile_native"]
+__all__ = ["compile_fn", "compile_native", "compiled_scan"]
 
 
 @dispatch()
@@ -98,3 +99,85 @@ class _CompiledOnFirstCall:
 
     def __repr__(self) -> str:
         return f"<ivy.compile_fn of {self._fn!r}>"
+
+
+@composition
+def compiled_scan(
+    fn: Callable[[Nest, Nest], tuple[Nest, Nest]],
+    /,
+    *,
+    length: int | None = None,
+    f: Framework = None,
+) -> Callable[..., tuple[Nest, Nest]]:
+    """``ivy.scan(fn, init, xs, length=length)``, compiled where the framework's compiler can.
+
+    Where to put the compile boundary follows the backend's capability ``compiled_loops``:
+
+    - the compiler keeps loops (jax, tensorflow): the whole scan is one :func:`compile_fn`
+      function, so a long loop compiles as fast as a short one;
+    - the compiler unrolls loops (``torch.compile``): ``fn`` is compiled on its own and a
+      Python loop on the host calls it once per step (compiled once, whatever the length);
+    - no compiler (numpy): the scan runs eagerly.
+
+    The results equal ``ivy.scan``'s on every backend.
+
+    Args:
+        fn: ``fn(carry, x) -> (carry, y)``, as for :func:`ivy.scan`.
+        length: the number of steps; required when ``xs`` is None.
+        f: framework name or namespace; by default resolved from the first call's arguments.
+
+    Returns:
+        ``run(init, xs=None) -> (carry, ys)``.
+
+    Example:
+        >>> run = ivy.compiled_scan(lambda c, x: (c + x, c * x), f="jax")
+        >>> carry, ys = run(jnp.zeros(()), jnp.arange(4.0))
+    """
+    return _CompiledScan(fn, length, f)
+
+
+class _CompiledScan:
+    """The scan of ``fn``, with its compiled function made per framework at the first call."""
+
+    def __init__(self, fn, length, f):
+        self._fn = fn
+        self._length = length
+        self._f = f
+        self._runs = {}
+        functools.update_wrapper(self, fn)
+
+    def __call__(self, init, xs=None):
+        xp = _fh.get_framework(init, xs, f=self._f)
+        run = self._runs.get(xp.backend)
+        if run is None:
+            run = self._runs[xp.backend] = self._plan(xp)
+        return run(init, xs)
+
+    def _plan(self, xp):
+        fn, length = self._fn, self._length
+        caps = xp.capabilities
+        if not caps.compilation:
+            return lambda init, xs: xp.scan(fn, init, xs, length=length)
+        if caps.compiled_loops:
+            return xp.compile_fn(lambda init, xs: xp.scan(fn, init, xs, length=length))
+        step = xp.compile_fn(fn)
+        return lambda init, xs: _host_scan(xp, fn, step, init, xs, length)
+
+    def __repr__(self) -> str:
+        return f"<ivy.compiled_scan of {self._fn!r}>"
+
+
+def _host_scan(xp, fn, step, init, xs, length):
+    """``xp.scan(fn, init, xs, length=length)`` as a host loop over ``step``, ``fn`` compiled."""
+    leaves, spec = flatten_nest(xs)
+    steps = int(leaves[0].shape[0]) if leaves else length
+    if steps is None or (length is not None and steps != length) or steps == 0:
+        return xp.scan(fn, init, xs, length=length)  # its errors, and the shapes of no step
+    carry, outputs = init, []
+    for i in range(steps):
+        x = unflatten_nest(spec, [leaf[i] for leaf in leaves]) if leaves else xs
+        carry, y = step(carry, x)
+        outputs.append(flatten_nest(y))
+    y_spec = outputs[0][1]
+    columns = zip(*(ys for ys, _ in outputs)) if outputs[0][0] else ()
+    return carry, unflatten_nest(y_spec, [xp.stack(list(col)) for col in columns])

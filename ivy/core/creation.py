@@ -12,6 +12,7 @@ from ivy.typing import Array, ArrayLike, Device, Dtype, Framework, Scalar, Shape
 __all__ = [
     "asarray",
     "array",
+    "constant",
     "zeros",
     "ones",
     "empty",
@@ -49,6 +50,45 @@ def asarray(
 
 
 array = alias("array", asarray)
+
+
+@dispatch
+def constant(
+    value: ArrayLike,
+    /,
+    *,
+    dtype: Dtype | None = None,
+    device: Device | None = None,
+    f: Framework = None,
+) -> Array:
+    """A model constant (a numpy array, a Python scalar or a nested list) as an array of the
+    chosen framework, in a way that every compiler traces.
+
+    Keep one numpy copy of each constant and call ``xp.constant(value, dtype=..., device=...)``
+    where it is needed, also inside functions that ``jax.jit``, ``tf.function`` or
+    ``torch.compile`` trace: it breaks no graph and recompiles nothing there (jax and tensorflow
+    embed the value in the program; torch.compile takes a numpy array as an input of the graph).
+    Outside a trace, the conversion of a numpy array is made once per dtype and device and kept
+    while the array lives, so an eager loop pays no conversion (and no host-to-device copy) per
+    step. A constant is never written after its first use: later writes into the numpy array
+    may not be seen.
+
+    Args:
+        value: a numpy array, numpy or Python scalar, or nested list of numbers.
+        dtype: the dtype wanted; None: as :func:`asarray` (numpy arrays keep theirs, Python
+            floats give float32).
+        device: the device wanted (``'cpu'``, ``'gpu:0'`` or the framework's device); None:
+            the framework's default.
+        f: framework name or namespace; without it, a numpy ``value`` gives a numpy array.
+
+    Returns:
+        The array. Do not write into it: it may be shared by every caller.
+
+    Example:
+        >>> K = np.array([[500.0, 0.0, 320.0], [0.0, 500.0, 240.0], [0.0, 0.0, 1.0]])
+        >>> ivy.constant(K, dtype="float32", f="torch").dtype
+        torch.float32
+    """
 
 
 @dispatch()

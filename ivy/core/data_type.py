@@ -20,7 +20,17 @@ from ivy.core._dispatch import alias, dispatch
 from ivy.core._dtype_rules import FInfo, IInfo
 from ivy.typing import Array, Device, Dtype, Framework, Scalar
 
-__all__ = ["astype", "can_cast", "cast", "finfo", "iinfo", "isdtype", "result_type"]
+__all__ = [
+    "astype",
+    "can_cast",
+    "cast",
+    "dtype_name",
+    "enable_float64",
+    "finfo",
+    "iinfo",
+    "isdtype",
+    "result_type",
+]
 
 _SCALARS = (bool, int, float, complex)
 
@@ -121,3 +131,46 @@ def result_type(*arrays_and_dtypes: Array | Dtype | Scalar, f: Framework = None)
             _fh.to_namespace(ns, a) if hasattr(a, "shape") else a for a in arrays_and_dtypes
         ]
     return ns.result_type(*arrays_and_dtypes)
+
+
+@by_hand
+def dtype_name(dtype: Dtype | Array, /, *, f: Framework = None) -> str:
+    """The ivy name (``'float32'``) of a dtype: a framework's dtype object (``torch.float32``,
+    ``tf.int8``, ``np.dtype('uint8')``, ``np.float64``), a name, or an array's dtype.
+
+    Applied code compares dtypes by this name rather than by a framework's objects.
+
+    Args:
+        dtype: the dtype, its name, or an array.
+        f: framework name or namespace; by default the dtype's own framework.
+
+    Returns:
+        One of ``ivy.dtypes.DTYPE_NAMES``; a TypeError for anything else.
+
+    Example:
+        >>> ivy.dtype_name(torch.float64), ivy.dtype_name(np.ones(2, np.int8))
+        ('float64', 'int8')
+    """
+    ns = framework_or_none(dtype, f=f)
+    if ns is None:
+        return _rules.name_of(dtype)
+    return ns.dtype_name(dtype)
+
+
+@dispatch()
+def enable_float64(*, f: Framework = None) -> None:
+    """Make 64-bit dtypes (float64, int64, complex128) work on the framework, process-wide.
+
+    jax: switches ``jax_enable_x64`` on (do it before making arrays: arrays made before keep
+    their 32-bit dtypes); numpy, torch and tensorflow hold 64-bit types anyway (nothing to do).
+    A backend registered with ``float64=False`` raises :class:`ivy.errors.UnsupportedError`.
+    Whether a backend can do it is its capability ``float64``.
+
+    Args:
+        f: framework name or namespace (or the global framework).
+
+    Example:
+        >>> ivy.enable_float64(f="jax")
+        >>> ivy.asarray([1.0], dtype="float64", f="jax").dtype
+        dtype('float64')
+    """

@@ -14,6 +14,7 @@ from ivy_rl.agents.a2c import A2C
 from ivy_rl.agents.agent import Agent
 from ivy_rl.agents.apg import APG
 from ivy_rl.agents.baselines import Constant, Uniform
+from ivy_rl.agents.defaults import DEFAULTS, check_setting, defaults_for, task_family
 from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.agents.ppo import PPO
 from ivy_rl.agents.shac import SHAC
@@ -30,6 +31,8 @@ __all__ = [
     "SHAC",
     "AGENTS",
     "make",
+    "DEFAULTS",
+    "task_family",
     "compiled_scan_unrolls",
     "FUSION_LEVELS",
 ]
@@ -45,16 +48,31 @@ AGENTS: dict[str, type[Agent]] = {
 }
 
 
-def make(name: str, **settings: Any) -> Agent:
+def make(name: str, *, environment: Any = None, **settings: Any) -> Agent:
     """An agent by name (``'PPO'``, ``'A2C'``, ``'TRPO'``, ``'Uniform'``, ``'Constant'``;
-    case-insensitive) with its settings.
+    case-insensitive) with the defaults of the environment's task family
+    (:data:`~ivy_rl.agents.defaults.DEFAULTS`), overridden by ``settings``.
+
+    Every setting is checked (type and range) before anything is built, and the error names
+    it; ``agent.config`` holds every value used.
+
+    Args:
+        name: the agent's name.
+        environment: a Gymnasium id (or environment) whose family's defaults apply; None: the
+            agent's own defaults.
+        settings: settings that override the defaults (JSON values, as ``--agent-kwargs``).
+
+    Returns:
+        The agent, not initialized.
 
     Example:
-        >>> make("ppo", epochs=20)
-        PPO({...})
+        >>> make("PPO", environment="CartPole-v1").config["segment_size"]
+        32
     """
-    by_lower = {key.lower(): cls for key, cls in AGENTS.items()}
-    cls = by_lower.get(str(name).lower())
-    if cls is None:
+    by_lower = {key.lower(): key for key in AGENTS}
+    key = by_lower.get(str(name).lower())
+    if key is None:
         raise ValueError(f"unknown agent {name!r}; available agents: {', '.join(AGENTS)}")
-    return cls(**settings)
+    merged = {**defaults_for(key, environment), **settings}
+    checked = {k: check_setting(k, v) for k, v in merged.items()}
+    return AGENTS[key](**checked)

@@ -18,29 +18,57 @@ mini-batches) running on the host. Compilers that unroll ``ivy.scan`` (``torch.c
 minutes on a whole update; this level keeps each compiled function one step long. Both levels
 give the same numbers, as does ``compile=False`` (everything eager).
 
+An agent is composed of parts, as in Tonic: ``A2C(model=..., replay=..., actor_updater=...,
+critic_updater=...)`` (:class:`~ivy_rl.models.ActorCriticModel`,
+:class:`~ivy_rl.replays.Segment`, the updaters of :mod:`ivy_rl.updaters`). Flat settings
+(``A2C(segment_size=128)``, the command line's ``--agent-kwargs``) build the parts a setting
+belongs to, and ``agent.config`` holds the flat settings of every part.
+
 Example:
     >>> agent = A2C(segment_size=128).initialize(env.observation_space, env.action_space,
     ...                                         seed=0, f="torch")
+    >>> agent = A2C(replay=Segment(128, discount=0.98), actor_updater=StochasticPolicyGradient(3e-3))
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
-import ivy
-from ivy.nest import multi_map_nest
-from ivy_rl import updaters
+from ivy.nest import map_nest, multi_map_nest
+from ivy.typing import Array
 from ivy_rl.agents.agent import Agent
+from ivy_rl.agents.defaults import check_setting
 from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
-from ivy_rl.models import actor_critic
+from ivy_rl.models import ActorCriticModel
 from ivy_rl.normalizers import MeanStd, ReturnNormalizer, _fold_moments, _standard_deviation
 from ivy_rl.replays import Segment
 from ivy_rl.returns import _lambda_returns
+from ivy_rl.updaters import StochasticPolicyGradient, ValueRegression
 
-__all__ = ["A2C"]
+__all__ = ["A2C", "Acting"]
+
+
+class Acting(NamedTuple):
+    """What an on-policy agent's acting function returns for a batch of observations.
+
+    Attributes:
+        actions: the samples as the policy's distribution stores them (``[batch, ...]``; for
+            a squashed Gaussian, before the squashing).
+        env_actions: the actions to take, in ``[-1, 1]`` (Box, rescaled to the space's bounds
+            by the agent) or indices (Discrete).
+        log_probs: ``[batch]`` log-probabilities of the samples.
+        distribution: the acting policy's parameters (``{'loc', 'scale'}``, ``{'logits'}``),
+            when the actor updater needs them (TRPO's old policy); else None.
+    """
+
+    actions: Array
+    env_actions: Array
+    log_probs: Array
+    distribution: dict[str, Array] | None
+
 
 _TRANSITION_KEYS = ("observations", "next_observations", "rewards", "resets", "terminations")
 
@@ -50,6 +78,12 @@ class A2C(Agent):
     segment, then ``critic_iterations`` passes of value regression on the λ-returns.
 
     Args:
+        model: the model part (default: an :class:`~ivy_rl.models.ActorCriticModel` of the
+            settings below).
+        replay: the replay part (default: a :class:`~ivy_rl.replays.Segment`).
+        actor_updater: default :class:`~ivy_rl.updaters.StochasticPolicyGradient`.
+        critic_updater: default :class:`~ivy_rl.updaters.ValueRegression`.
+        settings: flat settings of the parts not given (those below; see :attr:`parts`):
         hidden_sizes: hidden sizes of the actor's torso.
         critic_hidden_sizes: of the critic's torso (default: ``hidden_sizes``).
         activation: activation of the torsos.
@@ -63,7 +97,7 @@ class A2C(Agent):
         critic_iterations: passes of critic regression per update.
         batch_size: transitions per critic mini-batch (None: the whole segment).
         entropy_coeff: weight of the entropy bonus.
-        gradient_clip: global norm of gradients (0: no clipping).
+        actor_gradient_clip, critic_gradient_clip: global norm of gradients (0: no clipping).
         normalize_observations: normalise observations by their running mean and std.
         normalize_returns: the critic predicts returns normalised by their running mean and std.
         normalize_advantages: standardise the advantages of each segment.
@@ -85,25 +119,72 @@ class A2C(Agent):
         activation="tanh",
         head=None,
         log_std_init=0.0,
-        segment_size=256,
-        discount=0.99,
-        trace_decay=0.95,
-        actor_lr=3e-4,
-        critic_lr=1e-3,
-        critic_iterations=40,
-        batch_size=None,
-        entropy_coeff=0.0,
-        gradient_clip=0.0,
         normalize_observations=True,
         normalize_returns=False,
+        segment_size=256,
+        batch_size=None,
+        critic_iterations=40,
+        discount=0.99,
+        trace_decay=0.95,
         normalize_advantages=True,
+        actor_lr=3e-4,
+        entropy_coeff=0.0,
+        actor_gradient_clip=0.0,
+        critic_lr=1e-3,
+        critic_gradient_clip=0.0,
         fusion="auto",
     )
-
     _unused: tuple[str, ...] = ()
-    _stored_outputs: tuple[str, ...] = ()  # outputs of the acting function the update reads
+    _MODEL = (
+        "hidden_sizes",
+        "critic_hidden_sizes",
+        "activation",
+        "head",
+        "log_std_init",
+        "normalize_observations",
+        "normalize_returns",
+    )
+    _REPLAY = {
+        "segment_size": "size",
+        "batch_size": "batch_size",
+        "discount": "discount",
+        "trace_decay": "trace_decay",
+        "normalize_advantages": "normalize_advantages",
+    }
+    #: each part: its role, its default class and ``{flat setting: the class's parameter}``
+    parts: dict[str, tuple[type, dict[str, str]]] = {
+        "model": (ActorCriticModel, {k: k for k in _MODEL}),
+        "replay": (Segment, {**_REPLAY, "critic_iterations": "batch_iterations"}),
+        "actor_updater": (
+            StochasticPolicyGradient,
+            {
+                "actor_lr": "lr",
+                "entropy_coeff": "entropy_coeff",
+                "actor_gradient_clip": "gradient_clip",
+            },
+        ),
+        "critic_updater": (
+            ValueRegression,
+            {"critic_lr": "lr", "critic_gradient_clip": "gradient_clip"},
+        ),
+    }
 
-    def __init__(self, **settings: Any) -> None:
+    def __init__(
+        self,
+        *,
+        model: Any = None,
+        replay: Any = None,
+        actor_updater: Any = None,
+        critic_updater: Any = None,
+        **settings: Any,
+    ) -> None:
+        name = type(self).__name__
+        given = {
+            "model": model,
+            "replay": replay,
+            "actor_updater": actor_updater,
+            "critic_updater": critic_updater,
+        }
         config = {}
         for cls in reversed(type(self).__mro__):
             config.update(getattr(cls, "_defaults", {}))
@@ -112,13 +193,31 @@ class A2C(Agent):
         unknown = sorted(set(settings) - set(config))
         if unknown:
             raise TypeError(
-                f"{type(self).__name__} got unknown settings {unknown}; its settings are "
-                f"{sorted(config)}"
+                f"{name} got unknown settings {unknown}; its settings are {sorted(config)}, "
+                f"and its parts {', '.join(self.parts)}"
             )
         config.update(settings)
+        config = {k: check_setting(k, v) for k, v in config.items()}
+        built = {}
+        for role, (cls, names) in self.parts.items():
+            part = given[role]
+            if part is None:
+                part = cls(**{param: config[flat] for flat, param in names.items()})
+            else:
+                clash = sorted(set(settings) & set(names))
+                if clash:
+                    raise TypeError(
+                        f"{name}: settings {clash} belong to the {role} given; set them on it"
+                    )
+                for flat, param in names.items():
+                    if hasattr(part, param):
+                        config[flat] = getattr(part, param)
+            built[role] = part
+        self.model, self.replay = built["model"], built["replay"]
+        self.actor_updater, self.critic_updater = built["actor_updater"], built["critic_updater"]
         if config["fusion"] not in FUSION_LEVELS:
             raise ValueError(
-                f"{type(self).__name__}: unknown fusion {config['fusion']!r}; choose one of "
+                f"{name}: unknown fusion {config['fusion']!r}; choose one of "
                 f"{', '.join(map(repr, FUSION_LEVELS))}"
             )
         super().__init__(**config)
@@ -128,60 +227,43 @@ class A2C(Agent):
     # ------------------------------------------------------------------------------------------
 
     def _build(self) -> None:
-        c = self.config
         xp = self.xp
-        if c["head"] == "deterministic":
-            raise ValueError(
-                f"{type(self).__name__} needs a stochastic policy head (log-probabilities); "
-                "choose 'gaussian' or 'squashed_gaussian'"
-            )
-        self.model = actor_critic(
+        self.model.initialize(
             self.observation_space,
             self.action_space,
             rng=self.rng,
-            actor_sizes=tuple(c["hidden_sizes"]),
-            critic_sizes=tuple(c["critic_hidden_sizes"] or c["hidden_sizes"]),
-            activation=c["activation"],
-            head=c["head"],
-            log_std_init=c["log_std_init"],
             dtype=self.dtype,
             device=self.device,
             f=xp,
         )
         self.v = self._placed(self.model.v)
-        self.actor_optimizer = ivy.Adam(c["actor_lr"], f=xp)
-        self.critic_optimizer = ivy.Adam(c["critic_lr"], f=xp)
-        self.optimizer_states = {
-            "actor": self.actor_optimizer.init(self.v["actor"]),
-            "critic": self.critic_optimizer.init(self.v["critic"]),
-        }
+        self.optimizer_states = {}
+        for role, updater in (("actor", self.actor_updater), ("critic", self.critic_updater)):
+            updater.initialize(xp)
+            if updater.has_optimizer:
+                self.optimizer_states[role] = updater.init_state(self.v[role])
         obs_size = int(np.prod(self.observation_space.shape))
-        self.observation_normalizer = MeanStd((obs_size,)) if c["normalize_observations"] else None
-        self.return_normalizer = ReturnNormalizer() if c["normalize_returns"] else None
-        self.replay = Segment(
-            c["segment_size"], batch_size=c["batch_size"], batch_iterations=self._passes()
-        )
+        model = self.model
+        self.observation_normalizer = MeanStd((obs_size,)) if model.normalize_observations else None
+        self.return_normalizer = ReturnNormalizer() if model.normalize_returns else None
         self._noise_shape = (
             (int(self.action_space.n),)
             if self.action_kind == "Discrete"
             else self.action_space.shape
         )
-        self._pending: dict[str, np.ndarray] | None = None
+        self._pending: dict[str, Any] | None = None
         self.updates = 0
         self._refresh_stats()
-        self._act = self._compile(self._act_fn)
-        self._mode = self._compile(self._mode_fn)
-        self.fusion = c["fusion"]
+        self._act = self._compile(self._act_fn, "act")
+        self._mode = self._compile(self._mode_fn, "mode")
+        self.fusion = self.config["fusion"]
         if self.fusion == "auto":
             unrolls = self.compiled and compiled_scan_unrolls(f=xp)
             self.fusion = "steps" if unrolls else "update"
         self._fused = self.fusion == "update"
         self._compiled_steps: dict[str, Callable] = {}
-        self._update = self._compile(self._update_fn) if self._fused else self._update_fn
-
-    def _passes(self) -> int:
-        """Passes over a segment per update."""
-        return self.config["critic_iterations"]
+        fn = self._update_fn
+        self._update = self._compile(fn, "update") if self._fused else fn
 
     def _refresh_stats(self) -> None:
         """The observation statistics as arrays of the framework, for the models' calls."""
@@ -202,13 +284,16 @@ class A2C(Agent):
     # Pure functions (compiled)
     # ------------------------------------------------------------------------------------------
 
-    def _act_fn(self, actor_v, obs_stats, observations, noise):
+    def _act_fn(self, actor_v, obs_stats, observations, noise) -> Acting:
         dist = self.model.actor(observations, obs_stats, v=actor_v)
         raw = dist.sample_raw(noise)
-        out = {"actions": raw, "log_probs": dist.log_prob_raw(raw), "unit": dist.raw_to_action(raw)}
-        if "dist" in self._stored_outputs:
-            out.update({f"dist_{k}": p for k, p in dist.params().items()})
-        return out
+        keep = self.actor_updater.needs_distribution
+        return Acting(
+            actions=raw,
+            env_actions=dist.raw_to_action(raw),
+            log_probs=dist.log_prob_raw(raw),
+            distribution=dist.params() if keep else None,
+        )
 
     def _mode_fn(self, actor_v, obs_stats, observations):
         return self.model.actor(observations, obs_stats, v=actor_v).mode()
@@ -234,7 +319,7 @@ class A2C(Agent):
             critic's variables pass through ``stop_gradient`` to stay targets, as they are on
             torch and jax.
         """
-        xp, c = self.xp, self.config
+        xp, replay = self.xp, self.replay
         rewards = segment["rewards"]
         steps, workers = tuple(rewards.shape)
         size = steps * workers
@@ -257,12 +342,12 @@ class A2C(Agent):
             next_values,
             segment["resets"],
             segment["terminations"],
-            c["discount"],
-            c["trace_decay"],
+            replay.discount,
+            replay.trace_decay,
         )
         advantages = xp.reshape(returns - current, (size,))
         returns = xp.reshape(returns, (size,))
-        if c["normalize_advantages"]:
+        if replay.normalize_advantages:
             centred = advantages - xp.mean(advantages)
             advantages = xp.safe_divide(centred, xp.std(advantages))
         if return_moments is not None:
@@ -279,7 +364,7 @@ class A2C(Agent):
         batch = {"observations": observations, "returns": returns, "advantages": advantages}
         for key, value in segment.items():
             if key not in _TRANSITION_KEYS:
-                batch[key] = xp.reshape(value, (size, *tuple(value.shape)[2:]))
+                batch[key] = map_nest(lambda a: xp.reshape(a, (size, *tuple(a.shape)[2:])), value)
         return batch, return_moments, return_stats
 
     def _critic_values(self, critic_v, obs_stats, return_stats, observations):
@@ -317,51 +402,36 @@ class A2C(Agent):
 
     def _actor_step(self, carry, stats, batch):
         actor_v, state = carry
-        actor_v, state, infos = self._minimize(
-            "actor", lambda w: self._actor_loss(w, stats, batch), actor_v, state
+        actor_v, state, infos = self.actor_updater.minimize(
+            lambda w: self._actor_loss(w, stats, batch), actor_v, state
         )
         return (actor_v, state), infos
 
     def _critic_step(self, carry, indices, stats, batch):
         critic_v, state = carry
         part = self._select(batch, indices, ("observations", "returns"))
-        critic_v, state, infos = self._minimize(
-            "critic", lambda w: self._critic_loss(w, stats, part), critic_v, state
+        critic_v, state, infos = self.critic_updater.minimize(
+            lambda w: self._critic_loss(w, stats, part), critic_v, state
         )
         return (critic_v, state), {"loss": infos["loss"]}
-
-    def _minimize(self, name, loss_fn, v, state):
-        """Gradients of ``loss_fn`` (returning ``loss`` or ``(loss, infos)``), clipped, and an
-        Adam step."""
-        xp = self.xp
-        optimizer = self.actor_optimizer if name == "actor" else self.critic_optimizer
-        loss, grads, *aux = xp.execute_with_gradients(loss_fn, v)
-        clip = self.config["gradient_clip"]
-        if clip:
-            grads = xp.clip_by_global_norm(grads, clip)[0]
-        new_v, new_state = optimizer.step(v, grads, state)
-        return new_v, new_state, {"loss": loss, **(aux[0] if aux else {})}
 
     def _masked(self, keep, new, old):
         """``new`` where the scalar ``keep`` is true, else ``old``, leaf by leaf."""
         return multi_map_nest(lambda a, b: self.xp.where(keep, a, b), new, old)
 
     def _critic_loss(self, critic_v, stats, batch):
-        xp = self.xp
         targets = batch["returns"]
         if stats["ret"] is not None:
             targets = (targets - stats["ret"]["mean"]) / stats["ret"]["std"]
         predictions = self.model.critic.normalized(critic_v, batch["observations"], stats["obs"])
-        return updaters.value_loss(xp, predictions, targets)
+        return self.critic_updater.loss(predictions, targets)
 
     def _actor_loss(self, actor_v, stats, batch):
         dist = self.model.actor(batch["observations"], stats["obs"], v=actor_v)
-        return updaters.policy_gradient_loss(
-            self.xp, dist, batch["actions"], batch["advantages"], self.config["entropy_coeff"]
-        )
+        return self.actor_updater.loss(dist, batch)
 
     def _select(self, batch, indices, keys):
-        return {k: self.xp.take(batch[k], indices, axis=0) for k in keys}
+        return {k: map_nest(lambda a: self.xp.take(a, indices, axis=0), batch[k]) for k in keys}
 
     # ------------------------------------------------------------------------------------------
     # The fusion levels: inside the one compiled update, or step by step from the host
@@ -380,17 +450,25 @@ class A2C(Agent):
 
     def _run_loop(self, name, body, carry, xs, *consts):
         """``ivy.scan`` of ``body(carry, x, *consts)`` over the rows of ``xs``: inside the fused
-        update, or as a host loop over ``body`` compiled on its own (``fusion='steps'``)."""
+        update (or eagerly), else through ``ivy.compiled_scan`` (``fusion='steps'``), which puts
+        the compile boundary where the framework's compiler wants it: around the whole scan
+        where it keeps loops, around ``body`` with a host loop where it unrolls them."""
         xp = self.xp
         steps = int(xs.shape[0])
-        if self._fused or steps == 0:
+        if self._fused or steps == 0 or not self.compiled:
             return xp.scan(lambda c, x: body(c, x, *consts), carry, xs)
-        step = self._step_function(name, body)
-        ys = []
-        for i in range(steps):
-            carry, y = step(carry, xs[i], *consts)
-            ys.append(y)
-        return carry, {k: xp.stack([y[k] for y in ys]) for k in ys[0]}
+        run = self._compiled_steps.get(name)
+        if run is None:
+
+            def scan_body(state, x):
+                inner, fixed = state
+                inner, y = body(inner, x, *fixed)
+                return (inner, fixed), y
+
+            run = self._counted(xp.compiled_scan(scan_body), name)
+            self._compiled_steps[name] = run
+        (carry, _), ys = run((carry, consts), xs)
+        return carry, ys
 
     # ------------------------------------------------------------------------------------------
     # Acting
@@ -407,13 +485,18 @@ class A2C(Agent):
         xp = self.xp
         obs = self._observations(observations)
         noise = self._noise(obs.shape[0])
-        out = self._act(
+        acting = self._act(
             self.v["actor"], self.stats["obs"], self._asarray(obs), self._asarray(noise)
         )
-        out = {k: np.asarray(xp.to_numpy(a)) for k, a in out.items()}
-        unit = out.pop("unit")
-        self._pending = {"observations": obs, **out}
-        return self._env_actions(unit)
+        acting = Acting(*map_nest(lambda a: np.asarray(xp.to_numpy(a)), tuple(acting)))
+        self._pending = {
+            "observations": obs,
+            "actions": acting.actions,
+            "log_probs": acting.log_probs,
+        }
+        if acting.distribution is not None:
+            self._pending["distribution"] = acting.distribution
+        return self._env_actions(acting.env_actions)
 
     def test_step(self, observations: Any) -> np.ndarray:
         self._check_initialized()
@@ -448,26 +531,19 @@ class A2C(Agent):
         self.updates += 1
         return logs
 
-    def _segment_keys(self) -> list[str]:
-        keys = [*_TRANSITION_KEYS, "actions"]
-        if "log_probs" in self._stored_outputs:
-            keys.append("log_probs")
-        if "dist" in self._stored_outputs:
-            keys += sorted(k for k in self.replay.buffers if k.startswith("dist_"))
-        return keys
-
     def _segment(self) -> dict[str, Any]:
-        """The segment's buffers the update reads, as arrays of the framework: floats in the
-        model's dtype, integers as int32 (jax without 64-bit types has no int64)."""
-        out = {}
-        for key in self._segment_keys():
-            value = self.replay.buffers[key]
+        """The segment's buffers as arrays of the framework on the agent's device (one copy
+        per update): floats in the model's dtype, integers as int32 (jax without 64-bit types
+        has no int64)."""
+
+        def placed(value):
             if value.dtype.kind == "f":
                 value = value.astype(self.np_dtype)
             elif value.dtype.kind in "iu":
                 value = value.astype(np.int32)
-            out[key] = self._asarray(value)
-        return out
+            return self._asarray(value)
+
+        return map_nest(placed, self.replay.buffers)
 
     def _learn(self) -> dict[str, float]:
         xp = self.xp
@@ -506,7 +582,7 @@ class A2C(Agent):
             arrays["observation_normalizer"] = self.observation_normalizer.state_dict()
         if self.return_normalizer is not None:
             arrays["return_normalizer"] = self.return_normalizer.state_dict()
-        arrays["replay"] = {k.replace("/", "."): a for k, a in self.replay.state_dict().items()}
+        arrays["replay"] = self.replay.state_dict()
         if self._pending is not None:
             arrays["pending"] = dict(self._pending)
         return arrays
@@ -518,9 +594,7 @@ class A2C(Agent):
             norm = getattr(self, name)
             if norm is not None:
                 norm.load_state_dict(arrays[name])
-        self.replay.load_state_dict(
-            {k.replace(".", "/", 1): a for k, a in arrays["replay"].items()}
-        )
+        self.replay.load_state_dict(arrays["replay"])
         self._pending = dict(arrays["pending"]) if "pending" in arrays else None
         self._refresh_stats()
 

@@ -1,5 +1,31 @@
 """``Agent``: the interface between agents and the trainer, and what every agent shares.
 
+The base contract (what the trainer and every agent rely on):
+
+- ``Agent(**settings)``: settings are JSON values, all kept in ``agent.config`` (the values used,
+  defaults included); :func:`ivy_rl.agents.make` builds agents by name with the defaults of a
+  task family (:mod:`ivy_rl.agents.defaults`).
+- ``initialize(observation_space, action_space, *, seed, f, dtype, compile, device)`` builds the
+  models on a framework and a device, once: on an agent that is already initialized with the
+  same spaces, framework, dtype and device it does nothing (the weights, for instance loaded
+  from a checkpoint, are kept; :attr:`initialized` tells), and with other ones it raises a
+  ValueError naming what differs.
+- ``step(observations) -> actions`` and ``test_step(observations) -> actions`` act (numpy in,
+  numpy actions of the environment's space out); ``update(observations, rewards, resets,
+  terminations) -> dict of floats`` records the last step's transitions and learns.
+- ``save(path)`` / ``load(path)``: ``load`` refuses a checkpoint of another class, or written with
+  other settings (naming each setting that differs).
+- ``compiles``: how many compilations the agent's compiled functions made (one per distinct input
+  signature of each function made by :meth:`Agent._compile`); it must not grow after the first
+  update.
+
+Subclass hooks: ``supported_action_spaces``, ``learns``, :meth:`_build` (models, optimisers,
+replays, after :meth:`initialize` set ``xp``, ``rng``, ``dtype``, ``device`` and the spaces),
+:meth:`_compile` / :meth:`_counted` (every compiled function goes through one of them, so that
+it is counted),
+:meth:`_asarray` / :meth:`_placed` (arrays on the agent's device), :meth:`_arrays` /
+:meth:`_load_arrays` and :meth:`_meta` / :meth:`_load_meta` (checkpoints).
+
 The trainer calls ``actions = agent.step(observations)`` during training,
 ``agent.update(observations, rewards, resets, terminations)`` after each step of the
 environments (``observations`` are the true next observations, before any reset; ``resets``
@@ -31,6 +57,8 @@ from ivy.typing import Framework, Nest
 from ivy_rl.models import check_observation_space, space_kind
 
 __all__ = ["Agent"]
+
+_MISSING = object()
 
 
 class Agent:
@@ -87,25 +115,31 @@ class Agent:
             >>> agent = A2C().initialize(env.observation_space, env.action_space, f="torch")
         """
         name = type(self).__name__
+        if f is None:
+            f = ivy.current_framework() or "numpy"
+        xp = ivy.get_framework(f=f)
+        device = "cpu" if device is None else str(device)
+        if self.initialized:
+            self._check_same_setup(observation_space, action_space, xp, dtype, device)
+            return self
         self.action_kind = space_kind(action_space, self.supported_action_spaces, who=name)
         if self.learns:
             check_observation_space(observation_space, who=name)
-        if f is None:
-            f = ivy.current_framework() or "numpy"
-        self.xp = ivy.get_framework(f=f)
+        self.xp = xp
         if dtype not in ("float32", "float64"):
             raise ValueError(f"{name}: dtype must be 'float32' or 'float64', got {dtype!r}")
-        if self.learns and self.xp.backend == "numpy":
+        if self.learns and not xp.capabilities.autodiff:
             raise ivy.errors.UnsupportedError(
-                f"{name} learns with gradients, which numpy cannot compute; choose one of "
-                "f='torch', 'jax' or 'tensorflow'"
+                f"{name} learns with gradients, which {xp.backend} cannot compute; choose a "
+                "framework with automatic differentiation: f='torch', 'jax' or 'tensorflow'"
             )
         self.observation_space, self.action_space = observation_space, action_space
         self.dtype, self.np_dtype = dtype, np.dtype(dtype)
         self.seed = int(seed)
         self.compiled = bool(compile)
         self.rng = np.random.default_rng(self.seed)
-        self.device = "cpu" if device is None else device
+        self.device = device
+        self._signatures: dict[str, set] = {}
         if self.action_kind == "Box":
             low, high = action_space.low.astype(np.float64), action_space.high.astype(np.float64)
             bounded = bool(np.all(np.isfinite(low)) and np.all(np.isfinite(high)))
@@ -114,14 +148,59 @@ class Agent:
         self.initialized = True
         return self
 
+    def _check_same_setup(self, observation_space, action_space, xp, dtype, device) -> None:
+        """Refuse to initialize again with other spaces, framework, dtype or device."""
+        differs = []
+        for what, mine, given in (
+            ("observation_space", self.observation_space, observation_space),
+            ("action_space", self.action_space, action_space),
+            ("framework", self.xp.backend, xp.backend),
+            ("dtype", self.dtype, dtype),
+            ("device", self.device, device),
+        ):
+            if mine != given:
+                differs.append(f"{what}: {mine!r} here, {given!r} asked")
+        if differs:
+            raise ValueError(
+                f"{type(self).__name__} is already initialized, differently ("
+                + "; ".join(differs)
+                + "): build a new agent for these, e.g. ivy_rl.agents.make(name, **agent.config)"
+            )
+
+    @property
+    def compiles(self) -> int:
+        """Compilations made by the agent's compiled functions so far: one per distinct input
+        signature (nest structure, shapes, dtypes, devices and Python values of the arguments)
+        that each function met, which is what ``jax.jit``, ``tf.function`` and
+        ``torch.compile`` trace anew for. 0 when running eagerly.
+
+        Example:
+            >>> agent.compiles  # after the first update of a PPO agent on jax
+            3
+        """
+        return sum(len(seen) for seen in getattr(self, "_signatures", {}).values())
+
     def _build(self) -> None:
         """Create models, optimisers, replays (after :meth:`initialize` set the spaces)."""
 
-    def _compile(self, fn: Any) -> Any:
-        """``fn`` compiled with ``ivy.compile_fn`` for the agent's framework, or as it is."""
-        if not self.compiled or self.xp.backend == "numpy":
+    def _compile(self, fn: Any, name: str | None = None) -> Any:
+        """``fn`` compiled with ``ivy.compile_fn`` for the agent's framework (or as it is, when
+        the agent runs eagerly or the framework has no compiler), counted in :attr:`compiles`."""
+        if not self.compiled or not self.xp.capabilities.compilation:
             return fn
-        return ivy.compile_fn(fn, f=self.xp)
+        return self._counted(ivy.compile_fn(fn, f=self.xp), name or fn.__name__)
+
+    def _counted(self, compiled: Any, name: str) -> Any:
+        """``compiled`` (a compiled callable, e.g. from ``ivy.compiled_scan``) counting the
+        distinct input signatures of its calls in :attr:`compiles` under ``name``."""
+        seen = self._signatures.setdefault(name, set())
+        xp = self.xp
+
+        def counted(*args: Any) -> Any:
+            seen.add(_signature(xp, args))
+            return compiled(*args)
+
+        return counted
 
     def _check_initialized(self) -> None:
         if not self.initialized:
@@ -217,7 +296,9 @@ class Agent:
 
     def load(self, path: str | os.PathLike) -> Agent:
         """Restore a state written by :meth:`save` on any backend into this initialized agent
-        (same class and spaces; its framework and dtype are kept).
+        (same class, settings and spaces; its framework, dtype and device are kept). A
+        checkpoint of another class, or written with other settings, is refused with a
+        ValueError naming each setting that differs.
 
         Returns:
             The agent itself.
@@ -232,6 +313,20 @@ class Agent:
             raise ValueError(
                 f"checkpoint {os.fspath(path)!r} holds a {meta['agent']}, not a "
                 f"{type(self).__name__}"
+            )
+        saved = meta.get("config", {})
+        mine = json.loads(json.dumps(self.config, default=_json_default))
+        differs = [
+            f"{key}: {saved.get(key, '(unset)')!r} in the checkpoint, "
+            f"{mine.get(key, '(unset)')!r} here"
+            for key in sorted(set(saved) | set(mine))
+            if saved.get(key, _MISSING) != mine.get(key, _MISSING)
+        ]
+        if differs:
+            raise ValueError(
+                f"checkpoint {os.fspath(path)!r} was written with other settings ("
+                + "; ".join(differs)
+                + "): build the agent with the checkpoint's settings to load it"
             )
         with np.load(os.path.join(path, "arrays.npz"), allow_pickle=False) as data:
             flat = {key: data[key] for key in data.files}
@@ -276,6 +371,19 @@ class Agent:
     def __repr__(self) -> str:
         where = f", f={self.xp.backend}" if self.xp is not None else ""
         return f"{type(self).__name__}({self.config}{where})"
+
+
+def _signature(xp: Any, args: Any) -> Any:
+    """A hashable key of what a compiler specialises on: the nest structure of ``args``, the
+    shape, dtype and device of each array, and the value of every other leaf."""
+    leaves, structure = ivy.nest.flatten_nest(args)
+    parts = []
+    for leaf in leaves:
+        if hasattr(leaf, "shape") and hasattr(leaf, "dtype"):
+            parts.append((tuple(leaf.shape), str(leaf.dtype), str(xp.dev(leaf))))
+        else:
+            parts.append((type(leaf).__name__, repr(leaf)))
+    return repr(structure), tuple(parts)
 
 
 def _json_default(value: Any) -> Any:

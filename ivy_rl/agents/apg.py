@@ -26,12 +26,12 @@ class APG(DifferentiableAgent):
 
     Loss: ``-mean_b sum_t discount**t r_t / horizon`` over ``batch_size`` rollouts of
     ``horizon`` steps from fresh initial states; one Adam step per update, the gradient's
-    global norm clipped at ``gradient_clip``.
+    global norm clipped at ``actor_gradient_clip``.
 
     Args:
         hidden_sizes, activation: the policy's MLP.
         actor_lr: Adam's learning rate.
-        gradient_clip: global norm of the gradient (0: no clipping).
+        actor_gradient_clip: global norm of the gradient (0: no clipping).
         discount: γ of the return.
         batch_size: rollouts per update.
         horizon: steps per rollout.

@@ -2,9 +2,11 @@
 
 ``'update'``: the whole update (returns, every optimisation step) is one compiled function;
 ``'steps'``: the critic's values and each optimisation step are compiled on their own, and the
-loops (the returns' scan, the mini-batches) run on the host; ``'auto'``: ``'update'`` where the framework's compiler compiles ``ivy.scan`` as a loop
-(jax, tensorflow), ``'steps'`` where it unrolls it (``torch.compile``), as the backend's
-capability ``compiled_loops`` says (:func:`compiled_scan_unrolls`).
+loop over the mini-batches is an ``ivy.compiled_scan`` (a host loop over the compiled step where
+the compiler unrolls loops, one compiled scan where it keeps them); ``'auto'``: ``'update'``
+where the framework's compiler compiles ``ivy.scan`` as a loop (jax, tensorflow), ``'steps'``
+where it unrolls it (``torch.compile``), as the backend's capability ``compiled_loops`` says
+(:func:`compiled_scan_unrolls`).
 
 Example:
     >>> compiled_scan_unrolls(f="jax")

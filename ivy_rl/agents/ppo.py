@@ -15,8 +15,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from ivy_rl import updaters
 from ivy_rl.agents.a2c import A2C
+from ivy_rl.replays import Segment
+from ivy_rl.updaters import ClippedRatio
 
 __all__ = ["PPO"]
 
@@ -28,6 +29,8 @@ class PPO(A2C):
     mini-batches over each segment, training the actor on the clipped surrogate and the critic
     on the λ-returns; the actor stops for the rest of the update once the KL estimate of a
     mini-batch exceeds ``kl_threshold`` (the critic goes on).
+
+    Its actor updater is a :class:`~ivy_rl.updaters.ClippedRatio`.
 
     Args:
         ratio_clip: ε of the clipped ratio ``[1 - ε, 1 + ε]``.
@@ -42,30 +45,29 @@ class PPO(A2C):
     """
 
     _unused = ("critic_iterations",)
-    _stored_outputs = ("log_probs",)
     _defaults: dict[str, Any] = dict(
         segment_size=2048,
         batch_size=64,
         epochs=10,
         ratio_clip=0.2,
         kl_threshold=0.015,
-        gradient_clip=0.5,
+        actor_gradient_clip=0.5,
+        critic_gradient_clip=0.5,
     )
-
-    def _passes(self) -> int:
-        return self.config["epochs"]
-
-    def _actor_loss(self, actor_v, stats, batch):
-        dist = self.model.actor(batch["observations"], stats["obs"], v=actor_v)
-        return updaters.clipped_ratio_loss(
-            self.xp,
-            dist,
-            batch["actions"],
-            batch["log_probs"],
-            batch["advantages"],
-            self.config["ratio_clip"],
-            self.config["entropy_coeff"],
-        )
+    parts = {
+        **A2C.parts,
+        "replay": (Segment, {**A2C._REPLAY, "epochs": "batch_iterations"}),
+        "actor_updater": (
+            ClippedRatio,
+            {
+                "actor_lr": "lr",
+                "ratio_clip": "ratio_clip",
+                "kl_threshold": "kl_threshold",
+                "entropy_coeff": "entropy_coeff",
+                "actor_gradient_clip": "gradient_clip",
+            },
+        ),
+    }
 
     def _optimize(self, v, states, stats, batch, orders):
         xp = self.xp
@@ -87,15 +89,15 @@ class PPO(A2C):
         v, states, active = carry
         keys = ("observations", "actions", "log_probs", "advantages", "returns")
         part = self._select(batch, indices, keys)
-        actor_v, actor_state, actor_infos = self._minimize(
-            "actor", lambda w: self._actor_loss(w, stats, part), v["actor"], states["actor"]
+        actor_v, actor_state, actor_infos = self.actor_updater.minimize(
+            lambda w: self._actor_loss(w, stats, part), v["actor"], states["actor"]
         )
-        threshold = self.config["kl_threshold"]
+        threshold = self.actor_updater.kl_threshold
         if threshold is not None:
             actor_v = self._masked(active, actor_v, v["actor"])
             actor_state = self._masked(active, actor_state, states["actor"])
-        critic_v, critic_state, critic_infos = self._minimize(
-            "critic", lambda w: self._critic_loss(w, stats, part), v["critic"], states["critic"]
+        critic_v, critic_state, critic_infos = self.critic_updater.minimize(
+            lambda w: self._critic_loss(w, stats, part), v["critic"], states["critic"]
         )
         ys = {f"actor/{k}": actor_infos[k] for k in _ACTOR_LOGS}
         ys["actor/taken"] = self.xp.astype(active, actor_infos["loss"].dtype)

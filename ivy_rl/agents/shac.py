@@ -45,6 +45,7 @@ class SHAC(DifferentiableAgent):
         batch_size: simulated environments carried across updates.
         critic_hidden_sizes: the critic's MLP (default: ``hidden_sizes``).
         critic_lr: the critic's Adam learning rate.
+        critic_gradient_clip: global norm of the critic's gradients (0: no clipping).
         trace_decay: λ of the TD(λ) targets.
         critic_iterations: passes over a rollout's transitions per update.
         critic_batches: mini-batches per pass.
@@ -62,6 +63,7 @@ class SHAC(DifferentiableAgent):
         actor_lr=2e-3,
         critic_hidden_sizes=None,
         critic_lr=2e-3,
+        critic_gradient_clip=0.0,
         trace_decay=0.95,
         critic_iterations=8,
         critic_batches=4,
@@ -188,6 +190,9 @@ class SHAC(DifferentiableAgent):
             return updaters.value_loss(xp, values * weights, part["targets"] * weights)
 
         loss, grads = xp.execute_with_gradients(loss_fn, critic_v)[:2]
+        clip = self.config["critic_gradient_clip"]
+        if clip:
+            grads = xp.clip_by_global_norm(grads, clip)[0]
         critic_v, critic_state = self.critic_optimizer.step(critic_v, grads, critic_state)
         return (critic_v, critic_state), {"loss": loss}
 

@@ -123,7 +123,7 @@ class DifferentiableAgent(Agent):
         hidden_sizes=(64, 64),
         activation="tanh",
         actor_lr=1e-3,
-        gradient_clip=1.0,
+        actor_gradient_clip=1.0,
         discount=0.99,
         batch_size=64,
         horizon=32,
@@ -284,7 +284,7 @@ class DifferentiableAgent(Agent):
         xp = self.xp
         loss, grads, aux = xp.execute_with_gradients(loss_fn, actor_v)
         norm = _global_norm(xp, grads)
-        clip = self.config["gradient_clip"]
+        clip = self.config["actor_gradient_clip"]
         if clip:
             grads = xp.clip_by_global_norm(grads, clip)[0]
         actor_v, actor_state = self.actor_optimizer.step(actor_v, grads, actor_state)

@@ -12,35 +12,38 @@ from __future__ import annotations
 
 from typing import Any
 
-from ivy_rl import updaters
 from ivy_rl.agents.a2c import A2C
+from ivy_rl.updaters import TrustRegionPolicyGradient
 
 __all__ = ["TRPO"]
 
 
 class TRPO(A2C):
     """Trust region policy optimisation (Schulman et al., 2015): once per segment, the actor
-    takes the natural gradient step of the importance-sampled surrogate within a KL trust
-    region (conjugate gradient on Fisher-vector products, backtracking line search); the
-    critic then regresses the λ-returns for ``critic_iterations`` passes.
+        takes the natural gradient step of the importance-sampled surrogate within a KL trust
+        region (conjugate gradient on Fisher-vector products, backtracking line search); the
+        critic then regresses the λ-returns for ``critic_iterations`` passes.
 
-    The old policy of the KL is rebuilt from the distribution parameters stored when acting
-    (not recomputed from the actor's variables), so it is a constant of the step on every
-    backend.
+        The old policy of the KL is rebuilt from the distribution parameters stored when acting
+        (not recomputed from the actor's variables), so it is a constant of the step on every
+        backend.
 
-    Args:
-        max_kl: the trust region's radius δ (mean KL between the old and new policies).
-        cg_steps: conjugate-gradient iterations.
-        damping: added to the Fisher-vector products (``F + damping I``).
-        backtrack_steps: candidate steps of the line search.
-        backtrack_coefficient: shrink factor between candidates.
-        Others: as for :class:`~ivy_rl.agents.A2C`.
+        Its actor updater is a :class:`~ivy_rl.updaters.TrustRegionPolicyGradient` (no optimiser,
+    so no ``actor_lr``).
 
-    Example:
-        >>> TRPO(max_kl=0.01, cg_steps=10, backtrack_steps=10)
+        Args:
+            max_kl: the trust region's radius δ (mean KL between the old and new policies).
+            cg_steps: conjugate-gradient iterations.
+            damping: added to the Fisher-vector products (``F + damping I``).
+            backtrack_steps: candidate steps of the line search.
+            backtrack_coefficient: shrink factor between candidates.
+            Others: as for :class:`~ivy_rl.agents.A2C`.
+
+        Example:
+            >>> TRPO(max_kl=0.01, cg_steps=10, backtrack_steps=10)
     """
 
-    _stored_outputs = ("log_probs", "dist")
+    _unused = ("actor_lr", "actor_gradient_clip")
     _defaults: dict[str, Any] = dict(
         max_kl=0.01,
         cg_steps=10,
@@ -48,6 +51,14 @@ class TRPO(A2C):
         backtrack_steps=10,
         backtrack_coefficient=0.8,
     )
+    _TRUST_REGION = ("max_kl", "cg_steps", "damping", "backtrack_steps", "backtrack_coefficient")
+    parts = {
+        **A2C.parts,
+        "actor_updater": (
+            TrustRegionPolicyGradient,
+            {**{k: k for k in _TRUST_REGION}, "entropy_coeff": "entropy_coeff"},
+        ),
+    }
 
     def _optimize(self, v, states, stats, batch, orders):
         actor_v, actor_logs = self._run_once(
@@ -57,36 +68,10 @@ class TRPO(A2C):
         logs = {f"actor/{k}": x for k, x in actor_logs.items()}
         logs.update(critic_logs)
         new_v = {"actor": actor_v, "critic": critic_v}
-        return new_v, {"actor": states["actor"], "critic": critic_state}, logs
+        return new_v, {"critic": critic_state}, logs
 
     def _trust_region_step(self, actor_v, stats, batch):
-        xp = self.xp
-        c = self.config
-        obs = batch["observations"]
-        current = self.model.actor(obs, stats["obs"], v=actor_v)
-        old = current.like(
-            {k[len("dist_") :]: a for k, a in batch.items() if k.startswith("dist_")}
-        )
+        def actor(w):
+            return self.model.actor(batch["observations"], stats["obs"], v=w)
 
-        def surrogate(w):
-            dist = self.model.actor(obs, stats["obs"], v=w)
-            ratios = xp.exp(dist.log_prob_raw(batch["actions"]) - batch["log_probs"])
-            loss = -xp.mean(ratios * batch["advantages"])
-            if c["entropy_coeff"]:
-                loss = loss - c["entropy_coeff"] * xp.mean(dist.entropy())
-            return loss
-
-        def kl(w):
-            return xp.mean(old.kl(self.model.actor(obs, stats["obs"], v=w)))
-
-        return updaters.trust_region_step(
-            xp,
-            actor_v,
-            surrogate,
-            kl,
-            max_kl=c["max_kl"],
-            cg_steps=c["cg_steps"],
-            damping=c["damping"],
-            backtrack_steps=c["backtrack_steps"],
-            backtrack_coefficient=c["backtrack_coefficient"],
-        )
+        return self.actor_updater.step(actor, actor_v, batch["distribution"], batch)

@@ -29,6 +29,32 @@ def test_all_namespaces_export_the_same_public_names(request):
         )
 
 
+def _public_attributes(ns) -> set[str]:
+    """What a user sees in a namespace: every public attribute, listed or not."""
+    return {n for n in vars(ns) if not n.startswith("_")}
+
+
+def test_namespaces_have_no_public_names_beyond_their_list(request):
+    """Exactly ``__all__`` and the namespace attributes (``backend``, ``capabilities``, ``use``):
+    no group modules (``ivy.torch.compilation``), no framework module (``ivy.torch.torch``), no
+    helpers (``NATIVE_DTYPES``, ``add_array_methods``); the same on every backend."""
+    from ivy.backends._assemble import NAMESPACE_ATTRIBUTES
+
+    seen = {}
+    for backend in request.config.ivy_backends:
+        ns = getattr(ivy, backend)
+        extra = _public_attributes(ns) - set(ns.__all__) - set(NAMESPACE_ATTRIBUTES)
+        assert not extra, f"ivy.{backend} also exports {sorted(extra)}"
+        for attribute in NAMESPACE_ATTRIBUTES:
+            assert hasattr(ns, attribute), f"ivy.{backend}.{attribute}"
+        # dtypes that the library cannot hold (now) are listed but no attribute (see the docs)
+        seen[backend] = _public_attributes(ns) | (set(ns.__all__) & set(ivy.dtypes.DTYPE_NAMES))
+    reference = next(iter(seen.values()))
+    assert all(names == reference for names in seen.values()), {
+        b: sorted(names ^ reference) for b, names in seen.items()
+    }
+
+
 def test_every_core_function_is_in_every_namespace(xp):
     for info in ivy.list_functions():
         assert callable(getattr(xp, info.name)), info.name

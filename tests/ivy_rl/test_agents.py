@@ -224,7 +224,7 @@ def test_clear_errors_list_what_is_available():
     with pytest.raises(TypeError, match="its settings are"):
         ivy_rl.PPO(learning_rate=1.0)
     with pytest.raises(
-        ValueError, match="unknown fusion 'all'; choose one of 'auto', 'update', 'steps'"
+        ValueError, match="setting .fusion. must be one of .auto., .update., .steps., got .all."
     ):
         ivy_rl.PPO(fusion="all")
     with pytest.raises(TypeError, match="supported action spaces: Box, Discrete"):
@@ -240,3 +240,130 @@ def test_clear_errors_list_what_is_available():
     )
     with pytest.raises(RuntimeError, match="before step"):
         agent.update(np.zeros((1, 3)), np.zeros(1), np.zeros(1), np.zeros(1))
+
+
+# ----------------------------------------------------------------------------------------------
+# Parts, make's defaults and checks, compile counts, checkpoints' settings, devices
+# ----------------------------------------------------------------------------------------------
+
+
+def test_an_agent_of_parts_equals_the_agent_of_the_same_settings():
+    from ivy_rl.models import ActorCriticModel
+    from ivy_rl.replays import Segment
+    from ivy_rl.updaters import ClippedRatio, ValueRegression
+
+    parts = dict(
+        model=ActorCriticModel(hidden_sizes=(16,), normalize_returns=True),
+        replay=Segment(16, batch_size=16, batch_iterations=2),
+        actor_updater=ClippedRatio(lr=3e-4, kl_threshold=0.015, gradient_clip=0.5),
+        critic_updater=ValueRegression(lr=1e-3, gradient_clip=0.5),
+    )
+    agent = ivy_rl.PPO(fusion="update", **parts)
+    flat = ivy_rl.agents.make("PPO", fusion="update", **SETTINGS["PPO"])
+    assert agent.config == flat.config
+    assert agent.model is parts["model"] and agent.actor_updater is parts["actor_updater"]
+    np.testing.assert_equal(_update_of(agent, "Box"), _update_of(flat, "Box"))
+    with pytest.raises(TypeError, match=r"settings \['epochs'\] belong to the replay given"):
+        ivy_rl.PPO(replay=Segment(16), epochs=3)
+
+
+def _update_of(agent, space):
+    """The variables after one update of ``agent`` (float64, torch eager) on fixed data."""
+    agent.initialize(
+        gym.spaces.Box(-5, 5, (3,)),
+        SPACES[space],
+        seed=7,
+        f="torch",
+        dtype="float64",
+        compile=False,
+    )
+    data = np.random.default_rng(11)
+    obs = data.normal(size=(2, 3))
+    for t in range(agent.config["segment_size"]):
+        agent.step(obs)
+        obs = data.normal(size=(2, 3))
+        agent.update(obs, data.normal(size=2), np.array([t % 5 == 4, False]), np.zeros(2, bool))
+    return ivy.nest.flatten_nest(ivy.nest.map_nest(lambda x: np.asarray(ivy.to_numpy(x)), agent.v))[
+        0
+    ]
+
+
+def test_make_applies_the_family_defaults_and_checks_every_setting():
+    families = ivy_rl.agents.defaults.FAMILIES
+    for env_id, family in [
+        ("CartPole-v1", "classic_discrete"),
+        ("Pendulum-v1", "classic_continuous"),
+        ("Hopper-v5", "mujoco"),
+        ("ivy_gym/Pendulum-v0", "ivy_gym"),
+    ]:
+        assert ivy_rl.agents.task_family(env_id) == family and family in families
+    cartpole = ivy_rl.agents.make("ppo", environment="CartPole-v1", epochs=5)
+    row = ivy_rl.agents.DEFAULTS["PPO"]["classic_discrete"]
+    assert cartpole.config["segment_size"] == row["segment_size"] == 32
+    assert cartpole.config["epochs"] == 5  # the user's settings win
+    assert ivy_rl.agents.make("PPO").config["segment_size"] == 2048  # no environment: PPO's own
+    assert set(cartpole.config) == set(ivy_rl.PPO().config)  # every value used is recorded
+    for settings, error, words in [
+        ({"segment_size": "32"}, TypeError, "setting 'segment_size' must be an integer >= 1"),
+        ({"hidden_sizes": 64}, TypeError, "setting 'hidden_sizes' must be a non-empty list"),
+        ({"discount": 1.5}, ValueError, "setting 'discount' must be a number >= 0 and <= 1"),
+        ({"batch_size": 0}, ValueError, "setting 'batch_size' must be an integer >= 1 or None"),
+        ({"normalize_returns": 1}, TypeError, "setting 'normalize_returns' must be true or"),
+        ({"learning_rate": 1.0}, TypeError, "unknown settings \\['learning_rate'\\]"),
+    ]:
+        with pytest.raises(error, match=words):
+            ivy_rl.agents.make("PPO", environment="CartPole-v1", **settings)
+
+
+def test_no_compilation_after_the_first_update_and_loaded_weights_are_kept(tmp_path):
+    # jax: the acting, testing and update functions compile once each, on their first call
+    obs_space, act_space = gym.spaces.Box(-1, 1, (3,)), gym.spaces.Discrete(2)
+    agent = ivy_rl.PPO(**SETTINGS["PPO"]).initialize(obs_space, act_space, seed=3, f="jax")
+    data = np.random.default_rng(0)
+    counts = []
+    for _update in range(3):
+        for _t in range(agent.config["segment_size"]):
+            agent.step(data.normal(size=(2, 3)))
+            agent.update(data.normal(size=(2, 3)), np.ones(2), np.zeros(2, bool), np.zeros(2, bool))
+        agent.test_step(data.normal(size=(1, 3)))
+        counts.append(agent.compiles)
+    assert counts[0] == 3 and counts == [counts[0]] * 3, counts
+    # a loaded agent keeps its weights when initialized again with the same setup
+    agent.save(tmp_path / "ckpt")
+    loaded = ivy_rl.PPO(**SETTINGS["PPO"]).initialize(obs_space, act_space, seed=9, f="jax")
+    loaded.load(tmp_path / "ckpt")
+    weights = ivy.to_numpy(loaded.v["actor"]["head"]["logits"]["w"])
+    assert loaded.initialize(obs_space, act_space, seed=9, f="jax") is loaded
+    np.testing.assert_array_equal(ivy.to_numpy(loaded.v["actor"]["head"]["logits"]["w"]), weights)
+    with pytest.raises(ValueError, match="already initialized, differently .*framework: 'jax'"):
+        loaded.initialize(obs_space, act_space, f="torch")
+    # ... and refuses a checkpoint of other settings, naming each
+    other = ivy_rl.PPO(**dict(SETTINGS["PPO"], epochs=3, actor_lr=1e-3))
+    other.initialize(obs_space, act_space, f="jax")
+    with pytest.raises(ValueError, match="actor_lr: 0.0003 in the checkpoint, 0.001 here; epochs"):
+        other.load(tmp_path / "ckpt")
+
+
+def test_arrays_live_on_the_agents_device(diff_backend, target_device):
+    # compiled where the compiler keeps loops (seconds), eager where it unrolls them
+    compile = ivy.get_framework(f=diff_backend).capabilities.compiled_loops
+    agent = ivy_rl.TRPO(**dict(SETTINGS["TRPO"], cg_steps=1, backtrack_steps=1)).initialize(
+        gym.spaces.Box(-1, 1, (3,)),
+        gym.spaces.Box(-1, 1, (2,)),
+        f=diff_backend,
+        compile=compile,
+        device=target_device,
+    )
+    xp = agent.xp
+    data = np.random.default_rng(0)
+    for _t in range(agent.config["segment_size"]):
+        agent.step(data.normal(size=(2, 3)))
+        agent.update(data.normal(size=(2, 3)), np.ones(2), np.zeros(2, bool), np.zeros(2, bool))
+    assert agent.updates == 1
+    # weights, optimiser states, statistics, and the segment the update reads (with TRPO's
+    # stored distribution parameters)
+    leaves = ivy.nest.flatten_nest((agent.v, agent.optimizer_states, agent.stats))[0]
+    segment = agent._segment()
+    assert set(segment["distribution"]) == {"loc", "scale"}
+    leaves += ivy.nest.flatten_nest(segment)[0]
+    assert leaves and {str(xp.dev(leaf)) for leaf in leaves} == {target_device}

@@ -49,12 +49,12 @@ def assemble_registered(name: str, spec: Any) -> types.ModuleType:
             return None
         return host_bridge(fn_name, xp, is_array, helpers["dtype_name"])
 
-    module.host_bridged = []  # the names that run through numpy, for the docs and the curious
+    module.__ivy_host_bridged__ = []  # the names that run through numpy, for the docs
 
     def recorded(fn_name: str):
         fn = fallback(fn_name)
         if fn is not None:
-            module.host_bridged.append(fn_name)
+            module.__ivy_host_bridged__.append(fn_name)
         return fn
 
     info = xp.__array_namespace_info__() if hasattr(xp, "__array_namespace_info__") else None

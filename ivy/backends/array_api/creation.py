@@ -3,9 +3,18 @@ Python values keep ivy's default dtypes (bool, int64, float32, complex64)."""
 
 from __future__ import annotations
 
+import numpy as np
+
+from ivy.backends._constants import ConstantCache
 from ivy.backends._creation_args import beyond_int64, has_int_beyond_int64, linspace_dtype
 from ivy.backends._dlpack import exportable
-from ivy.backends.array_api._unbound import backend_name, native_device, native_dtype, xp
+from ivy.backends.array_api._unbound import (
+    backend_name,
+    backend_ns,
+    native_device,
+    native_dtype,
+    xp,
+)
 
 
 def _default_dtype(value):
@@ -117,3 +126,18 @@ def from_dlpack(x, /, *, device=None, copy=None):
 
 def meshgrid(*arrays, indexing="xy"):
     return list(xp.meshgrid(*arrays, indexing=indexing))
+
+
+_CONSTANTS = ConstantCache()
+
+
+def constant(value, /, *, dtype=None, device=None):
+    """A model constant: as ``asarray``, a numpy array's conversion kept per dtype and device
+    (numpy's and a registered library's arrays have no trace to keep out of)."""
+    if not isinstance(value, np.ndarray):
+        return backend_ns.asarray(value, dtype=dtype, device=device)
+    return _CONSTANTS.get(
+        value,
+        (backend_name, native_dtype(dtype), device),
+        lambda v: backend_ns.asarray(v, dtype=dtype, device=device, copy=True),
+    )

@@ -5,13 +5,16 @@ names accepted, and ``finfo``, ``iinfo`` and ``isdtype`` by ivy's own rules
 from __future__ import annotations
 
 from ivy.backends.array_api._unbound import (
-    dtype_name,
+    array_types,
+    backend_name,
+    backend_ns,
     native_device,
     native_dtype,
     native_dtypes,
     xp,
 )
 from ivy.core import _dtype_rules as rules
+from ivy.errors import UnsupportedError
 
 
 def _native(value):
@@ -61,3 +64,23 @@ def iinfo(type, /):  # noqa: A002
 
 def isdtype(dtype, kind):
     return rules.isdtype(_name(dtype), kind, _name)
+
+
+def dtype_name(dtype, /):
+    """The ivy name of a native dtype, an array's dtype, a name or a numpy scalar type."""
+    if isinstance(dtype, array_types):
+        dtype = dtype.dtype
+    if not isinstance(dtype, (str, type)):
+        for name, native in native_dtypes.items():
+            if native is not None and native == dtype:
+                return name
+    return rules.name_of(dtype)
+
+
+def enable_float64():
+    """Nothing to switch: the library holds 64-bit types, or says it cannot."""
+    if not backend_ns.capabilities.float64:
+        raise UnsupportedError(
+            f"the backend {backend_name!r} has no float64 (it was registered with "
+            f"float64=False); compute in float32 on it, or choose another framework."
+        )

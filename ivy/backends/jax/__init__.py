@@ -12,25 +12,24 @@ Most functions come from the shared layer (``ivy/backends/array_api/``) bound to
 the modules here hold only what differs on jax.
 """
 
-import sys
+import sys as _sys
 
-import jax.numpy
+import jax.numpy as _jnp
 
-from ivy.backends import _reals
-from ivy.backends._assemble import assemble
+from ivy.backends import _assemble, _reals
 from ivy.backends.jax import _helpers
 
-assemble(
-    sys.modules[__name__],
+_assemble.assemble(
+    _sys.modules[__name__],
     backend="jax",
     package=__name__,
     native_dtypes=_helpers.NATIVE_DTYPES,
-    xp=jax.numpy,
+    xp=_jnp,
     bind=_helpers.SHARED,
     reals=_reals.WRAPPERS,
     scalars_need_shims=True,
     dtypes_now=_helpers.X64_DTYPES,
     devices=_helpers.devices,
     array_api_capabilities=_helpers.ARRAY_API_CAPABILITIES,
-    array_types=(type(jax.numpy.zeros(())),),
+    array_types=(type(_jnp.zeros(())),),
 )

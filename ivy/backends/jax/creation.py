@@ -6,6 +6,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
+from ivy.backends._constants import ConstantCache
 from ivy.backends._creation_args import beyond_int64, check_fill_value, linspace_dtype
 from ivy.backends.jax._helpers import (
     check_x64_of,
@@ -123,3 +124,20 @@ def from_dlpack(x, /, *, device=None, copy=None):
     out = jax.dlpack.from_dlpack(x, device=native_device(device), copy=copy)
     # jax 0.10 shares a torch tensor's memory even with copy=True: copy it here.
     return jnp.array(out, copy=True) if copy else out
+
+
+_CONSTANTS = ConstantCache()
+
+
+def constant(value, /, *, dtype=None, device=None):
+    """Under ``jax.jit`` the value is a constant of the program; eagerly, the array is made once
+    per dtype, device and x64 setting and kept (never a tracer: a trace's arrays are its own)."""
+    if not isinstance(value, np.ndarray):
+        return asarray(value, dtype=dtype, device=device)
+    key = (native_dtype(dtype), native_device(device), jax.config.jax_enable_x64)
+    return _CONSTANTS.get(
+        value,
+        key,
+        lambda v: asarray(v, dtype=dtype, device=device, copy=True),  # (no alias of v)
+        keep=lambda out: not isinstance(out, jax.core.Tracer),
+    )

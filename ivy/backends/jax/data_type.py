@@ -5,6 +5,7 @@ jax's dtype objects, as the Array API asks."""
 
 from __future__ import annotations
 
+import jax
 import jax.numpy as jnp
 import numpy as np
 
@@ -54,3 +55,8 @@ def iinfo(type, /):
 
 def isdtype(dtype, kind):
     return rules.isdtype(_name(dtype), kind, _name)
+
+
+def enable_float64():
+    """jax's 64-bit switch, ``jax_enable_x64``, process-wide."""
+    jax.config.update("jax_enable_x64", True)

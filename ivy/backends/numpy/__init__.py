@@ -5,23 +5,22 @@ Most functions come from the shared layer (``ivy/backends/array_api/``) bound to
 modules here hold only what differs on numpy.
 """
 
-import sys
+import sys as _sys
 
-import numpy
+import numpy as _numpy
 
-from ivy.backends import _reals
-from ivy.backends._assemble import assemble
+from ivy.backends import _assemble, _reals
 from ivy.backends.numpy import _helpers
 
-assemble(
-    sys.modules[__name__],
+_assemble.assemble(
+    _sys.modules[__name__],
     backend="numpy",
     package=__name__,
     native_dtypes=_helpers.NATIVE_DTYPES,
-    xp=numpy,
+    xp=_numpy,
     bind=_helpers.SHARED,
     reals=_reals.WRAPPERS,
     scalars_need_shims=True,
     natives_in_namespace=True,
-    array_types=(numpy.ndarray,),
+    array_types=(_numpy.ndarray,),
 )

@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ivy.backends.numpy._helpers import NATIVE_DTYPES, check_device, dtype_name, native_dtype
+from ivy.backends.numpy._helpers import NATIVE_DTYPES, check_device, native_dtype
+from ivy.backends.numpy._helpers import dtype_name as _native_name
 from ivy.core import _dtype_rules as rules
 
 _PYTHON_SCALARS = (bool, int, float, complex)
@@ -36,8 +37,8 @@ def astype(x, dtype, /, *, copy=True, device=None):
 def _name(dtype_or_array) -> str:
     dt = getattr(dtype_or_array, "dtype", None)
     if dt is not None and not isinstance(dtype_or_array, type):
-        return dtype_name(dt)
-    return dtype_name(native_dtype(dtype_or_array))
+        return _native_name(dt)
+    return _native_name(native_dtype(dtype_or_array))
 
 
 def finfo(type, /):

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import tensorflow as tf
 
+from ivy.backends._constants import ConstantCache
 from ivy.backends._creation_args import linspace_dtype
 from ivy.backends.tensorflow._helpers import (
     TENSOR_TYPES,
@@ -198,3 +199,15 @@ def tril(x, /, *, k=0):
 def triu(x, /, *, k=0):
     x = tensor(x)
     return tf.where(_triangle_mask(x, k, False), x, tf.zeros((), x.dtype))
+
+
+_CONSTANTS = ConstantCache()
+
+
+def constant(value, /, *, dtype=None, device=None):
+    """Inside a ``tf.function`` the value is a constant of the graph; eagerly, the tensor is
+    made once per dtype and device and kept."""
+    if not isinstance(value, np.ndarray) or not tf.executing_eagerly():
+        return asarray(value, dtype=dtype, device=device)
+    key = (native_dtype(dtype), device)
+    return _CONSTANTS.get(value, key, lambda v: asarray(v, dtype=dtype, device=device))

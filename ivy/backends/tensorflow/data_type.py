@@ -46,3 +46,15 @@ def iinfo(type, /):
 
 def isdtype(dtype, kind):
     return rules.isdtype(_name(dtype), kind, _name)
+
+
+def dtype_name(dtype, /):
+    if not isinstance(dtype, (tf.dtypes.DType, type, str)):
+        dtype = getattr(dtype, "dtype", dtype)  # a tensor, a variable or a numpy array
+    if isinstance(dtype, tf.dtypes.DType):
+        return rules.name_of(dtype.name)
+    return rules.name_of(dtype)
+
+
+def enable_float64():
+    """tensorflow holds 64-bit types always."""

@@ -1,19 +1,19 @@
 """ivy's torch backend: ``ivy.torch``. Dtypes are torch's own (``ivy.torch.float32 is
 torch.float32``); the default float dtype is float32, as on every backend."""
 
-import sys
+import sys as _sys
 
-import torch
+import torch as _torch
 
-from ivy.backends._assemble import assemble
-from ivy.backends.torch._helpers import NATIVE_DTYPES, REALS, devices
+from ivy.backends import _assemble
+from ivy.backends.torch import _helpers
 
-assemble(
-    sys.modules[__name__],
+_assemble.assemble(
+    _sys.modules[__name__],
     backend="torch",
     package=__name__,
-    native_dtypes=NATIVE_DTYPES,
-    reals=REALS,
-    devices=devices,
-    array_types=(torch.Tensor, torch.nn.Parameter),
+    native_dtypes=_helpers.NATIVE_DTYPES,
+    reals=_helpers.REALS,
+    devices=_helpers.devices,
+    array_types=(_torch.Tensor, _torch.nn.Parameter),
 )

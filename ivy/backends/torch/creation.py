@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import torch
 
+from ivy.backends._constants import ConstantCache
 from ivy.backends._creation_args import beyond_int64, check_fill_value
 from ivy.backends._dlpack import exportable
 from ivy.backends.torch._helpers import (
@@ -201,3 +202,19 @@ def tril(x, /, *, k=0):
 
 def triu(x, /, *, k=0):
     return _triu(x, k)
+
+
+_CONSTANTS = ConstantCache()
+
+
+def constant(value, /, *, dtype=None, device=None):
+    """Inside ``torch.compile`` a numpy array becomes an input of the graph (dynamo converts it
+    without a copy at each call and guards on its shape and dtype only, so a constant of another
+    object recompiles nothing); eagerly, the tensor is made once and kept (a copy: it never
+    shares memory with the numpy array)."""
+    if torch.compiler.is_compiling() or not isinstance(value, np.ndarray):
+        return asarray(value, dtype=dtype, device=device)
+    dtype, device = native_dtype(dtype), native_device(device)
+    return _CONSTANTS.get(
+        value, (dtype, device), lambda v: asarray(v, dtype=dtype, device=device, copy=True)
+    )

@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import torch
 
-from ivy.backends.torch._helpers import NATIVE_DTYPES, dtype_name, native_device, native_dtype
+from ivy.backends.torch._helpers import NATIVE_DTYPES, native_device, native_dtype
+from ivy.backends.torch._helpers import dtype_name as _native_name
 from ivy.core import _dtype_rules as rules
 
 _SCALARS = (bool, int, float, complex)
@@ -19,8 +20,8 @@ def astype(x, dtype, /, *, copy=True, device=None):
 
 def _name(dtype_or_array) -> str:
     if isinstance(dtype_or_array, torch.Tensor):
-        return dtype_name(dtype_or_array.dtype)
-    return dtype_name(native_dtype(dtype_or_array))
+        return _native_name(dtype_or_array.dtype)
+    return _native_name(native_dtype(dtype_or_array))
 
 
 def can_cast(from_, to, /):
@@ -43,3 +44,15 @@ def iinfo(type, /):
 
 def isdtype(dtype, kind):
     return rules.isdtype(_name(dtype), kind, _name)
+
+
+def dtype_name(dtype, /):
+    if isinstance(dtype, torch.Tensor):
+        dtype = dtype.dtype
+    if isinstance(dtype, torch.dtype):
+        return _native_name(dtype)
+    return rules.name_of(dtype)
+
+
+def enable_float64():
+    """torch holds 64-bit types always."""

@@ -21,7 +21,7 @@ import pytest
 import ivy
 from ivy.core._dtype_rules import FInfo, IInfo
 from tests.conftest import require
-from tests.helpers import api, api_f, check, dtype_name, native
+from tests.helpers import api, api_f, check, dtype_name, native, numpy_of
 
 SIGNED = [-2.7, -1.0, -0.0, 0.0, 0.4, 1.5, 2.7, 100.25]
 
@@ -436,3 +436,38 @@ def test_astype_with_device(backend, dtype):
     a = np.array([0.5, 1.0, 2.0], np.float32)
     for fn in api(backend, "astype"):
         check(fn(native(a, backend), dtype, device="cpu"), a.astype(dtype), backend)
+
+
+# ----------------------------------------------------------------------------------------------
+# dtype_name and enable_float64: what applied code uses instead of a framework's name
+# ----------------------------------------------------------------------------------------------
+
+_NAMED = ("bool", "int8", "int32", "int64", "uint8", "float16", "float32", "float64", "complex64")
+
+
+def test_dtype_name_of_dtype_objects_arrays_and_names(backend, xp):
+    for name in _NAMED:
+        if not hasattr(xp, name):  # a dtype the library lacks (float16 on array_api_strict)
+            continue
+        assert ivy.dtype_name(getattr(xp, name)) == name
+        assert xp.dtype_name(getattr(xp, name)) == name
+        array = native(np.zeros(2, dtype=name), backend)
+        assert ivy.dtype_name(array) == xp.dtype_name(array) == name
+        assert xp.dtype_name(name) == name
+    assert xp.dtype_name(np.float64) == "float64"  # numpy's scalar types
+    assert ivy.dtype_name(np.dtype("int16")) == "int16"
+    with pytest.raises(TypeError, match="float128"):
+        xp.dtype_name("float128")
+    with pytest.raises(TypeError, match="float128"):
+        ivy.dtype_name("float128")
+
+
+def test_enable_float64_makes_float64_work(backend, xp):
+    assert xp.capabilities.float64
+    ivy.enable_float64(f=backend)
+    xp.enable_float64()
+    x = xp.asarray([0.1], dtype="float64")
+    assert ivy.dtype_name(x) == "float64"
+    np.testing.assert_array_equal(numpy_of(x * 3.0), np.array([0.1]) * 3.0)
+    with pytest.raises(ivy.NoFrameworkError, match="set_framework"):
+        ivy.enable_float64()
