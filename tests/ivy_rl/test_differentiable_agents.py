@@ -225,6 +225,15 @@ def test_bad_settings_name_the_setting():
         SHAC(segment_size=3)
 
 
+def test_make_applies_the_ivy_gym_defaults():
+    agent = ivy_rl.agents.make("SHAC", environment=PENDULUM, horizon=16)
+    row = ivy_rl.agents.DEFAULTS["SHAC"]["ivy_gym"]
+    assert agent.config["horizon"] == 16
+    assert agent.config["critic_iterations"] == row["critic_iterations"]
+    with pytest.raises(ValueError, match="horizon"):
+        ivy_rl.agents.make("APG", environment=PENDULUM, horizon=0)
+
+
 def test_core_parameters_reach_the_core():
     agent = APG()
     agent.bind_environment("ivy_gym/Reacher-v0", {"num_joints": 3})
@@ -234,7 +243,14 @@ def test_core_parameters_reach_the_core():
 def test_checkpoint_continues_exactly(tmp_path, diff_backend):
     def make():
         return _bound(
-            SHAC(hidden_sizes=(8,), batch_size=4, horizon=4, update_every=1),
+            SHAC(
+                hidden_sizes=(8,),
+                batch_size=2,
+                horizon=4,
+                update_every=1,
+                critic_iterations=1,
+                critic_batches=1,
+            ),
             seed=0,
             f=diff_backend,
             dtype="float64",
@@ -246,5 +262,5 @@ def test_checkpoint_continues_exactly(tmp_path, diff_backend):
     first.save(tmp_path / "agent")
     expected = first.update(obs, zeros, flags, flags)
     second = make().load(tmp_path / "agent")
-    assert second.simulated_steps == 16
+    assert second.simulated_steps == 8
     assert second.update(obs, zeros, flags, flags) == expected
