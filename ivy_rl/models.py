@@ -490,6 +490,8 @@ def space_kind(space: Any, supported: Sequence[str] = SUPPORTED_SPACES, *, who: 
         kind = "Box"
     elif isinstance(space, gym.spaces.Discrete):
         kind = "Discrete"
+    elif isinstance(space, gym.spaces.MultiDiscrete) and len(space.shape) == 1:
+        kind = "MultiDiscrete"
     if kind is None or kind not in supported:
         prefix = f"{who} " if who else ""
         raise TypeError(

@@ -14,10 +14,16 @@ from ivy_rl.agents.a2c import A2C
 from ivy_rl.agents.agent import Agent
 from ivy_rl.agents.apg import APG
 from ivy_rl.agents.baselines import Constant, Uniform
+from ivy_rl.agents.d4pg import D4PG
+from ivy_rl.agents.ddpg import DDPG
 from ivy_rl.agents.defaults import DEFAULTS, check_setting, defaults_for, task_family
+from ivy_rl.agents.dqn import DQN, BranchingDQN
 from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
+from ivy_rl.agents.mpo import MPO
 from ivy_rl.agents.ppo import PPO
+from ivy_rl.agents.sac import SAC
 from ivy_rl.agents.shac import SHAC
+from ivy_rl.agents.td3 import TD3
 from ivy_rl.agents.trpo import TRPO
 
 __all__ = [
@@ -29,6 +35,13 @@ __all__ = [
     "TRPO",
     "APG",
     "SHAC",
+    "DDPG",
+    "TD3",
+    "SAC",
+    "MPO",
+    "D4PG",
+    "DQN",
+    "BranchingDQN",
     "AGENTS",
     "make",
     "DEFAULTS",
@@ -43,6 +56,13 @@ AGENTS: dict[str, type[Agent]] = {
     "TRPO": TRPO,
     "APG": APG,
     "SHAC": SHAC,
+    "DDPG": DDPG,
+    "TD3": TD3,
+    "SAC": SAC,
+    "MPO": MPO,
+    "D4PG": D4PG,
+    "DQN": DQN,
+    "BranchingDQN": BranchingDQN,
     "Uniform": Uniform,
     "Constant": Constant,
 }

@@ -125,6 +125,46 @@ DEFAULTS: dict[str, dict[str, dict[str, Any]]] = {
 }
 
 
+# Off-policy agents: small torsos and updates every 50 steps (50 optimisation steps), so that
+# the 20k-step Pendulum budget of the issue runs fast; measured in docs/ivy_rl.md.
+_OFF_POLICY_CONTINUOUS = dict(
+    hidden_sizes=(64, 64),
+    batch_size=128,
+    start_steps=1000,
+    update_after=1000,
+    update_every=50,
+    batch_iterations=50,
+    actor_lr=1e-3,
+    critic_lr=1e-3,
+)
+DEFAULTS.update(
+    {
+        "SAC": {"classic_continuous": dict(_OFF_POLICY_CONTINUOUS)},
+        "TD3": {"classic_continuous": dict(_OFF_POLICY_CONTINUOUS)},
+        "DDPG": {"classic_continuous": dict(_OFF_POLICY_CONTINUOUS)},
+        "D4PG": {
+            "classic_continuous": dict(
+                _OFF_POLICY_CONTINUOUS, return_steps=3, v_min=-1500.0, v_max=0.0
+            )
+        },
+        "MPO": {"classic_continuous": dict(_OFF_POLICY_CONTINUOUS, actor_lr=3e-4)},
+        "DQN": {
+            "classic_discrete": dict(
+                hidden_sizes=(64, 64),
+                batch_size=128,
+                update_after=1000,
+                update_every=50,
+                batch_iterations=50,
+                critic_lr=1e-3,
+                return_steps=3,
+                epsilon_decay_steps=10_000,
+                target_tau=0.01,
+            )
+        },
+    }
+)
+
+
 @dataclass(frozen=True)
 class Setting:
     """What values a setting takes.
@@ -188,8 +228,41 @@ SETTINGS: dict[str, Setting] = {
     "backtrack_steps": Setting("int", 1, meaning="candidate steps of the line search"),
     "backtrack_coefficient": Setting("float", 0.0, 1.0, open_low=True, open_high=True),
     "value": Setting("any", meaning="Constant's action"),
+    # off-policy agents (ivy_rl.agents.off_policy)
+    "replay_size": Setting("int", 1, meaning="transitions kept by the replay"),
+    "return_steps": Setting("int", 1, meaning="n of the n-step returns"),
+    "start_steps": Setting("int", 0, meaning="steps of random actions at the start"),
+    "update_after": Setting("int", 0, meaning="steps before the first update"),
+    "update_every": Setting("int", 1, meaning="environment steps between updates"),
+    "batch_iterations": Setting("int", 1, meaning="optimisation steps per update"),
+    "target_tau": Setting("float", 0.0, 1.0, open_low=True, meaning="soft update of targets"),
+    "exploration": Setting("str", choices=("normal", "ornstein_uhlenbeck", "none")),
+    "exploration_scale": Setting("float", 0.0, meaning="scale of the exploration noise"),
+    "policy_delay": Setting("int", 1, meaning="TD3's critic steps per actor step"),
+    "target_noise": Setting("float", 0.0, meaning="TD3's target smoothing noise"),
+    "target_noise_clip": Setting("float", 0.0, meaning="bound of TD3's target noise"),
+    "initial_temperature": Setting("float", 0.0, open_low=True, meaning="SAC's initial alpha"),
+    "temperature_lr": Setting("float", 0.0, meaning="SAC's learning rate of log alpha"),
+    "target_entropy": Setting("float", optional=True, meaning="SAC's (None: -action size)"),
+    "v_min": Setting("float", meaning="D4PG's lowest value of the support"),
+    "v_max": Setting("float", meaning="D4PG's highest value of the support"),
+    "atoms": Setting("int", 2, meaning="D4PG's atoms of the support"),
+    "num_samples": Setting("int", 1, meaning="MPO's actions sampled per state"),
+    "epsilon": Setting("float", 0.0, open_low=True, meaning="MPO's E-step KL bound"),
+    "epsilon_mean": Setting("float", 0.0, open_low=True, meaning="MPO's KL bound of the mean"),
+    "epsilon_std": Setting("float", 0.0, open_low=True, meaning="MPO's KL bound of the scale"),
+    "initial_log_temperature": Setting("float"),
+    "initial_log_alpha_mean": Setting("float"),
+    "initial_log_alpha_std": Setting("float"),
+    "min_log_dual": Setting("float"),
+    "dual_lr": Setting("float", 0.0, open_low=True, meaning="MPO's dual learning rate"),
+    "dueling": Setting("bool"),
+    "double": Setting("bool"),
+    "epsilon_start": Setting("float", 0.0, 1.0, meaning="DQN's initial epsilon"),
+    "epsilon_end": Setting("float", 0.0, 1.0, meaning="DQN's final epsilon"),
+    "epsilon_decay_steps": Setting("int", 0, meaning="DQN's steps of epsilon decay"),
+    # agents that learn through ivy_gym's gradients (APG, SHAC)
     "horizon": Setting("int", 1, meaning="steps of APG's and SHAC's differentiable rollouts"),
-    "update_every": Setting("int", 1, meaning="trainer steps between APG's or SHAC's updates"),
     "exploration_noise": Setting("float", 0.0, meaning="scale of the noise on actions taken"),
     "critic_batches": Setting("int", 1, meaning="SHAC's critic mini-batches per pass"),
     "target_update": Setting("float", 0.0, 1.0, meaning="SHAC's step of the target critic"),

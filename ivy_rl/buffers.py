@@ -1,0 +1,317 @@
+"""A transition replay for off-policy agents, held in the backend's arrays on the agent's
+device, with n-step returns computed where the batches are read (inside the compiled update).
+
+Each environment step of every worker is one row of arrays ``[capacity * workers, ...]``
+(row ``r``, worker ``w`` at index ``r * workers + w``): a ring over the last ``capacity`` steps of
+each worker. Steps are staged on the host and written to the backend's arrays in one piece at
+:meth:`TransitionReplay.flush` (before each update), so that acting costs no device write.
+
+A batch is drawn as windows of ``return_steps`` consecutive rows of one worker
+(:meth:`TransitionReplay.windows`, from the agent's numpy generator, so every backend reads the
+same transitions); :func:`n_step_batch` turns them into n-step transitions inside compiled code:
+the rewards summed with discounts until the window or the episode ends, and the observation and
+discount to bootstrap from. An episode cut by a time limit (a reset that is not a termination)
+is bootstrapped from its last true next observation; one that terminated is not
+(partial-episode bootstrapping, Pardo et al., 2018).
+
+Example:
+    >>> replay = TransitionReplay(100_000, return_steps=3)
+    >>> replay.store(observations=obs, actions=a, rewards=r, next_observations=nxt,
+    ...              resets=resets, terminations=terms)
+    >>> replay.flush(ivy.jax, device="cpu")
+    >>> indices = replay.windows(rng, batches=50, batch_size=256)  # [50, 3, 256] int32
+    >>> batch = n_step_batch(ivy.jax, replay.arrays, indices[0], discount=0.99)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+import ivy
+from ivy.typing import Array, Framework
+
+__all__ = ["TransitionReplay", "n_step_batch", "write_rows"]
+
+_FLAGS = ("resets", "terminations")
+
+
+class TransitionReplay:
+    """The last ``size`` transitions (all workers together) in the backend's arrays.
+
+    Args:
+        size: transitions kept in total (``size // workers`` steps of each worker; the oldest
+            are overwritten).
+        return_steps: n of the n-step returns (the length of the windows drawn).
+
+    Stored per step (``[workers, ...]``): ``observations``, ``actions``, ``rewards``,
+    ``next_observations`` (true next observations, before resets), ``resets`` (the episode
+    ended for any reason) and ``terminations`` (it ended in a terminal state).
+
+    Example:
+        >>> replay = TransitionReplay(1_000_000, return_steps=1)
+    """
+
+    def __init__(self, size: int = 1_000_000, *, return_steps: int = 1) -> None:
+        if int(size) != size or size < 1:
+            raise ValueError(f"TransitionReplay: size must be an integer >= 1, got {size!r}")
+        if int(return_steps) != return_steps or return_steps < 1:
+            raise ValueError(
+                f"TransitionReplay: return_steps must be an integer >= 1, got {return_steps!r}"
+            )
+        self.size = int(size)
+        self.return_steps = int(return_steps)
+        self.workers = 0
+        self.capacity = 0
+        self.arrays: dict[str, Array] | None = None  # the backend's arrays, after flush
+        self._staged: list[dict[str, np.ndarray]] = []
+        self._specs: dict[str, tuple[tuple[int, ...], np.dtype]] = {}
+        self.position = 0  # the ring row that the next step goes to
+        self.stored = 0  # steps of each worker in the ring (at most capacity)
+        self._writer: Callable | None = None
+
+    # ------------------------------------------------------------------------------------------
+    # Writing
+    # ------------------------------------------------------------------------------------------
+
+    def store(self, **arrays: Any) -> None:
+        """Stage one step of every worker: arrays ``[workers, ...]`` by name (always the same
+        names, shapes and dtypes)."""
+        staged = {k: np.asarray(v) for k, v in arrays.items()}
+        if not self._specs:
+            workers = {v.shape[0] if v.ndim else None for v in staged.values()}
+            if len(workers) != 1 or None in workers:
+                raise ValueError(
+                    "TransitionReplay.store: every array must be [workers, ...] with the same "
+                    f"number of workers, got shapes { {k: v.shape for k, v in staged.items()} }"
+                )
+            self.workers = workers.pop()
+            self.capacity = max(self.size // self.workers, self.return_steps)
+            self._specs = {k: (v.shape[1:], v.dtype) for k, v in staged.items()}
+        elif set(staged) != set(self._specs):
+            raise ValueError(
+                f"TransitionReplay.store: got {sorted(staged)}, expected {sorted(self._specs)}"
+            )
+        for key, value in staged.items():
+            shape, dtype = self._specs[key]
+            if value.shape != (self.workers, *shape):
+                raise ValueError(
+                    f"TransitionReplay.store: {key} has shape {value.shape}, expected "
+                    f"{(self.workers, *shape)}"
+                )
+        self._staged.append({k: v.astype(self._specs[k][1]) for k, v in staged.items()})
+
+    @property
+    def steps(self) -> int:
+        """Steps of each worker available to batches (flushed and staged)."""
+        return min(self.stored + len(self._staged), self.capacity)
+
+    def flush(
+        self,
+        xp: Any,
+        *,
+        device: Any = None,
+        dtypes: dict[str, Any] | None = None,
+        chunk_steps: int | None = None,
+        compile: Callable | None = None,
+    ) -> None:
+        """Write the staged steps into the backend's arrays (created on the first flush, zeros
+        of ``[capacity * workers, ...]`` on ``device``).
+
+        The steps go in pieces of ``chunk_steps`` steps (padded; default: all staged steps),
+        each written by one pure function of the arrays, the piece and the ring position
+        (:func:`write_rows`), so that a compiled writer (``compile``, e.g. ``ivy.compile_fn``)
+        compiles once, whatever the position.
+
+        Args:
+            xp: the backend namespace.
+            device: where the arrays live.
+            dtypes: numpy dtypes to store each array in (default: the staged dtypes), e.g. the
+                agent's float dtype and int32 indices.
+            chunk_steps: steps per written piece.
+            compile: compiles the writer (default: run as it is).
+        """
+        if not self._staged:
+            return
+        dtypes = {k: np.dtype((dtypes or {}).get(k, spec[1])) for k, spec in self._specs.items()}
+        if self.arrays is None:
+            self.arrays = {}
+            for key, (shape, _) in self._specs.items():
+                zeros = np.zeros((self.capacity * self.workers, *shape), dtypes[key])
+                self.arrays[key] = xp.asarray(zeros, device=device)
+        if self._writer is None:
+            self._writer = write_rows if compile is None else compile(write_rows)
+        staged, self._staged = self._staged, []
+        if len(staged) > self.capacity:  # only the last capacity steps survive
+            skipped = len(staged) - self.capacity
+            staged = staged[skipped:]
+            self.position = (self.position + skipped) % self.capacity
+        size = min(chunk_steps or len(staged), self.capacity)
+        for begin in range(0, len(staged), size):
+            piece = staged[begin : begin + size]
+            count = len(piece)
+            chunk = {}
+            for key in self.arrays:
+                rows = np.zeros((size, *piece[0][key].shape), dtypes[key])
+                rows[:count] = np.stack([s[key] for s in piece])
+                chunk[key] = rows.reshape((size * self.workers, *rows.shape[2:]))
+            start = np.asarray(self.position * self.workers, np.int32)
+            length = np.asarray(count * self.workers, np.int32)
+            self.arrays = self._writer(
+                self.arrays,
+                {k: xp.asarray(a, device=device) for k, a in chunk.items()},
+                xp.asarray(start, device=device),
+                xp.asarray(length, device=device),
+            )
+            self.position = (self.position + count) % self.capacity
+            self.stored = min(self.stored + count, self.capacity)
+
+    # ------------------------------------------------------------------------------------------
+    # Reading
+    # ------------------------------------------------------------------------------------------
+
+    def ready(self) -> bool:
+        """Whether a window of ``return_steps`` steps exists (after the next flush)."""
+        return self.steps >= self.return_steps
+
+    def windows(self, rng: np.random.Generator, batches: int, batch_size: int) -> np.ndarray:
+        """Indices of ``batches`` batches of n-step windows, drawn uniformly (with replacement)
+        among the complete windows of the flushed steps: int32 ``[batches, return_steps,
+        batch_size]``, ``indices[b, j, i]`` the row of the ``j``-th step of window ``i``.
+
+        Example:
+            >>> replay.windows(np.random.default_rng(0), 2, 4).shape  # return_steps=3
+            (2, 3, 4)
+        """
+        complete = self.stored - self.return_steps + 1
+        if complete < 1 or self.arrays is None:
+            raise RuntimeError(
+                f"TransitionReplay.windows: {self.stored} flushed steps per worker hold no "
+                f"window of {self.return_steps} steps: store and flush more first"
+            )
+        oldest = (self.position - self.stored) % self.capacity
+        offsets = rng.integers(0, complete, size=(batches, batch_size))
+        workers = rng.integers(0, self.workers, size=(batches, batch_size))
+        steps = np.arange(self.return_steps)[None, :, None]
+        rows = (oldest + offsets[:, None, :] + steps) % self.capacity
+        return (rows * self.workers + workers[:, None, :]).astype(np.int32)
+
+    # ------------------------------------------------------------------------------------------
+    # Checkpoints
+    # ------------------------------------------------------------------------------------------
+
+    def state_dict(self) -> dict[str, np.ndarray]:
+        """The arrays (as numpy), the staged steps and the ring's counters."""
+        state = {
+            "position": np.asarray(self.position, np.int64),
+            "stored": np.asarray(self.stored, np.int64),
+            "workers": np.asarray(self.workers, np.int64),
+        }
+        for key, value in (self.arrays or {}).items():
+            state[f"arrays.{key}"] = np.asarray(ivy.to_numpy(value))
+        for key in self._specs:
+            if self._staged:
+                state[f"staged.{key}"] = np.stack([s[key] for s in self._staged])
+            state[f"specs.{key}"] = np.zeros((0, *self._specs[key][0]), self._specs[key][1])
+        return state
+
+    def load_state_dict(self, state: dict[str, Any], xp: Any, *, device: Any = None) -> None:
+        """Restore :meth:`state_dict` into the backend ``xp`` on ``device``."""
+        self.position, self.stored = int(state["position"]), int(state["stored"])
+        self.workers = int(state["workers"])
+        self._specs = {
+            k.split(".", 1)[1]: (tuple(v.shape[1:]), v.dtype)
+            for k, v in state.items()
+            if k.startswith("specs.")
+        }
+        self.capacity = max(self.size // max(self.workers, 1), self.return_steps)
+        arrays = {k.split(".", 1)[1]: v for k, v in state.items() if k.startswith("arrays.")}
+        self.arrays = {k: xp.asarray(np.asarray(v), device=device) for k, v in arrays.items()}
+        self.arrays = self.arrays or None
+        staged = {k.split(".", 1)[1]: v for k, v in state.items() if k.startswith("staged.")}
+        count = len(next(iter(staged.values()))) if staged else 0
+        self._staged = [{k: np.asarray(v[i]) for k, v in staged.items()} for i in range(count)]
+
+
+def write_rows(
+    arrays: dict[str, Array], chunk: dict[str, Array], start: Array, length: Array
+) -> dict[str, Array]:
+    """``arrays`` with the entries ``start, start + 1, ..., start + length - 1`` (wrapping
+    around the end) replaced by the first ``length`` entries of ``chunk`` (pure; it compiles
+    once for a chunk's shape: the position and the length are arrays).
+
+    Example:
+        >>> write_rows({"r": jnp.zeros(4)}, {"r": jnp.ones(2)}, jnp.int32(3), jnp.int32(2))
+        {'r': Array([1., 0., 0., 1.], dtype=float32)}
+    """
+    first = next(iter(arrays.values()))
+    xp = ivy.get_framework(first)
+    total = int(first.shape[0])
+    size = int(next(iter(chunk.values())).shape[0])
+    offsets = xp.remainder(xp.arange(total, dtype=start.dtype, device=xp.dev(first)) - start, total)
+    inside = offsets < length
+    picks = xp.clip(offsets, 0, size - 1)
+    out = {}
+    for key, buffer in arrays.items():
+        mask = xp.reshape(inside, (total,) + (1,) * (len(buffer.shape) - 1))
+        out[key] = xp.where(mask, xp.take(chunk[key], picks, axis=0), buffer)
+    return out
+
+
+def n_step_batch(
+    xp: Any, arrays: dict[str, Array], indices: Array, *, discount: float, f: Framework = None
+) -> dict[str, Array]:
+    """n-step transitions of a batch of windows (pure; it compiles).
+
+    For a window of rows ``t, t+1, ..., t+n-1`` of one worker, with ``k`` the last row used
+    (the window's last, or the first that ends an episode):
+    ``returns = Σ_{j<=k-t} γ^j r_{t+j}``, ``next_observations = s'_k`` and
+    ``discounts = γ^(k-t+1) (1 - termination_k)``, so that the n-step target is
+    ``returns + discounts * V(next_observations)``: bootstrapped after a time limit, not after a
+    termination.
+
+    Args:
+        xp: backend namespace (or None to infer it from ``arrays``).
+        arrays: the replay's arrays (:attr:`TransitionReplay.arrays`).
+        indices: int ``[n, batch]`` rows of the windows (one batch of
+            :meth:`TransitionReplay.windows`).
+        discount: γ.
+        f: framework (used when ``xp`` is None).
+
+    Returns:
+        ``{'observations', 'actions', 'returns', 'next_observations', 'discounts'}`` with a
+        leading ``[batch]`` axis.
+
+    Example:
+        >>> batch = n_step_batch(ivy.torch, replay.arrays, indices[0], discount=0.99)
+        >>> targets = batch["returns"] + batch["discounts"] * values(batch["next_observations"])
+    """
+    xp = xp or ivy.get_framework(arrays["rewards"], f=f)
+    first = indices[0]
+    rewards = arrays["rewards"]
+    dtype = rewards.dtype
+    returns = xp.take(rewards, first, axis=0)
+    ones = xp.ones_like(returns)
+    alive = 1.0 - xp.astype(xp.take(arrays["resets"], first, axis=0), dtype)
+    ends = xp.astype(xp.take(arrays["terminations"], first, axis=0), dtype)
+    last = first
+    scale = discount * ones  # γ^(j) for the next step j
+    discounts = scale * (1.0 - ends)
+    for j in range(1, int(indices.shape[0])):
+        rows = indices[j]
+        returns = returns + alive * scale * xp.take(rewards, rows, axis=0)
+        ends = xp.astype(xp.take(arrays["terminations"], rows, axis=0), dtype)
+        step_discount = scale * discount * (1.0 - ends)
+        discounts = alive * step_discount + (1.0 - alive) * discounts
+        last = xp.where(alive > 0.5, rows, last)
+        alive = alive * (1.0 - xp.astype(xp.take(arrays["resets"], rows, axis=0), dtype))
+        scale = scale * discount
+    return {
+        "observations": xp.take(arrays["observations"], first, axis=0),
+        "actions": xp.take(arrays["actions"], first, axis=0),
+        "returns": returns,
+        "next_observations": xp.take(arrays["next_observations"], last, axis=0),
+        "discounts": discounts,
+    }

@@ -1,0 +1,173 @@
+"""Exploration of off-policy agents, on the host in numpy: noise added to deterministic actions
+(normal, Ornstein-Uhlenbeck, none) and epsilon-greedy choices for value-based agents.
+
+Every random number comes from the agent's numpy generator (passed in), so a seed gives the same
+actions on every backend and a checkpoint restores the exploration exactly (:meth:`state_dict`).
+Actions of Box spaces are in ``[-1, 1]`` here (the agent rescales them to the space's bounds).
+
+Example:
+    >>> noise = make_exploration("ornstein_uhlenbeck", scale=0.2)
+    >>> actions = noise(policy_actions, rng)        # [workers, action_size]
+    >>> noise.reset(resets)                         # at the end of episodes
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+__all__ = [
+    "NoNoise",
+    "NormalNoise",
+    "OrnsteinUhlenbeckNoise",
+    "EpsilonGreedy",
+    "EXPLORATIONS",
+    "make_exploration",
+]
+
+
+class NoNoise:
+    """Actions as the policy gives them.
+
+    Example:
+        >>> NoNoise()(np.zeros((2, 1)), rng)
+        array([[0.], [0.]])
+    """
+
+    def __call__(self, actions: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        return np.asarray(actions)
+
+    def reset(self, resets: Any) -> None:
+        """Forget the state of the workers whose episode ended (nothing here)."""
+
+    def state_dict(self) -> dict[str, np.ndarray]:
+        return {}
+
+    def load_state_dict(self, state: dict[str, Any]) -> None:
+        pass
+
+
+class NormalNoise(NoNoise):
+    """``clip(a + scale * N(0, 1), -1, 1)``, independent at each step.
+
+    Args:
+        scale: standard deviation of the noise (actions are in ``[-1, 1]``).
+
+    Example:
+        >>> NormalNoise(0.1)(actions, rng)
+    """
+
+    def __init__(self, scale: float = 0.1) -> None:
+        if scale < 0:
+            raise ValueError(f"NormalNoise: scale must be >= 0, got {scale}")
+        self.scale = float(scale)
+
+    def __call__(self, actions: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        actions = np.asarray(actions)
+        noise = rng.standard_normal(actions.shape)
+        return np.clip(actions + self.scale * noise, -1.0, 1.0).astype(actions.dtype)
+
+
+class OrnsteinUhlenbeckNoise(NoNoise):
+    """Temporally correlated noise, one process per worker, restarted at each episode:
+    ``x <- x - theta * x * dt + scale * sqrt(dt) * N(0, 1)``, actions ``clip(a + x, -1, 1)``.
+
+    Args:
+        scale: σ of the process.
+        theta: the pull towards 0.
+        dt: the time step.
+
+    Example:
+        >>> OrnsteinUhlenbeckNoise(scale=0.2, theta=0.15, dt=0.01)(actions, rng)
+    """
+
+    def __init__(self, scale: float = 0.1, *, theta: float = 0.15, dt: float = 1e-2) -> None:
+        if scale < 0 or theta < 0 or dt <= 0:
+            raise ValueError(
+                "OrnsteinUhlenbeckNoise: need scale >= 0, theta >= 0 and dt > 0, got "
+                f"scale={scale}, theta={theta}, dt={dt}"
+            )
+        self.scale, self.theta, self.dt = float(scale), float(theta), float(dt)
+        self.state: np.ndarray | None = None
+
+    def __call__(self, actions: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        actions = np.asarray(actions)
+        if self.state is None or self.state.shape != actions.shape:
+            self.state = np.zeros(actions.shape)
+        noise = rng.standard_normal(actions.shape)
+        self.state = (
+            self.state - self.theta * self.state * self.dt + self.scale * np.sqrt(self.dt) * noise
+        )
+        return np.clip(actions + self.state, -1.0, 1.0).astype(actions.dtype)
+
+    def reset(self, resets: Any) -> None:
+        if self.state is not None:
+            self.state[np.asarray(resets, bool)] = 0.0
+
+    def state_dict(self) -> dict[str, np.ndarray]:
+        return {} if self.state is None else {"state": self.state.copy()}
+
+    def load_state_dict(self, state: dict[str, Any]) -> None:
+        self.state = np.array(state["state"], np.float64) if "state" in state else None
+
+
+class EpsilonGreedy:
+    """For value-based agents: a uniformly random action with probability ε, else the greedy
+    one; ε falls linearly from ``start`` to ``end`` over ``decay_steps`` environment steps.
+
+    Args:
+        start, end: ε at the first step and after ``decay_steps``.
+        decay_steps: environment steps (all workers together) of the linear decay.
+
+    Example:
+        >>> explore = EpsilonGreedy(1.0, 0.05, 10_000)
+        >>> actions = explore(greedy, rng, num_actions=2, steps=500)
+    """
+
+    def __init__(self, start: float = 1.0, end: float = 0.05, decay_steps: int = 10_000) -> None:
+        if not (0.0 <= end <= 1.0 and 0.0 <= start <= 1.0) or decay_steps < 0:
+            raise ValueError(
+                "EpsilonGreedy: need 0 <= start, end <= 1 and decay_steps >= 0, got "
+                f"start={start}, end={end}, decay_steps={decay_steps}"
+            )
+        self.start, self.end, self.decay_steps = float(start), float(end), int(decay_steps)
+
+    def epsilon(self, steps: int) -> float:
+        """ε after ``steps`` environment steps."""
+        if self.decay_steps == 0:
+            return self.end
+        fraction = min(steps / self.decay_steps, 1.0)
+        return self.start + fraction * (self.end - self.start)
+
+    def __call__(
+        self, greedy: np.ndarray, rng: np.random.Generator, *, num_actions: Any, steps: int
+    ) -> np.ndarray:
+        """``greedy`` actions ``[workers, *dims]`` (indices) with random ones mixed in; with
+        several action dimensions (``num_actions`` a sequence), each is randomised alone."""
+        greedy = np.asarray(greedy)
+        sizes = np.broadcast_to(np.asarray(num_actions), greedy.shape[1:])
+        explore = rng.random(greedy.shape) < self.epsilon(steps)
+        random = np.floor(rng.random(greedy.shape) * sizes).astype(greedy.dtype)
+        return np.where(explore, random, greedy)
+
+
+EXPLORATIONS = {
+    "normal": NormalNoise,
+    "ornstein_uhlenbeck": OrnsteinUhlenbeckNoise,
+    "none": NoNoise,
+}
+
+
+def make_exploration(name: str, scale: float = 0.1) -> NoNoise:
+    """An exploration noise by name: ``'normal'``, ``'ornstein_uhlenbeck'`` or ``'none'``.
+
+    Example:
+        >>> make_exploration("normal", 0.1)
+    """
+    if name not in EXPLORATIONS:
+        raise ValueError(
+            f"unknown exploration {name!r}; choose one of {', '.join(map(repr, EXPLORATIONS))}"
+        )
+    cls = EXPLORATIONS[name]
+    return cls() if cls is NoNoise else cls(scale)
