@@ -32,6 +32,7 @@ import ivy
 from ivy_rl import updaters
 from ivy_rl.agents.through_gym import DifferentiableAgent
 from ivy_rl.models import Critic, ObservationEncoder, ValueHead, orthogonal_init, polyak_update
+from ivy_rl.normalizers import _fold_moments, _standard_deviation
 from ivy_rl.returns import _lambda_returns
 
 __all__ = ["SHAC"]
@@ -50,6 +51,9 @@ class SHAC(DifferentiableAgent):
         critic_iterations: passes over a rollout's transitions per update.
         critic_batches: mini-batches per pass.
         target_update: step of the target critic towards the critic per update (1: copy).
+        normalize_returns: the critic predicts its targets normalised by their running mean and
+            standard deviation (values of a task's scale, e.g. -1000, are slow to reach for a
+            network whose outputs start near 0).
         Others: as for :class:`~ivy_rl.agents.APG`.
 
     Example:
@@ -68,6 +72,7 @@ class SHAC(DifferentiableAgent):
         critic_iterations=8,
         critic_batches=4,
         target_update=0.8,
+        normalize_returns=True,
     )
 
     def _build_learner(self) -> None:
@@ -95,6 +100,10 @@ class SHAC(DifferentiableAgent):
                 f"SHAC: critic_batches must divide batch_size * horizon = {size}, got "
                 f"{c['critic_batches']!r}"
             )
+        self.moments = {
+            k: self._asarray(np.asarray(x, self.np_dtype))
+            for k, x in (("count", 0.0), ("mean", 0.0), ("mean_sq", 1.0))
+        }
         self._states = self._initial_states(c["batch_size"])
         self._times = np.zeros(c["batch_size"], np.int64)
 
@@ -102,13 +111,14 @@ class SHAC(DifferentiableAgent):
     # Pure functions
     # ------------------------------------------------------------------------------------------
 
-    def _update_fn(self, v, states, start, orders):
+    def _update_fn(self, v, states, moments, start, orders):
         """The whole update from the states ``start`` with the critic's mini-batches
-        ``orders``: ``(v, states, final_states, restart, logs)``."""
+        ``orders``: ``(v, states, moments, final_states, restart, logs)``."""
+        stats = self._return_stats(moments)
         actor_v, actor_state, data, logs = self._run_through_rollout(
-            self._actor_step, v["actor"], states["actor"], v["critic"], start
+            self._actor_step, v["actor"], states["actor"], v["critic"], stats, start
         )
-        batch = self._critic_batch(v["target"], start, data)
+        batch, moments = self._critic_batch(v["target"], stats, moments, start, data)
         (critic_v, critic_state), ys = self._run_loop(
             "critic_step", self._critic_step, (v["critic"], states["critic"]), orders, batch
         )
@@ -116,9 +126,16 @@ class SHAC(DifferentiableAgent):
         target_v = polyak_update(v["target"], critic_v, self.config["target_update"], f=self.xp)
         new_v = {"actor": actor_v, "critic": critic_v, "target": target_v}
         new_states = {"actor": actor_state, "critic": critic_state}
-        return new_v, new_states, data["final_state"], data["ended"], logs
+        return new_v, new_states, moments, data["final_state"], data["ended"], logs
 
-    def _actor_step(self, actor_v, actor_state, critic_v, start):
+    def _return_stats(self, moments):
+        """``{'mean', 'std'}`` of the critic's targets (None without ``normalize_returns``)."""
+        if not self.config["normalize_returns"]:
+            return None
+        std = _standard_deviation(self.xp, moments["mean"], moments["mean_sq"], 1e-2)
+        return {"mean": moments["mean"], "std": std}
+
+    def _actor_step(self, actor_v, actor_state, critic_v, stats, start):
         xp = self.xp
         horizon = self.config["horizon"]
         gamma = self.config["discount"]
@@ -129,7 +146,7 @@ class SHAC(DifferentiableAgent):
             discounted = xp.sum(rewards * self._discounts(horizon, rewards.dtype), axis=0)
             last = traj.observations[horizon - 1]
             alive = xp.logical_and(traj.valid[horizon - 1], xp.logical_not(traj.terminated[-1]))
-            values = self.critic(last, None, None, v=critic_v)
+            values = self.critic(last, None, stats, v=critic_v)
             bootstrap = xp.where(alive, values, xp.zeros_like(values))
             loss = -xp.mean(discounted + gamma**horizon * bootstrap) / horizon
             ended = xp.logical_not(alive)
@@ -152,15 +169,16 @@ class SHAC(DifferentiableAgent):
         }
         return actor_v, actor_state, infos, logs
 
-    def _critic_batch(self, target_v, start, data):
+    def _critic_batch(self, target_v, stats, moments, start, data):
         """The critic's regression data, flattened to ``[horizon * batch]``: the observation
-        before each step, its TD(λ) target and its weight (0 after a termination)."""
+        before each step, its TD(λ) target (normalised with the moments updated by this
+        rollout's targets) and its weight (0 after a termination); and the new moments."""
         xp, c = self.xp, self.config
         observations = data["observations"]
         steps, batch = tuple(data["rewards"].shape)
         first = xp.expand_dims(self.core.observe(start, f=xp), axis=0)
         before = xp.concat([first, observations[: steps - 1]], axis=0)
-        next_values = xp.stop_gradient(self.critic(observations, None, None, v=target_v))
+        next_values = xp.stop_gradient(self.critic(observations, None, stats, v=target_v))
         no_resets = xp.zeros_like(data["rewards"])
         terminations = xp.astype(data["terminated"], data["rewards"].dtype)
         targets = _lambda_returns(
@@ -173,11 +191,25 @@ class SHAC(DifferentiableAgent):
             c["trace_decay"],
         )
         size = steps * batch
-        return {
+        targets = xp.stop_gradient(xp.reshape(targets, (size,)))
+        if c["normalize_returns"]:
+            count, mean, mean_sq = _fold_moments(
+                moments["count"],
+                moments["mean"],
+                moments["mean_sq"],
+                float(size),
+                xp.sum(targets),
+                xp.sum(targets * targets),
+            )
+            moments = {"count": count, "mean": mean, "mean_sq": mean_sq}
+            new_stats = self._return_stats(moments)
+            targets = (targets - new_stats["mean"]) / new_stats["std"]
+        batch = {
             "observations": xp.reshape(before, (size, -1)),
-            "targets": xp.stop_gradient(xp.reshape(targets, (size,))),
+            "targets": targets,
             "weights": xp.reshape(xp.astype(data["valid"], targets.dtype), (size,)),
         }
+        return batch, moments
 
     def _critic_step(self, carry, indices, batch):
         xp = self.xp
@@ -185,7 +217,7 @@ class SHAC(DifferentiableAgent):
         part = {k: xp.take(a, indices, axis=0) for k, a in batch.items()}
 
         def loss_fn(w):
-            values = self.critic(part["observations"], None, None, v=w)
+            values = self.critic.normalized(w, part["observations"], None)
             weights = part["weights"]
             return updaters.value_loss(xp, values * weights, part["targets"] * weights)
 
@@ -212,9 +244,10 @@ class SHAC(DifferentiableAgent):
 
     def _learn(self) -> dict[str, float]:
         c, xp = self.config, self.xp
-        v, states, final, ended, logs = self._update(
+        v, states, self.moments, final, ended, logs = self._update(
             self.v,
             self.optimizer_states,
+            self.moments,
             self._asarray(self._states),
             self._asarray(self._orders()),
         )
@@ -237,9 +270,11 @@ class SHAC(DifferentiableAgent):
     def _arrays(self) -> dict[str, Any]:
         arrays = super()._arrays()
         arrays["simulation"] = {"states": self._states, "times": self._times}
+        arrays["moments"] = self.moments
         return arrays
 
     def _load_arrays(self, arrays: dict[str, Any]) -> None:
         super()._load_arrays(arrays)
         self._states = np.asarray(arrays["simulation"]["states"], self.np_dtype)
         self._times = np.asarray(arrays["simulation"]["times"], np.int64)
+        self.moments = self._to_backend(arrays["moments"], self.moments)
