@@ -14,7 +14,7 @@ full episodes (200 steps) with fixed seeds.
 Usage:
     python benchmarks/rl_sample_efficiency.py                       # the notebook's budgets
     python benchmarks/rl_sample_efficiency.py --agents APG,SHAC --seeds 0 --budget 20000
-    python benchmarks/rl_sample_efficiency.py --out runs/sample_efficiency.json
+    python benchmarks/rl_sample_efficiency.py --out benchmarks/results/other.json
 
 Results are appended to ``--out`` (JSON, one entry per agent, task and seed), so that a run can
 be continued and ``notebooks/rl_sample_efficiency.ipynb`` can plot them.
@@ -32,8 +32,8 @@ import numpy as np
 
 #: Tasks: Gymnasium id, budget of environment steps, the fixed score of the comparison.
 TASKS: dict[str, dict[str, Any]] = {
-    "Pendulum": {"env_id": "ivy_gym/Pendulum-v1", "budget": 100_000, "target": -400.0},
-    "Reacher": {"env_id": "ivy_gym/Reacher-v0", "budget": 100_000, "target": 120.0},
+    "Pendulum": {"env_id": "ivy_gym/Pendulum-v1", "budget": 100_000, "target": -200.0},
+    "Reacher": {"env_id": "ivy_gym/Reacher-v0", "budget": 100_000, "target": 60.0},
 }
 
 #: Agents whose budget is smaller than the task's: SAC updates at every step (50 optimisation
@@ -280,7 +280,7 @@ def main() -> None:
     parser.add_argument("--seeds", default="0,1,2")
     parser.add_argument("--budget", type=int, default=None, help="steps per run (all tasks)")
     parser.add_argument("--framework", default="jax")
-    parser.add_argument("--out", default="runs/rl_sample_efficiency.json")
+    parser.add_argument("--out", default="benchmarks/results/rl_sample_efficiency.json")
     args = parser.parse_args()
     agents = args.agents.split(",") if args.agents else available_agents()
     tasks = args.tasks.split(",")

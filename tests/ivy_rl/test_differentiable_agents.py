@@ -185,6 +185,10 @@ def test_compiled_update_equals_eager(diff_backend, cls):
         obs = np.zeros((1, 3))
         logs = [agent.update(obs, np.zeros(1), np.zeros(1, bool), np.zeros(1, bool))]
         results.append((logs, [np.asarray(xp.to_numpy(a)) for a in ivy.nest.nest_leaves(agent.v)]))
+        if compile:  # one compilation of the update, and none at later updates
+            assert agent.compiles == 1
+            agent.update(obs, np.zeros(1), np.zeros(1, bool), np.zeros(1, bool))
+            assert agent.compiles == 1
     (eager_logs, eager_v), (compiled_logs, compiled_v) = results
     for a, b in zip(eager_v, compiled_v):
         np.testing.assert_allclose(a, b, rtol=1e-9, atol=1e-12)
