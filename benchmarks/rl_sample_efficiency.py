@@ -224,10 +224,12 @@ def run_all(
     out: str | None = None,
     f: str = "jax",
     verbose: bool = True,
+    compute: bool = True,
 ) -> list[dict[str, Any]]:
     """Every learning curve of ``agents x tasks x seeds`` (``budgets`` per task, less for the
     agents of :data:`AGENT_BUDGETS`); with ``out``, the results already in
-    that JSON file (same agent, task, seed and budget) are reused and new ones appended."""
+    that JSON file (same agent, task, seed and budget) are reused and new ones appended;
+    ``compute=False`` returns the stored results only."""
     results = load(out) if out else []
     for seed in seeds:  # seed by seed, so that an interrupted run has every agent's curves
         for task in tasks:
@@ -235,6 +237,8 @@ def run_all(
                 budget = budget_for(agent_name, budgets[task])
                 key = (agent_name, task, seed, budget)
                 if any((r["agent"], r["task"], r["seed"], r["budget"]) == key for r in results):
+                    continue
+                if not compute:
                     continue
                 result = learning_curve(agent_name, task, seed, budget, f=f)
                 results.append(result)
