@@ -52,9 +52,7 @@ class APG(DifferentiableAgent):
 
     def _update_fn(self, v, states, start):
         """One Adam step of the actor from rollouts of the initial states ``start``."""
-        actor_v, actor_state, logs = self._run_through_rollout(
-            self._actor_step, v["actor"], states["actor"], start
-        )
+        actor_v, actor_state, logs = self._actor_step(v["actor"], states["actor"], start)
         return {"actor": actor_v}, {"actor": actor_state}, logs
 
     def policy_loss(self, actor_v: Any, start: Any) -> tuple[Any, dict[str, Any]]:

@@ -82,7 +82,7 @@ class SHAC(DifferentiableAgent):
         head = ValueHead(
             torso.out_size, weight_init=orthogonal_init(self.rng, 1.0), **self._build_args()
         )
-        self.critic = Critic(ObservationEncoder(self.core.observation_dim, f=xp), torso, head)
+        self.critic = Critic(ObservationEncoder(self._obs_dim, f=xp), torso, head)
         self.critic_optimizer = ivy.Adam(c["critic_lr"], f=xp)
         critic_v = self._placed(self.critic.v)
         self.v = {
@@ -104,7 +104,10 @@ class SHAC(DifferentiableAgent):
             k: self._asarray(np.asarray(x, self.np_dtype))
             for k, x in (("count", 0.0), ("mean", 0.0), ("mean_sq", 1.0))
         }
-        self._states = self._initial_states(c["batch_size"])
+        # the simulated environments (an agent that only acts, as in play, has no environment
+        # bound: then they are drawn at the first update)
+        bound = self.core is not None
+        self._states = self._initial_states(c["batch_size"]) if bound else None
         self._times = np.zeros(c["batch_size"], np.int64)
 
     # ------------------------------------------------------------------------------------------
@@ -115,8 +118,8 @@ class SHAC(DifferentiableAgent):
         """The whole update from the states ``start`` with the critic's mini-batches
         ``orders``: ``(v, states, moments, final_states, restart, logs)``."""
         stats = self._return_stats(moments)
-        actor_v, actor_state, data, logs = self._run_through_rollout(
-            self._actor_step, v["actor"], states["actor"], v["critic"], stats, start
+        actor_v, actor_state, data, logs = self._actor_step(
+            v["actor"], states["actor"], v["critic"], stats, start
         )
         batch, moments = self._critic_batch(v["target"], stats, moments, start, data)
         (critic_v, critic_state), ys = self._run_loop(
@@ -244,6 +247,8 @@ class SHAC(DifferentiableAgent):
 
     def _learn(self) -> dict[str, float]:
         c, xp = self.config, self.xp
+        if self._states is None:
+            self._states = self._initial_states(c["batch_size"])
         v, states, self.moments, final, ended, logs = self._update(
             self.v,
             self.optimizer_states,
@@ -269,12 +274,14 @@ class SHAC(DifferentiableAgent):
 
     def _arrays(self) -> dict[str, Any]:
         arrays = super()._arrays()
-        arrays["simulation"] = {"states": self._states, "times": self._times}
+        if self._states is not None:
+            arrays["simulation"] = {"states": self._states, "times": self._times}
         arrays["moments"] = self.moments
         return arrays
 
     def _load_arrays(self, arrays: dict[str, Any]) -> None:
         super()._load_arrays(arrays)
-        self._states = np.asarray(arrays["simulation"]["states"], self.np_dtype)
-        self._times = np.asarray(arrays["simulation"]["times"], np.int64)
+        if "simulation" in arrays:
+            self._states = np.asarray(arrays["simulation"]["states"], self.np_dtype)
+            self._times = np.asarray(arrays["simulation"]["times"], np.int64)
         self.moments = self._to_backend(arrays["moments"], self.moments)

@@ -182,50 +182,58 @@ class DifferentiableAgent(Agent):
     # ------------------------------------------------------------------------------------------
 
     def _build(self) -> None:
-        name = type(self).__name__
-        if self.core is None:
-            raise RuntimeError(
-                f"{name} learns through an ivy_gym environment: call "
-                "agent.bind_environment('ivy_gym/<Task>', env_kwargs) before initialize (the "
-                "trainer does)"
-            )
         core, c, xp = self.core, self.config, self.xp
         obs_shape = tuple(self.observation_space.shape)
-        if obs_shape != (core.observation_dim,) or self.action_space.shape != (core.action_dim,):
+        if len(obs_shape) != 1 or len(self.action_space.shape) != 1:
             raise ValueError(
-                f"{name}: the environment's spaces (observations {obs_shape}, actions "
-                f"{self.action_space.shape}) are not those of its ivy_gym core "
-                f"({core.observation_dim},), ({core.action_dim},); wrappers that change them "
-                "(e.g. time_feature) cannot be differentiated through"
+                f"{type(self).__name__}: expected flat observations and actions, got spaces of "
+                f"shapes {obs_shape} and {self.action_space.shape}"
             )
+        if core is not None:
+            self._check_core_spaces(obs_shape)
+        self._obs_dim, action_dim = obs_shape[0], self.action_space.shape[0]
         sizes = tuple(c["hidden_sizes"])
         torso = self._torso(sizes)
         self.actor = Actor(
-            ObservationEncoder(core.observation_dim, f=xp),
+            ObservationEncoder(self._obs_dim, f=xp),
             torso,
             DeterministicHead(
                 torso.out_size,
-                core.action_dim,
+                action_dim,
                 noise_scale=c["exploration_noise"],
                 weight_init=orthogonal_init(self.rng, 0.01),
                 **self._build_args(),
             ),
         )
-        low, high = core.action_bounds()
+        low, high = (
+            self.action_space.low.astype(np.float64),
+            self.action_space.high.astype(np.float64),
+        )
         self._action_low = tuple(float(x) for x in low)
         self._action_half = tuple(float(x) for x in (high - low) / 2)
-        self._reset_low, self._reset_high = core.initial_bounds()
         self.actor_optimizer = ivy.Adam(c["actor_lr"], f=xp)
         self._build_learner()
         self.fusion = c["fusion"]
         if self.fusion == "auto":
             unrolls = self.compiled and compiled_scan_unrolls(f=xp)
             self.fusion = "steps" if unrolls else "update"
+        # 'steps': the rollout and its gradient run eagerly (a compiler that unrolls loops
+        # would unroll the whole rollout and its backward pass); the critic's steps compile
         self._fused = self.fusion == "update"
         self._compiled_steps: dict[str, Callable] = {}
         self._update = self._compile(self._update_fn) if self._fused else self._update_fn
         self._mode = self._compile(self._mode_fn)
         self.updates, self._calls = 0, 0
+
+    def _check_core_spaces(self, obs_shape) -> None:
+        core = self.core
+        if obs_shape != (core.observation_dim,) or self.action_space.shape != (core.action_dim,):
+            raise ValueError(
+                f"{type(self).__name__}: the environment's spaces (observations {obs_shape}, "
+                f"actions {self.action_space.shape}) are not those of its ivy_gym core "
+                f"({core.observation_dim},), ({core.action_dim},); wrappers that change them "
+                "(e.g. time_feature) cannot be differentiated through"
+            )
 
     def _build_args(self) -> dict[str, Any]:
         return {"dtype": self.dtype, "device": self.device, "f": self.xp}
@@ -235,7 +243,7 @@ class DifferentiableAgent(Agent):
         (the same seed gives the same weights on every backend)."""
         init = orthogonal_init(self.rng, math.sqrt(2.0))
         return MLPTorso(
-            self.core.observation_dim,
+            self._obs_dim,
             sizes,
             self.config["activation"],
             weight_init=init,
@@ -250,7 +258,7 @@ class DifferentiableAgent(Agent):
     # Pure functions
     # ------------------------------------------------------------------------------------------
 
-    def _policy(self, actor_v: Any) -> Callable:
+    def _policy(self) -> Callable:
         """``policy(obs, v)`` in the action space, for ``ivy_gym.rollout``."""
         xp = self.xp
 
@@ -268,7 +276,7 @@ class DifferentiableAgent(Agent):
         return ivy_gym.rollout(
             self.core,
             states,
-            policy=self._policy(actor_v),
+            policy=self._policy(),
             v=actor_v,
             horizon=horizon,
             window=window,
@@ -299,12 +307,6 @@ class DifferentiableAgent(Agent):
     # ------------------------------------------------------------------------------------------
     # The fusion levels
     # ------------------------------------------------------------------------------------------
-
-    def _run_through_rollout(self, fn, *args):
-        """``fn(*args)``, a function that differentiates through a rollout: inline in the fused
-        update, else eagerly (a compiler that unrolls loops would unroll the whole rollout and
-        its backward pass)."""
-        return fn(*args)
 
     def _run_loop(self, name, body, carry, xs, *consts):
         """``ivy.scan`` of ``body(carry, x, *consts)`` over the rows of ``xs``: inside the fused
@@ -343,7 +345,7 @@ class DifferentiableAgent(Agent):
 
     def _initial_states(self, count: int) -> np.ndarray:
         """``count`` initial states of the core, uniform in its reset box (agent's generator)."""
-        low, high = self._reset_low, self._reset_high
+        low, high = self.core.initial_bounds()
         return (low + (high - low) * self.rng.random((count, low.size))).astype(self.np_dtype)
 
     def update(self, observations, rewards, resets, terminations) -> dict[str, float]:
@@ -355,6 +357,12 @@ class DifferentiableAgent(Agent):
             return of the rollouts ``actor/rollout_return`` ...), or an empty dict.
         """
         self._check_initialized()
+        if self.core is None:
+            raise RuntimeError(
+                f"{type(self).__name__} learns through an ivy_gym environment: call "
+                "agent.bind_environment('ivy_gym/<Task>', env_kwargs) before learning (the "
+                "trainer does; acting, e.g. in play, needs no environment)"
+            )
         self._calls += 1
         if self._calls % self.config["update_every"]:
             return {}
