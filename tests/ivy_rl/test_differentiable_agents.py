@@ -218,16 +218,17 @@ def test_non_differentiable_environment_is_refused_in_one_line(cls, env_id):
     assert "\n" not in message and env_id in message and cls.__name__ in message
 
 
-def test_acting_needs_no_environment_learning_does(tmp_path):
+def test_acting_needs_no_environment_learning_does(tmp_path, diff_backend):
     """``play`` builds an agent from its checkpoint without binding an environment: it acts
     as the trained agent did; learning asks for ``bind_environment``."""
-    trained = _bound(SHAC(hidden_sizes=(8,), batch_size=4, horizon=4, update_every=1), f="jax")
+    settings = dict(hidden_sizes=(8,), batch_size=4, horizon=4, update_every=1)
+    trained = _bound(SHAC(**settings), f=diff_backend, compile=False)
     obs, zeros, flags = np.ones((2, 3), np.float32), np.zeros(2), np.zeros(2, bool)
     trained.update(obs, zeros, flags, flags)
     trained.save(tmp_path / "agent")
     env = gym.make(PENDULUM)
-    player = SHAC(hidden_sizes=(8,), batch_size=4, horizon=4, update_every=1)
-    player.initialize(env.observation_space, env.action_space, f="jax")
+    player = SHAC(**settings)
+    player.initialize(env.observation_space, env.action_space, f=diff_backend, compile=False)
     player.load(tmp_path / "agent")
     np.testing.assert_array_equal(player.test_step(obs), trained.test_step(obs))
     with pytest.raises(RuntimeError, match="bind_environment"):
