@@ -222,13 +222,14 @@ def test_acting_needs_no_environment_learning_does(tmp_path, diff_backend):
     """``play`` builds an agent from its checkpoint without binding an environment: it acts
     as the trained agent did; learning asks for ``bind_environment``."""
     settings = dict(hidden_sizes=(8,), batch_size=4, horizon=4, update_every=1)
-    trained = _bound(SHAC(**settings), f=diff_backend, compile=False)
+    trained = _bound(SHAC(**settings), f=diff_backend)
     obs, zeros, flags = np.ones((2, 3), np.float32), np.zeros(2), np.zeros(2, bool)
     trained.update(obs, zeros, flags, flags)
     trained.save(tmp_path / "agent")
     env = gym.make(PENDULUM)
     player = SHAC(**settings)
-    player.initialize(env.observation_space, env.action_space, f=diff_backend, compile=False)
+    compile = ivy.get_framework(f=diff_backend).capabilities.compiled_loops
+    player.initialize(env.observation_space, env.action_space, f=diff_backend, compile=compile)
     player.load(tmp_path / "agent")
     np.testing.assert_array_equal(player.test_step(obs), trained.test_step(obs))
     with pytest.raises(RuntimeError, match="bind_environment"):
