@@ -12,6 +12,7 @@ from typing import Any
 
 from ivy_rl.agents.a2c import A2C
 from ivy_rl.agents.agent import Agent
+from ivy_rl.agents.apg import APG
 from ivy_rl.agents.baselines import Constant, Uniform
 from ivy_rl.agents.d4pg import D4PG
 from ivy_rl.agents.ddpg import DDPG
@@ -21,6 +22,7 @@ from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.agents.mpo import MPO
 from ivy_rl.agents.ppo import PPO
 from ivy_rl.agents.sac import SAC
+from ivy_rl.agents.shac import SHAC
 from ivy_rl.agents.td3 import TD3
 from ivy_rl.agents.trpo import TRPO
 
@@ -31,6 +33,8 @@ __all__ = [
     "A2C",
     "PPO",
     "TRPO",
+    "APG",
+    "SHAC",
     "DDPG",
     "TD3",
     "SAC",
@@ -50,6 +54,8 @@ AGENTS: dict[str, type[Agent]] = {
     "A2C": A2C,
     "PPO": PPO,
     "TRPO": TRPO,
+    "APG": APG,
+    "SHAC": SHAC,
     "DDPG": DDPG,
     "TD3": TD3,
     "SAC": SAC,

@@ -105,6 +105,13 @@ DEFAULTS: dict[str, dict[str, dict[str, Any]]] = {
             trace_decay=0.95,
         ),
     },
+    # ivy_gym's Pendulum and Reacher (benchmarks/rl_sample_efficiency.py)
+    "APG": {"ivy_gym": dict(batch_size=16, horizon=32, update_every=1, actor_lr=1e-2)},
+    "SHAC": {
+        "ivy_gym": dict(
+            batch_size=16, horizon=32, update_every=1, actor_lr=1e-2, critic_iterations=4
+        )
+    },
     "TRPO": {
         "classic_discrete": dict(
             segment_size=128,
@@ -258,6 +265,11 @@ SETTINGS: dict[str, Setting] = {
     "epsilon_start": Setting("float", 0.0, 1.0, meaning="DQN's initial epsilon"),
     "epsilon_end": Setting("float", 0.0, 1.0, meaning="DQN's final epsilon"),
     "epsilon_decay_steps": Setting("int", 0, meaning="DQN's steps of epsilon decay"),
+    # agents that learn through ivy_gym's gradients (APG, SHAC)
+    "horizon": Setting("int", 1, meaning="steps of APG's and SHAC's differentiable rollouts"),
+    "exploration_noise": Setting("float", 0.0, meaning="scale of the noise on actions taken"),
+    "critic_batches": Setting("int", 1, meaning="SHAC's critic mini-batches per pass"),
+    "target_update": Setting("float", 0.0, 1.0, meaning="SHAC's step of the target critic"),
 }
 
 

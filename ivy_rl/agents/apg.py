@@ -1,0 +1,95 @@
+"""APG: the analytic policy gradient, the gradient of the return of differentiable rollouts.
+
+Each update draws ``batch_size`` initial states from the environment's reset box, runs the
+deterministic policy for ``horizon`` steps through the ivy_gym core (``ivy_gym.rollout``), and
+takes one Adam step on the negative mean discounted return, differentiated through the
+dynamics (backpropagation through time). See :mod:`ivy_rl.agents.through_gym` for what it
+shares with :class:`~ivy_rl.agents.SHAC` and its contract with the trainer.
+
+Example:
+    >>> agent = APG(horizon=64, batch_size=32)
+    >>> agent.bind_environment("ivy_gym/Pendulum-v1", {})
+    >>> agent.initialize(obs_space, act_space, seed=0, f="jax")
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ivy_rl.agents.through_gym import DifferentiableAgent
+
+__all__ = ["APG"]
+
+
+class APG(DifferentiableAgent):
+    """Analytic policy gradient through an ivy_gym environment.
+
+    Loss: ``-mean_b sum_t discount**t r_t / horizon`` over ``batch_size`` rollouts of
+    ``horizon`` steps from fresh initial states; one Adam step per update, the gradient's
+    global norm clipped at ``actor_gradient_clip``.
+
+    Args:
+        hidden_sizes, activation: the policy's MLP.
+        actor_lr: Adam's learning rate.
+        actor_gradient_clip: global norm of the gradient (0: no clipping).
+        discount: γ of the return.
+        batch_size: rollouts per update.
+        horizon: steps per rollout.
+        update_every: trainer steps between updates.
+        exploration_noise: scale of the Gaussian noise on the actions taken in the trainer's
+            environments (the rollouts use the deterministic policy).
+        fusion: ``'update'``, ``'steps'`` or ``'auto'`` (see :mod:`ivy_rl.agents.through_gym`).
+
+    Example:
+        >>> APG(horizon=64, actor_lr=1e-3)
+    """
+
+    _defaults: dict[str, Any] = dict(horizon=64, batch_size=64, update_every=16, actor_lr=1e-3)
+
+    def _build_learner(self) -> None:
+        self.v = self._placed({"actor": self.actor.v})
+        self.optimizer_states = {"actor": self.actor_optimizer.init(self.v["actor"])}
+
+    def _update_fn(self, v, states, start):
+        """One Adam step of the actor from rollouts of the initial states ``start``."""
+        actor_v, actor_state, logs = self._actor_step(v["actor"], states["actor"], start)
+        return {"actor": actor_v}, {"actor": actor_state}, logs
+
+    def policy_loss(self, actor_v: Any, start: Any) -> tuple[Any, dict[str, Any]]:
+        """APG's loss: ``-mean_b sum_t discount**t r_t / horizon`` of ``horizon``-step rollouts
+        of the policy with variables ``actor_v`` from the initial states ``start``, a
+        differentiable function of both.
+
+        Args:
+            actor_v: the policy's variables (``agent.v['actor']``).
+            start: ``(batch, state_dim)`` initial states of the environment's core.
+
+        Returns:
+            ``(loss, {'rollout_reward': mean reward per step})``.
+
+        Example:
+            >>> loss, grads, _ = ivy.execute_with_gradients(
+            ...     lambda v: agent.policy_loss(v, start), agent.v["actor"])
+        """
+        self._check_initialized()
+        xp = self.xp
+        horizon = self.config["horizon"]
+        traj = self._rollout(actor_v, start, horizon)
+        rewards = traj.rewards
+        discounted = xp.sum(rewards * self._discounts(horizon, rewards.dtype), axis=0)
+        reward = xp.stop_gradient(xp.mean(rewards))
+        return -xp.mean(discounted) / horizon, {"rollout_reward": reward}
+
+    def _actor_step(self, actor_v, actor_state, start):
+        def loss_fn(w):
+            return self.policy_loss(w, start)
+
+        actor_v, actor_state, infos = self._actor_minimize(loss_fn, actor_v, actor_state)
+        return actor_v, actor_state, {f"actor/{k}": x for k, x in infos.items()}
+
+    def _learn(self) -> dict[str, float]:
+        c = self.config
+        start = self._asarray(self._initial_states(c["batch_size"]))
+        self.v, self.optimizer_states, logs = self._update(self.v, self.optimizer_states, start)
+        self.simulated_steps += c["batch_size"] * c["horizon"]
+        return self._logs(logs)

@@ -1,0 +1,287 @@
+"""SHAC: short-horizon actor-critic (Xu et al., 2022), learning through ivy_gym's gradients.
+
+A batch of ``batch_size`` simulated environments is carried from update to update. Each update
+runs the deterministic policy for ``horizon`` (K) steps from their current states through the
+ivy_gym core, and
+
+1. the actor takes one Adam step on the negative mean of ``sum_t γ^t r_t + γ^K V(s_K)``
+   (divided by K), differentiated through the K steps of dynamics and through the critic's
+   value of the last state (the critic's weights are constants here);
+2. the critic regresses on TD(λ) targets of the same rollout (values of the target critic,
+   bootstrapped at the end of the window, not after terminations), in ``critic_iterations``
+   passes of ``critic_batches`` mini-batches;
+3. the target critic moves towards the critic by ``target_update``.
+
+Environments whose episode reached its time limit (or terminated) restart from fresh initial
+states, drawn by the agent's numpy generator. The rollouts are truncated to K steps, so the
+gradient never runs through a long, chaotic horizon; the critic stands for what follows.
+
+Example:
+    >>> agent = SHAC(horizon=32, batch_size=64)
+    >>> agent.bind_environment("ivy_gym/Pendulum-v1", {})
+    >>> agent.initialize(obs_space, act_space, seed=0, f="jax")
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+import ivy
+from ivy_rl import updaters
+from ivy_rl.agents.through_gym import DifferentiableAgent
+from ivy_rl.models import Critic, ObservationEncoder, ValueHead, orthogonal_init, polyak_update
+from ivy_rl.normalizers import _fold_moments, _standard_deviation
+from ivy_rl.returns import _lambda_returns
+
+__all__ = ["SHAC"]
+
+
+class SHAC(DifferentiableAgent):
+    """Short-horizon actor-critic through an ivy_gym environment.
+
+    Args:
+        horizon: K, steps per rollout (the gradient's horizon).
+        batch_size: simulated environments carried across updates.
+        critic_hidden_sizes: the critic's MLP (default: ``hidden_sizes``).
+        critic_lr: the critic's Adam learning rate.
+        critic_gradient_clip: global norm of the critic's gradients (0: no clipping).
+        trace_decay: λ of the TD(λ) targets.
+        critic_iterations: passes over a rollout's transitions per update.
+        critic_batches: mini-batches per pass.
+        target_update: step of the target critic towards the critic per update (1: copy).
+        normalize_returns: the critic predicts its targets normalised by their running mean and
+            standard deviation (values of a task's scale, e.g. -1000, are slow to reach for a
+            network whose outputs start near 0).
+        Others: as for :class:`~ivy_rl.agents.APG`.
+
+    Example:
+        >>> SHAC(horizon=32, critic_iterations=16)
+    """
+
+    _defaults: dict[str, Any] = dict(
+        horizon=32,
+        batch_size=64,
+        update_every=16,
+        actor_lr=2e-3,
+        critic_hidden_sizes=None,
+        critic_lr=2e-3,
+        critic_gradient_clip=0.0,
+        trace_decay=0.95,
+        critic_iterations=8,
+        critic_batches=4,
+        target_update=0.8,
+        normalize_returns=True,
+    )
+
+    def _build_learner(self) -> None:
+        c, xp = self.config, self.xp
+        sizes = tuple(c["critic_hidden_sizes"] or c["hidden_sizes"])
+        torso = self._torso(sizes)
+        head = ValueHead(
+            torso.out_size, weight_init=orthogonal_init(self.rng, 1.0), **self._build_args()
+        )
+        self.critic = Critic(ObservationEncoder(self._obs_dim, f=xp), torso, head)
+        self.critic_optimizer = ivy.Adam(c["critic_lr"], f=xp)
+        critic_v = self._placed(self.critic.v)
+        self.v = {
+            "actor": self._placed(self.actor.v),
+            "critic": critic_v,
+            "target": self._placed(self.critic.v),
+        }
+        self.optimizer_states = {
+            "actor": self.actor_optimizer.init(self.v["actor"]),
+            "critic": self.critic_optimizer.init(self.v["critic"]),
+        }
+        size = c["batch_size"] * c["horizon"]
+        if c["critic_batches"] < 1 or size % c["critic_batches"]:
+            raise ValueError(
+                f"SHAC: critic_batches must divide batch_size * horizon = {size}, got "
+                f"{c['critic_batches']!r}"
+            )
+        self.moments = {
+            k: self._asarray(np.asarray(x, self.np_dtype))
+            for k, x in (("count", 0.0), ("mean", 0.0), ("mean_sq", 1.0))
+        }
+        # the simulated environments (an agent that only acts, as in play, has no environment
+        # bound: then they are drawn at the first update)
+        bound = self.core is not None
+        self._states = self._initial_states(c["batch_size"]) if bound else None
+        self._times = np.zeros(c["batch_size"], np.int64)
+
+    # ------------------------------------------------------------------------------------------
+    # Pure functions
+    # ------------------------------------------------------------------------------------------
+
+    def _update_fn(self, v, states, moments, start, orders):
+        """The whole update from the states ``start`` with the critic's mini-batches
+        ``orders``: ``(v, states, moments, final_states, restart, logs)``."""
+        stats = self._return_stats(moments)
+        actor_v, actor_state, data, logs = self._actor_step(
+            v["actor"], states["actor"], v["critic"], stats, start
+        )
+        batch, moments = self._critic_batch(v["target"], stats, moments, start, data)
+        (critic_v, critic_state), ys = self._run_loop(
+            "critic_step", self._critic_step, (v["critic"], states["critic"]), orders, batch
+        )
+        logs["critic/loss"] = self.xp.mean(ys["loss"])
+        target_v = polyak_update(v["target"], critic_v, self.config["target_update"], f=self.xp)
+        new_v = {"actor": actor_v, "critic": critic_v, "target": target_v}
+        new_states = {"actor": actor_state, "critic": critic_state}
+        return new_v, new_states, moments, data["final_state"], data["ended"], logs
+
+    def _return_stats(self, moments):
+        """``{'mean', 'std'}`` of the critic's targets (None without ``normalize_returns``)."""
+        if not self.config["normalize_returns"]:
+            return None
+        std = _standard_deviation(self.xp, moments["mean"], moments["mean_sq"], 1e-2)
+        return {"mean": moments["mean"], "std": std}
+
+    def _actor_step(self, actor_v, actor_state, critic_v, stats, start):
+        xp = self.xp
+        horizon = self.config["horizon"]
+        gamma = self.config["discount"]
+
+        def loss_fn(w):
+            traj = self._rollout(w, start, horizon)
+            rewards = traj.rewards
+            discounted = xp.sum(rewards * self._discounts(horizon, rewards.dtype), axis=0)
+            last = traj.observations[horizon - 1]
+            alive = xp.logical_and(traj.valid[horizon - 1], xp.logical_not(traj.terminated[-1]))
+            values = self.critic(last, None, stats, v=critic_v)
+            bootstrap = xp.where(alive, values, xp.zeros_like(values))
+            loss = -xp.mean(discounted + gamma**horizon * bootstrap) / horizon
+            ended = xp.logical_not(alive)
+            data = {
+                "observations": xp.stop_gradient(traj.observations),
+                "rewards": xp.stop_gradient(rewards),
+                "terminated": xp.logical_and(traj.terminated, traj.valid),
+                "valid": traj.valid,
+                "final_state": xp.stop_gradient(traj.final_state),
+                "ended": ended,
+                "rollout_reward": xp.stop_gradient(xp.mean(rewards)),
+            }
+            return loss, data
+
+        actor_v, actor_state, infos = self._actor_minimize(loss_fn, actor_v, actor_state)
+        logs = {
+            "actor/loss": infos.pop("loss"),
+            "actor/gradient_norm": infos.pop("gradient_norm"),
+            "actor/rollout_reward": infos.pop("rollout_reward"),
+        }
+        return actor_v, actor_state, infos, logs
+
+    def _critic_batch(self, target_v, stats, moments, start, data):
+        """The critic's regression data, flattened to ``[horizon * batch]``: the observation
+        before each step, its TD(λ) target (normalised with the moments updated by this
+        rollout's targets) and its weight (0 after a termination); and the new moments."""
+        xp, c = self.xp, self.config
+        observations = data["observations"]
+        steps, batch = tuple(data["rewards"].shape)
+        first = xp.expand_dims(self.core.observe(start, f=xp), axis=0)
+        before = xp.concat([first, observations[: steps - 1]], axis=0)
+        next_values = xp.stop_gradient(self.critic(observations, None, stats, v=target_v))
+        no_resets = xp.zeros_like(data["rewards"])
+        terminations = xp.astype(data["terminated"], data["rewards"].dtype)
+        targets = _lambda_returns(
+            xp,
+            data["rewards"],
+            next_values,
+            no_resets,
+            terminations,
+            c["discount"],
+            c["trace_decay"],
+        )
+        size = steps * batch
+        targets = xp.stop_gradient(xp.reshape(targets, (size,)))
+        if c["normalize_returns"]:
+            count, mean, mean_sq = _fold_moments(
+                moments["count"],
+                moments["mean"],
+                moments["mean_sq"],
+                float(size),
+                xp.sum(targets),
+                xp.sum(targets * targets),
+            )
+            moments = {"count": count, "mean": mean, "mean_sq": mean_sq}
+            new_stats = self._return_stats(moments)
+            targets = (targets - new_stats["mean"]) / new_stats["std"]
+        batch = {
+            "observations": xp.reshape(before, (size, -1)),
+            "targets": targets,
+            "weights": xp.reshape(xp.astype(data["valid"], targets.dtype), (size,)),
+        }
+        return batch, moments
+
+    def _critic_step(self, carry, indices, batch):
+        xp = self.xp
+        critic_v, critic_state = carry
+        part = {k: xp.take(a, indices, axis=0) for k, a in batch.items()}
+
+        def loss_fn(w):
+            values = self.critic.normalized(w, part["observations"], None)
+            weights = part["weights"]
+            return updaters.value_loss(xp, values * weights, part["targets"] * weights)
+
+        loss, grads = xp.execute_with_gradients(loss_fn, critic_v)[:2]
+        clip = self.config["critic_gradient_clip"]
+        if clip:
+            grads = xp.clip_by_global_norm(grads, clip)[0]
+        critic_v, critic_state = self.critic_optimizer.step(critic_v, grads, critic_state)
+        return (critic_v, critic_state), {"loss": loss}
+
+    # ------------------------------------------------------------------------------------------
+    # Learning
+    # ------------------------------------------------------------------------------------------
+
+    def _orders(self) -> np.ndarray:
+        """``[critic_iterations * critic_batches, size]`` indices of the critic's mini-batches."""
+        c = self.config
+        total = c["batch_size"] * c["horizon"]
+        rows = [
+            self.rng.permutation(total).reshape(c["critic_batches"], -1)
+            for _ in range(c["critic_iterations"])
+        ]
+        return np.concatenate(rows).astype(np.int32)
+
+    def _learn(self) -> dict[str, float]:
+        c, xp = self.config, self.xp
+        if self._states is None:
+            self._states = self._initial_states(c["batch_size"])
+        v, states, self.moments, final, ended, logs = self._update(
+            self.v,
+            self.optimizer_states,
+            self.moments,
+            self._asarray(self._states),
+            self._asarray(self._orders()),
+        )
+        self.v, self.optimizer_states = v, states
+        self.simulated_steps += c["batch_size"] * c["horizon"]
+        self._times += c["horizon"]
+        restart = (self._times >= self.episode_steps) | np.asarray(xp.to_numpy(ended), bool)
+        self._states = np.asarray(xp.to_numpy(final), self.np_dtype)
+        if restart.any():
+            self._states[restart] = self._initial_states(int(restart.sum()))
+            self._times[restart] = 0
+        out = self._logs(logs)
+        out["critic/iterations"] = float(c["critic_iterations"] * c["critic_batches"])
+        return out
+
+    # ------------------------------------------------------------------------------------------
+    # Checkpoints: the simulated environments too
+    # ------------------------------------------------------------------------------------------
+
+    def _arrays(self) -> dict[str, Any]:
+        arrays = super()._arrays()
+        if self._states is not None:
+            arrays["simulation"] = {"states": self._states, "times": self._times}
+        arrays["moments"] = self.moments
+        return arrays
+
+    def _load_arrays(self, arrays: dict[str, Any]) -> None:
+        super()._load_arrays(arrays)
+        if "simulation" in arrays:
+            self._states = np.asarray(arrays["simulation"]["states"], self.np_dtype)
+            self._times = np.asarray(arrays["simulation"]["times"], np.int64)
+        self.moments = self._to_backend(arrays["moments"], self.moments)
