@@ -18,6 +18,7 @@ Example:
 import sys
 
 from ivy_gym import (
+    acrobot,
     cartpole,
     mountain_car,
     optimise,
@@ -27,6 +28,7 @@ from ivy_gym import (
     rollouts,
     swimmer,
 )
+from ivy_gym.acrobot import *  # noqa: F403
 from ivy_gym.base import Env
 from ivy_gym.cartpole import *  # noqa: F403
 from ivy_gym.mountain_car import *  # noqa: F403
@@ -50,6 +52,7 @@ _GYMNASIUM_NAMES = (
 
 __all__ = [
     "Env",
+    *acrobot.__all__,
     *cartpole.__all__,
     *pendulum.__all__,
     *mountain_car.__all__,

@@ -1,4 +1,5 @@
-"""Mountain car: Gymnasium's MountainCarContinuous-v0, and the original ivy_gym's shaped task.
+"""Mountain car: Gymnasium's MountainCar-v0 and MountainCarContinuous-v0, and the original
+ivy_gym's shaped task.
 
 A car on the track of height ``sin(3 x)`` must climb to the flag at ``x = 0.45``; its engine
 is too weak to drive straight up, so it must swing back and forth.
@@ -15,9 +16,11 @@ from ivy_gym.base import Env, cast_like, scalar_action, unstack_last
 from ivy_gym.rendering import reward_color
 
 __all__ = [
+    "MountainCar",
     "MountainCarContinuous",
     "MountainCarShaped",
     "MountainCarParams",
+    "MountainCarDiscreteParams",
     "MountainCarShapedParams",
 ]
 
@@ -34,6 +37,19 @@ class MountainCarParams:
     goal_position: float = 0.45
     goal_velocity: float = 0.0
     power: float = 0.0015
+
+
+@dataclass(frozen=True)
+class MountainCarDiscreteParams:
+    """Gymnasium's MountainCar-v0 constants."""
+
+    min_position: float = -1.2
+    max_position: float = 0.6
+    max_speed: float = 0.07
+    goal_position: float = 0.5
+    goal_velocity: float = 0.0
+    force: float = 0.001
+    gravity: float = 0.0025
 
 
 @dataclass(frozen=True)
@@ -81,6 +97,58 @@ class _MountainCarBase(Env):
         flag = np.array([goal, _height(goal)])
         canvas.line(flag, flag + (0, 0.15), 0.006, (0, 0, 0))
         canvas.polygon([flag + (0, 0.15), flag + (0, 0.12), flag + (0.07, 0.135)], (204, 204, 0))
+
+
+class MountainCar(_MountainCarBase):
+    """Gymnasium's MountainCar-v0, step for step (in float64, as Gymnasium computes it).
+
+    State ``[position, velocity]``, observation the same. The action ``u``, ``(..., 1)`` in
+    [-1, 1], pushes with ``u * force``; the Gymnasium facade takes Gymnasium's discrete
+    actions {0, 1, 2} (``u = action - 1``: left, none, right):
+
+        velocity += u * force + cos(3 * position) * (-gravity)
+        velocity  = clip(velocity, -max_speed, max_speed)
+        position += velocity;  position = clip(position, min_position, max_position)
+        velocity  = 0 if position == min_position and velocity < 0   (the wall)
+
+    Terminated when ``position >= goal_position`` and ``velocity >= goal_velocity``; reward -1
+    at every step, the terminating one included (so it has no gradient). Initial state:
+    position uniform in [-0.6, -0.4], velocity 0. Time limit (registered task): 200 steps.
+
+    Example:
+        >>> env = ivy_gym.MountainCar()
+        >>> s = env.reset((32,), f="torch")
+        >>> s, obs, reward, terminated = env.step(s, torch.ones(32, 1))
+    """
+
+    Params = MountainCarDiscreteParams
+    can_terminate = True
+    max_episode_steps = 200
+    #: The core actions of Gymnasium's discrete actions {0, 1, 2}.
+    discrete_actions = ((-1.0,), (0.0,), (1.0,))
+
+    def reset_bounds(self):
+        return np.array([-0.6, 0.0]), np.array([-0.4, 0.0])
+
+    def observation_bounds(self):
+        p = self.params
+        return np.array([p.min_position, -p.max_speed]), np.array([p.max_position, p.max_speed])
+
+    def kernel_step(self, xp, state, action):
+        p = self.params
+        position, velocity = unstack_last(xp, state)
+        push = scalar_action(xp, cast_like(xp, action, state))
+        velocity = velocity + (push * p.force + xp.cos(3 * position) * (-p.gravity))
+        velocity = xp.clip(velocity, -p.max_speed, p.max_speed)
+        position = xp.clip(position + velocity, p.min_position, p.max_position)
+        at_wall = xp.logical_and(position == p.min_position, velocity < 0)
+        velocity = xp.where(at_wall, xp.zeros_like(velocity), velocity)
+        terminated = xp.logical_and(position >= p.goal_position, velocity >= p.goal_velocity)
+        state = xp.stack([position, velocity], axis=-1)
+        return state, state, -xp.ones_like(position), terminated
+
+    def _draw(self, canvas, s):
+        self._draw_scene(canvas, s[0], self.params.goal_position, (0, 0, 0))
 
 
 class MountainCarContinuous(_MountainCarBase):

@@ -69,14 +69,20 @@ class _Facade:
         if self.discrete:
             if core.action_dim != 1:
                 raise ValueError("ivy_gym facade: discrete=True needs a 1-D action.")
-            self._single_action_space = spaces.Discrete(2)
+            # Gymnasium's discrete actions index this table of core actions: the core's
+            # ``discrete_actions``, else CartPole's (0: push left, 1: push right); in the
+            # facade's dtype: one ``take`` per step.
+            table = getattr(core, "discrete_actions", None)
+            if table is None:
+                table, self._discrete_names = ((-1.0,), (1.0,)), "0 (push left) or 1 (push right)"
+            else:
+                self._discrete_names = f"in {{0, ..., {len(table) - 1}}}"
+            self._discrete_actions = np.array(table, self.dtype)
+            self._single_action_space = spaces.Discrete(len(table))
         else:
             self._single_action_space = _box(low, high, self.dtype)
         self._single_observation_space = _box(*core.observation_bounds(), self.dtype)
         self._action_low, self._action_high = low.astype(self.dtype), high.astype(self.dtype)
-        # Gymnasium's discrete actions {0, 1} index this table of core actions (push left,
-        # right), in the facade's dtype: one ``take`` per step.
-        self._discrete_actions = np.array([[-1.0], [1.0]], self.dtype)
         # The step, resolved once: the core's kernel on the facade's namespace (the facade
         # checks and converts the actions, so ``Env.step``'s look-up of the backend and its
         # checks are not needed at every step).
@@ -112,15 +118,15 @@ class _Facade:
         facade's dtype, or a clear error."""
         a = np.asarray(action)
         if self.discrete:
+            n = len(self._discrete_actions)
             if a.shape != batch or a.dtype.kind not in "iu":
                 raise ValueError(
-                    f"{self._name}: expected integer action(s) of shape {batch} in {{0, 1}}, got "
-                    f"{action!r} (shape {a.shape}, dtype {a.dtype})."
+                    f"{self._name}: expected integer action(s) of shape {batch} in "
+                    f"{{0, ..., {n - 1}}}, got {action!r} (shape {a.shape}, dtype {a.dtype})."
                 )
-            if (a >> 1).any():  # nonzero for everything but 0 and 1 (negative numbers too)
+            if ((a < 0) | (a >= n)).any():
                 raise ValueError(
-                    f"{self._name}: actions must be 0 (push left) or 1 (push right), got "
-                    f"{action!r}."
+                    f"{self._name}: actions must be {self._discrete_names}, got {action!r}."
                 )
             core_action = self._discrete_actions.take(a, 0)
             return self.xp.asarray(core_action, device=self.device)

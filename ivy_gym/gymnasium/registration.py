@@ -16,9 +16,10 @@ from typing import Any
 import gymnasium
 
 from ivy.typing import Dtype, Framework
+from ivy_gym.acrobot import Acrobot
 from ivy_gym.cartpole import CartPole, CartPoleSwingUp
 from ivy_gym.gymnasium.facades import GymnasiumEnv, GymnasiumVectorEnv
-from ivy_gym.mountain_car import MountainCarContinuous, MountainCarShaped
+from ivy_gym.mountain_car import MountainCar, MountainCarContinuous, MountainCarShaped
 from ivy_gym.pendulum import Pendulum, PendulumSmooth
 from ivy_gym.reacher import Reacher
 from ivy_gym.swimmer import Swimmer
@@ -36,6 +37,8 @@ TASKS: dict[str, tuple[type, bool, float | None]] = {
     "MountainCarShaped-v0": (MountainCarShaped, False, None),
     "Reacher-v0": (Reacher, False, None),
     "Swimmer-v0": (Swimmer, False, None),
+    "Acrobot-v1": (Acrobot, True, -100.0),
+    "MountainCar-v0": (MountainCar, True, -110.0),
 }
 
 
