@@ -18,6 +18,8 @@ everything here is public and stable):
 
 - ``Params`` (a frozen dataclass), ``state_names``, ``observation_names``, ``can_terminate``,
   ``max_episode_steps``, ``render_fps``; ``state_dim``, ``observation_dim``, ``action_dim``.
+- ``discrete_actions``: None, or the core actions (a tuple of ``action_dim``-tuples) that a
+  Gymnasium facade's discrete actions ``0, 1, ...`` stand for (Acrobot's torques -1, 0, 1).
 - ``reset_bounds()``, ``action_bounds()``, ``observation_bounds()``: numpy float64 boxes
   ``(low, high)``; ``initial_bounds()`` is the reset box after :meth:`Env.narrowed`.
 - ``kernel_step(xp, state, action) -> (state, obs, reward, terminated)`` and
@@ -83,6 +85,8 @@ class Env:
     max_episode_steps: ClassVar[int] = 200
     #: Frames per second of renderings.
     render_fps: ClassVar[int] = 30
+    #: The core actions of a facade's discrete actions (None: CartPole's push left, right).
+    discrete_actions: ClassVar[tuple[tuple[float, ...], ...] | None] = None
 
     def __init__(self, **params: Any) -> None:
         self.params = self.Params(**params)

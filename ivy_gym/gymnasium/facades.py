@@ -72,7 +72,7 @@ class _Facade:
             # Gymnasium's discrete actions index this table of core actions: the core's
             # ``discrete_actions``, else CartPole's (0: push left, 1: push right); in the
             # facade's dtype: one ``take`` per step.
-            table = getattr(core, "discrete_actions", None)
+            table = core.discrete_actions
             if table is None:
                 table, self._discrete_names = ((-1.0,), (1.0,)), "0 (push left) or 1 (push right)"
             else:
@@ -168,8 +168,9 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
         framework: the backend that runs the physics.
         dtype: ``'float32'`` or ``'float64'``: the core's dtype and the observations'.
         render_mode: None or ``'rgb_array'``.
-        discrete: Gymnasium's CartPole actions {0, 1} (push left/right) instead of the core's
-            continuous action.
+        discrete: Gymnasium's discrete actions instead of the core's continuous one: indices
+            into the core's ``discrete_actions`` table (MountainCar's and Acrobot's {0, 1, 2}),
+            else CartPole's {0, 1} (push left/right).
         device: where the core's arrays live (``'gpu:0'``; None: the backend's default).
 
     Example:
