@@ -55,7 +55,7 @@ import ivy_gym
 import ivy_gym.gymnasium  # noqa: F401  (registers the ivy_gym/... ids)
 
 sys.path.insert(0, str(Path(__file__).parent))
-from _timing import interleaved_samples, median  # noqa: E402
+from _timing import calls_per_sample, interleaved_samples, median  # noqa: E402
 
 warnings.filterwarnings("ignore")
 
@@ -211,7 +211,9 @@ def device_section(args, clock):
     device, steps = args.device, args.steps
     batches = [int(b) for b in args.device_batches.split(",")]
     print(f"\nOn {device}: steps per second (millions), {steps}-step runs, random actions")
-    for env_name, env_id in (("CartPole", "CartPole-v1"), ("Pendulum", "Pendulum-v1")):
+    backends = args.backends.split(",")
+    envs = (("CartPole", "CartPole-v1"), ("Pendulum", "Pendulum-v1")) if "jax" in backends else ()
+    for env_name, env_id in envs:
         rows: dict[str, list[float]] = {}
         for n in batches:
             variants = {
@@ -220,7 +222,7 @@ def device_section(args, clock):
             gymnax = gymnax_scan(n, steps, env_id, device)
             if gymnax is not None:
                 variants["gymnax jax (jit+vmap+scan)"] = gymnax
-            for name, seconds in _interleaved(variants, args.repeats, clock).items():
+            for name, seconds in _interleaved(variants, args.repeats, clock, 0.05).items():
                 rows.setdefault(name, []).append(n * steps / seconds)
         print(f"{env_name:<32}" + "".join(f"{'N=' + str(n):>12}" for n in batches))
         for name, values in rows.items():
@@ -233,9 +235,12 @@ def device_section(args, clock):
             )
         else:
             print("(gymnax is not installed: no peer row)")
-    if args.no_torch_compile:
+    if args.no_torch_compile or "torch" not in backends:
         return
     import torch
+
+    if device == "cpu":  # one thread, as the CPU sections of benchmarks/ do: steadier when shared
+        torch.set_num_threads(1)
 
     mode = "reduce-overhead" if device.startswith("gpu") else None
     tsteps = args.torch_steps
@@ -253,7 +258,7 @@ def device_section(args, clock):
         theirs = variants["plain torch loop (eager)"]()[1]
         np.testing.assert_allclose(float(ours), float(theirs), rtol=1e-3)
         timed = {k: (lambda fn=fn: _torch_sync(fn())) for k, fn in variants.items()}
-        for name, seconds in _interleaved(timed, args.repeats, clock).items():
+        for name, seconds in _interleaved(timed, args.repeats, clock, 0.05).items():
             rows.setdefault(name, []).append(n * tsteps / seconds)
     compiler = "torch.compile(mode='reduce-overhead')" if mode else "ivy.compile_fn"
     print(f"\nPendulum on torch, {device}, {tsteps}-step runs, {compiler}: steps/s (millions)")
@@ -282,15 +287,19 @@ def pendulum_gradient(backend, compile, steps=200, batch=64):
     return lambda: value_and_grad(actions)
 
 
-def _interleaved(variants, repeats, clock=time.perf_counter):
-    """Median seconds per call of each variant, the variants taking turns (shared drift)."""
+def _interleaved(variants, repeats, clock=time.perf_counter, target_s=None):
+    """Median seconds per call of each variant, the variants taking turns (shared drift); with
+    ``target_s``, each sample repeats the calls for about that long (the fastest variant's)."""
     timers = {}
     for _ in range(2):  # warm up (and compile) all, twice: torch.compile guards on ivy's cache
         for fn in variants.values():  # of array types, which the other variants fill
             _block(fn())
     for name, fn in variants.items():
         timers[name] = timeit.Timer(lambda fn=fn: _block(fn()), timer=clock)
-    samples = interleaved_samples(timers, 1, repeats)
+    number = 1
+    if target_s is not None:
+        number = min(calls_per_sample(t, target_s) for t in timers.values())
+    samples = interleaved_samples(timers, number, repeats)
     return {name: median(values) for name, values in samples.items()}
 
 

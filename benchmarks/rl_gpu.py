@@ -1,8 +1,9 @@
 """PPO on N ivy_gym Pendulums on one device (default 4,096 on jax): environment steps per
 second and the time to a fixed test score, against the same agent on the CPU, in one run.
 
-The agent is ``ivy_rl.agents.make("PPO", environment="ivy_gym/Pendulum-v1")`` (the ivy_gym
-family's defaults), trained by ``ivy_rl.Trainer`` on ``workers`` environments of ivy_gym's native
+The agent is ``ivy_rl.agents.make("PPO", environment="ivy_gym/Pendulum-v1", segment_size=...,
+batch_size=...)`` (the ivy_gym family's defaults but a short segment and large mini-batches, so
+that N environments update often), trained by ``ivy_rl.Trainer`` on ``workers`` environments of ivy_gym's native
 vector env; ``device=`` places the agent's models, optimiser states and each update's segment.
 Both runs (``--device`` and ``cpu``) use the same seed, steps and epochs. Reported per device:
 environment steps per second (``train/steps_per_second`` of the last epoch, so after
@@ -10,7 +11,8 @@ compilation), the training seconds, the first epoch whose mean test score reache
 and the training seconds until then; then the ratios device / CPU.
 
 Usage: python benchmarks/rl_gpu.py [--device gpu:0] [--workers 4096] [--steps 4194304]
-       [--epochs 8] [--score -400] [--framework jax] [--no-cpu-peer]
+       [--epochs 8] [--score -400] [--framework jax] [--segment-size 32] [--batch-size 2048]
+       [--no-cpu-peer]
 """
 
 from __future__ import annotations
@@ -28,7 +30,7 @@ ENV = "ivy_gym/Pendulum-v1"
 
 def train(device: str, args) -> dict:
     """One PPO run on ``device``: steps/s, seconds, the first epoch reaching the score."""
-    agent = make("PPO", environment=ENV)
+    agent = make("PPO", environment=ENV, segment_size=args.segment_size, batch_size=args.batch_size)
     trainer = ivy_rl.Trainer(
         steps=args.steps,
         epoch_steps=args.steps // args.epochs,
@@ -60,6 +62,14 @@ def main(argv=None):
     parser.add_argument("--epochs", type=int, default=8)
     parser.add_argument("--test-episodes", type=int, default=5)
     parser.add_argument("--score", type=float, default=-400.0, help="the fixed test score")
+    parser.add_argument(
+        "--segment-size",
+        type=int,
+        default=32,
+        help="steps per worker per update (the ivy_gym "
+        "family's 256 would give one update per million steps at 4,096 workers)",
+    )
+    parser.add_argument("--batch-size", type=int, default=2048, help="PPO's mini-batch size")
     parser.add_argument("--no-cpu-peer", action="store_true", help="skip the run on the CPU")
     args = parser.parse_args(argv)
 
