@@ -74,14 +74,15 @@ def main(argv=None):
     args = parser.parse_args(argv)
 
     devices = [args.device] + ([] if args.no_cpu_peer or args.device == "cpu" else ["cpu"])
-    results = {device: train(device, args) for device in devices}
     print(
         f"PPO on {args.workers} {ENV} ({args.framework}), {args.steps} steps in "
         f"{args.epochs} epochs; fixed score {args.score}"
     )
     print(f"{'device':8} {'steps/s':>10} {'seconds':>9} {'last score':>10} "
           f"{'epoch>=score':>12} {'s to score':>10}")  # fmt: skip
-    for device, r in results.items():
+    results = {}
+    for device in devices:  # each row printed as soon as it is measured
+        r = results[device] = train(device, args)
         to = f"{r['to score']:10.1f}" if r["to score"] is not None else f"{'-':>10}"
         epoch = f"{r['epoch']:12d}" if r["epoch"] is not None else f"{'not reached':>12}"
         print(

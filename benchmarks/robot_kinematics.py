@@ -202,7 +202,8 @@ def build(backends, batch, rng, device="cpu"):
         run, put = mjx_fk
         jq = put(qpos)
         got = np.asarray(run(jq))[: len(want)]
-        np.testing.assert_allclose(got, want, atol=1e-10, err_msg="mjx")
+        # MJX computes in float32 unless jax's x64 reaches its model: a float32 tolerance
+        np.testing.assert_allclose(got, want, atol=1e-5, err_msg="mjx")
         runs["MJX (jax)"] = (lambda: run(jq).block_until_ready(), 1.0)
     return runs
 

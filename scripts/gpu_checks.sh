@@ -60,7 +60,7 @@ case ":$PYTHONPATH:" in *":$PWD:"*) ;; *) export PYTHONPATH=$PWD:$PYTHONPATH ;; 
 
 FAILED=()
 step() {  # step NAME SECONDS COMMAND...: run under a timeout, record a failure, go on
-    local name=$1 limit=$2
+    local name=$1 limit=$(($2 * SLOWER))
     shift 2
     echo
     echo "=== $name (timeout ${limit}s): $*"
@@ -96,16 +96,18 @@ if [ "$QUICK" = 1 ]; then
     MATMUL=(--size 512 --repeats 5)
     RL=(--workers 64 --steps 16384 --epochs 2 --test-episodes 2)
     BENCH_LIMIT=400
+    SLOWER=3  # a shared CPU: compilation alone takes a minute
 else
+    SLOWER=1
     TEST_ARGS=(tests -q -x -n 8 -p no:cacheprovider)
-    TEST_LIMIT=200
+    TEST_LIMIT=150
     GYM=(--steps 100 --device-batches 65536,1048576 --torch-batches 4096,65536
          --torch-steps 50 --repeats 5)
     FK=(--batches 1000000 --repeats 5 --backends torch,jax)
     WARP=(--batch 4 --sizes 480x640 --repeats 15 --backends torch,jax)
     MATMUL=(--size 8192 --repeats 7)
-    RL=(--workers 4096 --steps 2097152 --epochs 4 --test-episodes 5)
-    BENCH_LIMIT=150
+    RL=(--workers 4096 --steps 1048576 --epochs 8 --test-episodes 3)
+    BENCH_LIMIT=120
 fi
 
 if [ "$PART" = all ] || [ "$PART" = tests ]; then
@@ -113,12 +115,12 @@ if [ "$PART" = all ] || [ "$PART" = tests ]; then
         "$PY" -m pytest "${TEST_ARGS[@]}"
 fi
 if [ "$PART" = all ] || [ "$PART" = bench ]; then
-    step matmul_precision 60 "$PY" benchmarks/matmul_precision.py --device "$DEVICE" "${MATMUL[@]}"
+    step matmul_precision 45 "$PY" benchmarks/matmul_precision.py --device "$DEVICE" "${MATMUL[@]}"
     step gym_throughput "$BENCH_LIMIT" "$PY" benchmarks/gym_throughput.py --device "$DEVICE" \
         --device-only "${GYM[@]}"
-    step robot_kinematics 120 "$PY" benchmarks/robot_kinematics.py --device "$DEVICE" "${FK[@]}"
-    step vision_warping 120 "$PY" benchmarks/vision_warping.py --device "$DEVICE" "${WARP[@]}"
-    step rl_gpu "$BENCH_LIMIT" "$PY" benchmarks/rl_gpu.py --device "$DEVICE" "${RL[@]}"
+    step robot_kinematics 90 "$PY" benchmarks/robot_kinematics.py --device "$DEVICE" "${FK[@]}"
+    step vision_warping 90 "$PY" benchmarks/vision_warping.py --device "$DEVICE" "${WARP[@]}"
+    step rl_gpu 200 "$PY" benchmarks/rl_gpu.py --device "$DEVICE" "${RL[@]}"
 fi
 
 echo
