@@ -136,7 +136,7 @@ def _gymnax_run(gymnax, jax, n, steps, env_id):
             if discrete:
                 actions = jax.random.randint(k_act, (n,), 0, 2)
             else:
-                actions = jax.random.uniform(k_act, (n, 1), minval=-2.0, maxval=2.0)
+                actions = jax.random.uniform(k_act, (n,), minval=-2.0, maxval=2.0)
             out = vstep(jax.random.split(k_step, n), state, actions, params)
             state, reward = out[1], out[2]  # (obs, state, reward, terminated, truncated, info)
             return (key, state), reward
