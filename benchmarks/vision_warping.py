@@ -17,9 +17,14 @@ kornia is a benchmark-only dependency: ``.venv/bin/pip install kornia`` (check w
 ``--dry-run`` that it keeps torch at 2.13.0). Without it the kornia rows and ratios are left
 out.
 
+``--device gpu:0`` creates every input on that device (numpy stays on the CPU), kornia's too, and
+synchronises the device after each timed call; the reference is computed on the CPU. The issue's
+GPU size: ``--device gpu:0 --batch 4 --sizes 480x640 --backends torch,jax``.
+
 Usage:
     .venv/bin/python benchmarks/vision_warping.py [--sizes 240x320,480x640] [--batch 1]
         [--repeats 15] [--backends numpy,torch,jax,tensorflow] [--threads 1] [--no-torch-compile]
+        [--device cpu|gpu:0]
 """
 
 from __future__ import annotations
@@ -85,27 +90,18 @@ def _kornia_warp():
     return warp
 
 
-def _native(a, backend):
+def _native(a, backend, device="cpu"):
+    """``a`` as an array of ``backend`` on ``device`` (numpy: always the CPU)."""
     if backend == "numpy":
         return a
-    if backend == "torch":
-        import torch
-
-        return torch.from_numpy(np.ascontiguousarray(a))
-    if backend == "jax":
-        import jax.numpy as jnp
-
-        return jnp.asarray(a)
-    import tensorflow as tf
-
-    return tf.constant(a)
+    return ivy.asarray(np.ascontiguousarray(a), f=backend, device=device)
 
 
 def _to_numpy(x):
     if isinstance(x, np.ndarray):
         return x
     if hasattr(x, "detach"):
-        return x.detach().numpy()
+        return x.detach().cpu().numpy()
     if hasattr(x, "numpy"):
         return x.numpy()
     return np.asarray(x)
@@ -114,6 +110,10 @@ def _to_numpy(x):
 def _sync(x):
     if hasattr(x, "block_until_ready"):
         x.block_until_ready()
+    elif getattr(x, "is_cuda", False):
+        import torch
+
+        torch.cuda.synchronize()
     return x
 
 
@@ -197,7 +197,7 @@ def _measure(variant, args):
             arrays = [data[k] for k in ("image", "depth", "pose", "calib")]
             if channel_first:
                 arrays[0], arrays[1] = (np.moveaxis(a, -1, 1) for a in arrays[:2])
-            arrays = [_native(a, impl_backend) for a in arrays]
+            arrays = [_native(a, impl_backend, args.device) for a in arrays]
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
                 out = _to_numpy(_sync(fn(*arrays)))
@@ -241,6 +241,7 @@ def main(argv=None):
         help="wall time, or the process's CPU time (steadier on a machine shared with other "
         "work; with --threads 1 it is the compute time)",
     )
+    parser.add_argument("--device", default="cpu", help="'cpu' or 'gpu:0' (CUDA)")
     parser.add_argument("--worker", help=argparse.SUPPRESS)  # one variant, rows as JSON
     args = parser.parse_args(argv)
     if args.worker:
@@ -255,7 +256,7 @@ def main(argv=None):
             "benchmark-only dependency: .venv/bin/pip install kornia\n"
         )
     print(
-        f"batch {args.batch}, float32, 3 channels, {args.threads} thread(s), "
+        f"device {args.device}, batch {args.batch}, float32, 3 channels, {args.threads} thread(s), "
         f"{args.repeats} interleaved repeats, {args.clock} clock; each variant in its own "
         f"process, kornia timed beside it\n"
     )
@@ -277,6 +278,8 @@ def main(argv=None):
             str(args.threads),
             "--clock",
             args.clock,
+            "--device",
+            args.device,
         ]
         forwarded += ["--no-torch-compile"] if args.no_torch_compile else []
         out = subprocess.run(
