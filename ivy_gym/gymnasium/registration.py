@@ -18,6 +18,7 @@ import gymnasium
 from ivy.typing import Dtype, Framework
 from ivy_gym.cartpole import CartPole, CartPoleSwingUp
 from ivy_gym.gymnasium.facades import GymnasiumEnv, GymnasiumVectorEnv
+from ivy_gym.inverted_pendulum import InvertedPendulum
 from ivy_gym.mountain_car import MountainCarContinuous, MountainCarShaped
 from ivy_gym.pendulum import Pendulum, PendulumSmooth
 from ivy_gym.reacher import Reacher
@@ -36,6 +37,7 @@ TASKS: dict[str, tuple[type, bool, float | None]] = {
     "MountainCarShaped-v0": (MountainCarShaped, False, None),
     "Reacher-v0": (Reacher, False, None),
     "Swimmer-v0": (Swimmer, False, None),
+    "InvertedPendulum-v5": (InvertedPendulum, False, 950.0),
 }
 
 
