@@ -76,6 +76,7 @@ def environment_core(environment: str, env_kwargs: dict[str, Any] | None = None,
     import gymnasium
 
     import ivy_gym
+    from ivy_gym.gymnasium.registration import make_env  # registers ivy_gym's ids
 
     prefix = f"{who}: " if who else ""
     env_id = str(environment)
@@ -90,7 +91,8 @@ def environment_core(environment: str, env_kwargs: dict[str, Any] | None = None,
             f"'ivy_gym/Pendulum-v1'"
         ) from None
     task = spec.kwargs.get("task")
-    if spec.entry_point != "ivy_gym.registration:make_env" or task not in ivy_gym.TASKS:
+    ivy_entry_points = (make_env, f"{make_env.__module__}:{make_env.__name__}")
+    if spec.entry_point not in ivy_entry_points or task not in ivy_gym.TASKS:
         choices = ", ".join(f"ivy_gym/{t}" for t, (_, d, _) in ivy_gym.TASKS.items() if not d)
         raise ValueError(
             f"{prefix}{environment!r} is not a differentiable ivy_gym environment (its entry "

@@ -1170,6 +1170,32 @@ def _gradients_control_flow_compilation() -> None:
     ]
 
 
+def _applied_helpers() -> None:
+    """What the applied libraries build on: constants, the compile boundary, dtypes by name."""
+    CASES["constant"] = [
+        C(np.array([1.5, -2.0, 0.25]), dtype="float32"),
+        C(np.arange(6.0).reshape(2, 3)),
+        C([[1, 2], [3, 4]], dtype="int64"),
+        C(2.5),
+    ]
+    step = PerBackend(lambda xp: lambda c, x: (xp.add(c, x), xp.multiply(c, 2.0)), "step")
+    CASES["compiled_scan"] = [
+        C(
+            step,
+            _backends=("jax", "tensorflow", "numpy"),  # torch.compile takes ~17 s to start
+            _post=lambda run, xp: run(xp.asarray(0.0), xp.asarray([1.0, 2.0, 3.0])),
+        ),
+        C(
+            step,
+            length=3,
+            _backends=("jax", "tensorflow", "numpy"),
+            _post=lambda run, xp: run(xp.asarray([0.0, 1.0]), xp.ones((3, 2))),
+        ),
+    ]
+    CASES["dtype_name"] = [C(F32), C(I64), C(a([True], "bool")), C("float64")]
+    CASES["enable_float64"] = [C()]
+
+
 _elementwise_extra()
 _creation()
 _data_type()
@@ -1184,3 +1210,4 @@ _numerics_image_interpolation_padding()
 _nn()
 _random()
 _gradients_control_flow_compilation()
+_applied_helpers()
