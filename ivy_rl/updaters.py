@@ -18,12 +18,14 @@ Example:
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Callable
 from typing import Any
 
 import ivy
 from ivy.nest import map_nest, multi_map_nest
 from ivy.typing import Array, Nest
+from ivy_rl.schedules import Schedule, as_schedule
 
 __all__ = [
     "GradientUpdater",
@@ -199,7 +201,9 @@ class GradientUpdater:
     """An updater that takes Adam steps on gradients clipped by their global norm.
 
     Args:
-        lr: Adam's learning rate.
+        lr: Adam's learning rate: a number or a schedule of the run's progress
+            (:mod:`ivy_rl.schedules`, e.g. ``"linear:1e-3"``); the agent passes its value at the
+            current progress to :meth:`minimize` as an array.
         gradient_clip: the global norm gradients are clipped to (0: no clipping).
 
     Example:
@@ -210,9 +214,12 @@ class GradientUpdater:
 
     has_optimizer = True
 
-    def __init__(self, lr: float = 3e-4, gradient_clip: float = 0.0) -> None:
-        if not lr > 0:
-            raise ValueError(f"{type(self).__name__}: lr must be > 0, got {lr!r}")
+    def __init__(self, lr: float | str | Schedule = 3e-4, gradient_clip: float = 0.0) -> None:
+        schedule = as_schedule(lr, name=f"{type(self).__name__}: lr")
+        if not (schedule(0.0) > 0 and schedule(1.0) >= 0):
+            raise ValueError(
+                f"{type(self).__name__}: lr must be > 0 (a schedule may end at 0), got {lr!r}"
+            )
         if not gradient_clip >= 0:
             raise ValueError(
                 f"{type(self).__name__}: gradient_clip must be >= 0 (0: none), "
@@ -224,7 +231,7 @@ class GradientUpdater:
     def initialize(self, xp: Any) -> GradientUpdater:
         """Create the optimiser for the backend namespace ``xp``."""
         self.xp = xp
-        self.optimizer = ivy.Adam(self.lr, f=xp)
+        self.optimizer = ivy.Adam(as_schedule(self.lr)(0.0), f=xp)
         return self
 
     def init_state(self, v: Nest) -> Nest:
@@ -232,10 +239,14 @@ class GradientUpdater:
         return self.optimizer.init(v)
 
     def minimize(
-        self, loss_fn: Callable[[Nest], Any], v: Nest, state: Nest
+        self, loss_fn: Callable[[Nest], Any], v: Nest, state: Nest, lr: Array | None = None
     ) -> tuple[Nest, Nest, dict[str, Array]]:
         """One step on ``loss_fn(v)`` (returning ``loss`` or ``(loss, infos)``): gradients,
         clipped, and an Adam step.
+
+        Args:
+            lr: the learning rate of this step (a scalar array: a scheduled value); default:
+                ``lr`` at the start of the run.
 
         Returns:
             ``(v, state, {'loss': ..., **infos})``.
@@ -244,7 +255,11 @@ class GradientUpdater:
         loss, grads, *aux = xp.execute_with_gradients(loss_fn, v)
         if self.gradient_clip:
             grads = xp.clip_by_global_norm(grads, self.gradient_clip)[0]
-        new_v, new_state = self.optimizer.step(v, grads, state)
+        optimizer = self.optimizer
+        if lr is not None:
+            optimizer = copy.copy(optimizer)
+            optimizer.lr = lr
+        new_v, new_state = optimizer.step(v, grads, state)
         return new_v, new_state, {"loss": loss, **(aux[0] if aux else {})}
 
 
@@ -299,8 +314,8 @@ class ClippedRatio(StochasticPolicyGradient):
     stops for the rest of an update.
 
     Args:
-        lr: Adam's learning rate.
-        ratio_clip: ε of the clipped ratio ``[1 - ε, 1 + ε]``.
+        lr: Adam's learning rate (a number or a schedule).
+        ratio_clip: ε of the clipped ratio ``[1 - ε, 1 + ε]`` (a number or a schedule).
         kl_threshold: KL estimate beyond which the actor stops (None: never).
         entropy_coeff: weight of the entropy bonus.
         gradient_clip: global norm of the gradients (0: no clipping).
@@ -318,17 +333,24 @@ class ClippedRatio(StochasticPolicyGradient):
         gradient_clip: float = 0.0,
     ) -> None:
         super().__init__(lr, entropy_coeff, gradient_clip)
+        as_schedule(ratio_clip, name=f"{type(self).__name__}: ratio_clip")
         self.ratio_clip, self.kl_threshold = ratio_clip, kl_threshold
 
-    def loss(self, dist: Any, batch: dict[str, Array]) -> tuple[Array, dict[str, Array]]:
-        """The clipped surrogate on ``batch`` (``actions``, ``log_probs``, ``advantages``)."""
+    def loss(
+        self, dist: Any, batch: dict[str, Array], ratio_clip: Array | None = None
+    ) -> tuple[Array, dict[str, Array]]:
+        """The clipped surrogate on ``batch`` (``actions``, ``log_probs``, ``advantages``);
+        ``ratio_clip``: this step's ε (a scalar array: a scheduled value; default: at the
+        start of the run)."""
+        if ratio_clip is None:
+            ratio_clip = as_schedule(self.ratio_clip)(0.0)
         return clipped_ratio_loss(
             self.xp,
             dist,
             batch["actions"],
             batch["log_probs"],
             batch["advantages"],
-            self.ratio_clip,
+            ratio_clip,
             self.entropy_coeff,
         )
 

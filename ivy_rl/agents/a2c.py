@@ -136,6 +136,7 @@ class A2C(Agent):
         fusion="auto",
     )
     _unused: tuple[str, ...] = ()
+    scheduled = ("actor_lr", "critic_lr")
     _MODEL = (
         "hidden_sizes",
         "critic_hidden_sizes",
@@ -300,13 +301,14 @@ class A2C(Agent):
     def _mode_fn(self, actor_v, obs_stats, observations):
         return self.model.actor(observations, obs_stats, v=actor_v).mode()
 
-    def _update_fn(self, v, states, obs_stats, return_moments, segment, orders):
+    def _update_fn(self, v, states, obs_stats, return_moments, segment, orders, scheduled):
         """The whole update: ``(v, states, return_moments, logs)`` after learning from the
-        segment (arrays ``[time, workers, ...]``) with the mini-batches ``orders``."""
+        segment (arrays ``[time, workers, ...]``) with the mini-batches ``orders``; the
+        scheduled settings' values ``scheduled`` (scalar arrays) ride along in ``stats``."""
         batch, return_moments, return_stats = self._prepare(
             v["critic"], obs_stats, return_moments, segment
         )
-        stats = {"obs": obs_stats, "ret": return_stats}
+        stats = {"obs": obs_stats, "ret": return_stats, "scheduled": scheduled}
         v, states, logs = self._optimize(v, states, stats, batch, orders)
         return v, states, return_moments, logs
 
@@ -405,7 +407,10 @@ class A2C(Agent):
     def _actor_step(self, carry, stats, batch):
         actor_v, state = carry
         actor_v, state, infos = self.actor_updater.minimize(
-            lambda w: self._actor_loss(w, stats, batch), actor_v, state
+            lambda w: self._actor_loss(w, stats, batch),
+            actor_v,
+            state,
+            stats["scheduled"].get("actor_lr"),
         )
         return (actor_v, state), infos
 
@@ -413,7 +418,10 @@ class A2C(Agent):
         critic_v, state = carry
         part = self._select(batch, indices, ("observations", "returns"))
         critic_v, state, infos = self.critic_updater.minimize(
-            lambda w: self._critic_loss(w, stats, part), critic_v, state
+            lambda w: self._critic_loss(w, stats, part),
+            critic_v,
+            state,
+            stats["scheduled"].get("critic_lr"),
         )
         return (critic_v, state), {"loss": infos["loss"]}
 
@@ -557,6 +565,7 @@ class A2C(Agent):
             self._return_moments(),
             self._segment(),
             self._asarray(orders),
+            self._scheduled_arrays(),
         )
         self.v, self.optimizer_states = v, states
         if moments is not None:

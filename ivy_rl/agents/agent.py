@@ -15,6 +15,10 @@ The base contract (what the trainer and every agent rely on):
   terminations) -> dict of floats`` records the last step's transitions and learns.
 - ``save(path)`` / ``load(path)``: ``load`` refuses a checkpoint of another class, or written with
   other settings (naming each setting that differs).
+- ``set_progress(fraction)``: the trainer tells the run's progress (the fraction of its steps
+  done, in ``[0, 1]``) before each update; agents read their scheduled settings
+  (:mod:`ivy_rl.schedules`, those named in ``scheduled``) at it and hand the values to their
+  compiled updates as arrays, so a changing value never compiles anew.
 - ``compiles``: how many compilations the agent's compiled functions made (one per distinct input
   signature of each function made by :meth:`Agent._compile`); it must not grow after the first
   update.
@@ -55,6 +59,7 @@ import ivy
 from ivy.stateful.checkpoint import flat_dict_to_nest, nest_to_flat_dict
 from ivy.typing import Framework, Nest
 from ivy_rl.models import check_observation_space, space_kind
+from ivy_rl.schedules import as_schedule, is_schedule
 
 __all__ = ["Agent"]
 
@@ -74,11 +79,58 @@ class Agent:
 
     supported_action_spaces: tuple[str, ...] = ("Box", "Discrete")
     learns = False
+    #: the settings this agent reads at the run's progress (a schedule or a number each)
+    scheduled: tuple[str, ...] = ()
 
     def __init__(self, **config: Any) -> None:
+        name = type(self).__name__
+        for key, value in config.items():
+            if key in self.scheduled:
+                schedule = as_schedule(value, name=f"{name}: setting {key!r}")
+                config[key] = str(schedule) if is_schedule(value) else schedule(0.0)
+            elif is_schedule(value):
+                raise ValueError(
+                    f"{name} does not schedule the setting {key!r} (it schedules "
+                    f"{list(self.scheduled) or 'none'}); give it a number, got {value!r}"
+                )
         self.config = dict(config)
         self.xp = None
         self.initialized = False
+        self.progress = 0.0
+
+    def set_progress(self, fraction: float) -> None:
+        """Tell the agent the run's progress, the fraction of its steps done (clamped to
+        ``[0, 1]``); the next updates read the scheduled settings at it.
+
+        Example:
+            >>> agent.set_progress(0.5)  # "linear:1e-3" learning rates are 5e-4 now
+        """
+        fraction = float(fraction)
+        if not np.isfinite(fraction):
+            raise ValueError(f"set_progress: fraction must be a finite number, got {fraction}")
+        self.progress = min(max(fraction, 0.0), 1.0)
+
+    def scheduled_values(self, progress: float | None = None) -> dict[str, float]:
+        """The scheduled settings' values at ``progress`` (default: the agent's progress).
+
+        Example:
+            >>> PPO(actor_lr="linear:1e-3").scheduled_values(0.5)["actor_lr"]
+            0.0005
+        """
+        progress = self.progress if progress is None else progress
+        return {
+            key: as_schedule(self.config[key], name=key)(progress)
+            for key in self.scheduled
+            if key in self.config
+        }
+
+    def _scheduled_arrays(self) -> dict[str, Any]:
+        """:meth:`scheduled_values` at the agent's progress, as scalars of its dtype on its
+        device: inputs of the compiled updates, which never retrace for a new value."""
+        return {
+            key: self._asarray(np.asarray(value, dtype=self.np_dtype))
+            for key, value in self.scheduled_values().items()
+        }
 
     # ------------------------------------------------------------------------------------------
     # Set-up
@@ -289,6 +341,7 @@ class Agent:
             "seed": self.seed,
             "dtype": self.dtype,
             "rng": self.rng.bit_generator.state,
+            "progress": self.progress,
             **self._meta(),
         }
         with open(os.path.join(path, "agent.json"), "w") as fh:
@@ -332,6 +385,7 @@ class Agent:
             flat = {key: data[key] for key in data.files}
         self._load_arrays(flat_dict_to_nest(flat) if flat else {})
         self.rng.bit_generator.state = meta["rng"]
+        self.progress = float(meta.get("progress", 0.0))
         self._load_meta(meta)
         return self
 

@@ -21,6 +21,8 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+from ivy_rl.schedules import ConstantSchedule, Schedule, as_schedule
+
 __all__ = [
     "FAMILIES",
     "DEFAULTS",
@@ -173,7 +175,10 @@ class Setting:
     """What values a setting takes.
 
     Attributes:
-        kind: ``'int'``, ``'float'``, ``'bool'``, ``'str'``, ``'sizes'`` (a non-empty list of
+        kind: ``'int'``, ``'float'``, ``'schedule'`` (a number, or a schedule of the run's
+            progress: ``'linear:<start>[:<end>]'`` or a :class:`ivy_rl.schedules.Schedule`,
+            recorded as its string; its start must lie in the bounds, its end may reach an
+            open low bound), ``'bool'``, ``'str'``, ``'sizes'`` (a non-empty list of
             positive integers) or ``'any'`` (a JSON value, not checked).
         low, high: bounds of numbers (inclusive unless ``open_low`` / ``open_high``).
         choices: the values a ``'str'`` setting takes.
@@ -210,8 +215,8 @@ SETTINGS: dict[str, Setting] = {
     "critic_iterations": Setting("int", 1, meaning="passes of critic regression per update"),
     "discount": Setting("float", 0.0, 1.0, meaning="discount factor gamma"),
     "trace_decay": Setting("float", 0.0, 1.0, meaning="lambda of the lambda-returns"),
-    "actor_lr": Setting("float", 0.0, open_low=True, meaning="actor's Adam learning rate"),
-    "critic_lr": Setting("float", 0.0, open_low=True, meaning="critic's Adam learning rate"),
+    "actor_lr": Setting("schedule", 0.0, open_low=True, meaning="actor's Adam learning rate"),
+    "critic_lr": Setting("schedule", 0.0, open_low=True, meaning="critic's Adam learning rate"),
     "entropy_coeff": Setting("float", 0.0, meaning="weight of the entropy bonus"),
     "gradient_clip": Setting("float", 0.0, meaning="global norm of gradients (0: none)"),
     "actor_gradient_clip": Setting("float", 0.0, meaning="global norm of the actor's gradients"),
@@ -222,7 +227,7 @@ SETTINGS: dict[str, Setting] = {
     "normalize_returns": Setting("bool"),
     "normalize_advantages": Setting("bool"),
     "fusion": Setting("str", choices=("auto", "update", "steps")),
-    "ratio_clip": Setting("float", 0.0, open_low=True, meaning="PPO's epsilon"),
+    "ratio_clip": Setting("schedule", 0.0, open_low=True, meaning="PPO's epsilon"),
     "kl_threshold": Setting(
         "float", optional=True, meaning="KL that stops PPO's actor (None: never)"
     ),
@@ -246,7 +251,7 @@ SETTINGS: dict[str, Setting] = {
     "target_noise": Setting("float", 0.0, meaning="TD3's target smoothing noise"),
     "target_noise_clip": Setting("float", 0.0, meaning="bound of TD3's target noise"),
     "initial_temperature": Setting("float", 0.0, open_low=True, meaning="SAC's initial alpha"),
-    "temperature_lr": Setting("float", 0.0, meaning="SAC's learning rate of log alpha"),
+    "temperature_lr": Setting("schedule", 0.0, meaning="SAC's learning rate of log alpha"),
     "target_entropy": Setting("float", optional=True, meaning="SAC's (None: -action size)"),
     "v_min": Setting("float", meaning="D4PG's lowest value of the support"),
     "v_max": Setting("float", meaning="D4PG's highest value of the support"),
@@ -259,7 +264,7 @@ SETTINGS: dict[str, Setting] = {
     "initial_log_alpha_mean": Setting("float"),
     "initial_log_alpha_std": Setting("float"),
     "min_log_dual": Setting("float"),
-    "dual_lr": Setting("float", 0.0, open_low=True, meaning="MPO's dual learning rate"),
+    "dual_lr": Setting("schedule", 0.0, open_low=True, meaning="MPO's dual learning rate"),
     "dueling": Setting("bool"),
     "double": Setting("bool"),
     "epsilon_start": Setting("float", 0.0, 1.0, meaning="DQN's initial epsilon"),
@@ -282,6 +287,8 @@ def _describe(spec: Setting) -> str:
         text = "true or false"
     else:
         text = "an integer" if spec.kind == "int" else "a number"
+        if spec.kind == "schedule":
+            text = "a number or a schedule 'linear:<start>' / 'linear:<start>:<end>'"
         bounds = []
         if spec.low is not None:
             bounds.append(f"{'>' if spec.open_low else '>='} {spec.low:g}")
@@ -332,6 +339,8 @@ def check_setting(name: str, value: Any) -> Any:
         if not all(int(s) >= 1 for s in value):
             raise fail(ValueError)
         return tuple(int(s) for s in value)
+    if spec.kind == "schedule" and not _is_number(value) and not isinstance(value, (int, float)):
+        return _check_schedule(name, spec, value, fail)
     if spec.kind == "int":
         if not _is_int(value):
             raise fail(TypeError)
@@ -347,6 +356,26 @@ def check_setting(name: str, value: Any) -> Any:
     if spec.high is not None and (value >= spec.high if spec.open_high else value > spec.high):
         raise fail(ValueError)
     return value
+
+
+def _check_schedule(name: str, spec: Setting, value: Any, fail: Any) -> Any:
+    """A schedule's string (``'linear:...'``) or :class:`Schedule` checked: its start within the
+    setting's bounds, its end too (or at an open low bound: down to 0); its string returned."""
+    if not isinstance(value, (str, Schedule)):
+        raise fail(TypeError)
+    try:
+        schedule = as_schedule(value, name=f"setting {name!r}")
+    except (TypeError, ValueError):
+        raise fail(ValueError) from None
+    if isinstance(schedule, ConstantSchedule):
+        return check_setting(name, schedule.value)
+    start, end = schedule(0.0), schedule(1.0)
+    low, high = spec.low, spec.high
+    if low is not None and ((start <= low if spec.open_low else start < low) or end < low):
+        raise fail(ValueError)
+    if high is not None and ((start >= high if spec.open_high else start > high) or end > high):
+        raise fail(ValueError)
+    return str(schedule)
 
 
 def _is_int(value: Any) -> bool:

@@ -46,6 +46,7 @@ class MPO(DDPG):
     """
 
     _unused = ("exploration", "exploration_scale")
+    scheduled = ("actor_lr", "critic_lr", "dual_lr")
     _defaults: dict[str, Any] = dict(
         num_samples=20,
         epsilon=0.1,

@@ -19,6 +19,7 @@ in :meth:`OffPolicyAgent._learn_step`.
 
 from __future__ import annotations
 
+import copy
 from typing import Any
 
 import numpy as np
@@ -30,8 +31,19 @@ from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.buffers import TransitionReplay, n_step_batch
 from ivy_rl.critics import soft_update
 from ivy_rl.normalizers import MeanStd
+from ivy_rl.schedules import as_schedule
 
 __all__ = ["OffPolicyAgent"]
+
+
+#: the setting of each part's learning rate (the parts of ``self.optimizers``)
+_LEARNING_RATE_OF_PART = {
+    "actor": "actor_lr",
+    "critic": "critic_lr",
+    "q": "critic_lr",
+    "temperature": "temperature_lr",
+    "dual": "dual_lr",
+}
 
 
 class OffPolicyAgent(Agent):
@@ -57,6 +69,7 @@ class OffPolicyAgent(Agent):
     """
 
     learns = True
+    scheduled: tuple[str, ...] = ("actor_lr", "critic_lr")
     _defaults: dict[str, Any] = dict(
         hidden_sizes=(256, 256),
         critic_hidden_sizes=None,
@@ -144,8 +157,10 @@ class OffPolicyAgent(Agent):
     def _build_exploration(self) -> None:
         """The exploration on the host (none by default)."""
 
-    def _adam(self, lr: float) -> Any:
-        return ivy.Adam(lr, f=self.xp)
+    def _adam(self, lr: float | str) -> Any:
+        """Adam at the start of ``lr`` (a number or a schedule); each step takes its scheduled
+        learning rate as an array (:meth:`_minimize`)."""
+        return ivy.Adam(as_schedule(lr)(0.0), f=self.xp)
 
     def _refresh_stats(self) -> None:
         norm = self.observation_normalizer
@@ -167,24 +182,32 @@ class OffPolicyAgent(Agent):
         """Actions of the test policy."""
         raise NotImplementedError
 
-    def _update_fn(self, carry, xs, arrays, obs_stats):
+    def _update_fn(self, carry, xs, arrays, obs_stats, scheduled):
         """The whole update: ``(carry, logs)`` after the steps of ``xs`` (leading axis: the
-        optimisation steps), ``carry = {'v', 'targets', 'states'}``."""
+        optimisation steps), ``carry = {'v', 'targets', 'states'}``; ``scheduled``: the
+        scheduled learning rates (scalar arrays, :meth:`Agent.set_progress`)."""
         xp = self.xp
         if self._fused:
-            carry, ys = xp.scan(lambda c, x: self._scan_step(c, x, arrays, obs_stats), carry, xs)
+            carry, ys = xp.scan(
+                lambda c, x: self._scan_step(c, x, arrays, obs_stats, scheduled), carry, xs
+            )
         else:
             steps = int(ivy.nest.flatten_nest(xs)[0][0].shape[0])
             outs = []
             for i in range(steps):
                 x = ivy.nest.map_nest(lambda a, i=i: a[i], xs)
-                carry, y = self._compiled_step(carry, x, arrays, obs_stats)
+                carry, y = self._compiled_step(carry, x, arrays, obs_stats, scheduled)
                 outs.append(y)
             ys = {k: xp.stack([y[k] for y in outs]) for k in outs[0]}
         return carry, {k: xp.mean(y) for k, y in ys.items()}
 
-    def _scan_step(self, carry, x, arrays, obs_stats):
-        return self._learn_step(carry, x, arrays, obs_stats)
+    def _scan_step(self, carry, x, arrays, obs_stats, scheduled):
+        # the learning rates of the step being traced, read by _minimize
+        self._step_lrs = scheduled
+        try:
+            return self._learn_step(carry, x, arrays, obs_stats)
+        finally:
+            self._step_lrs = None
 
     def _learn_step(self, carry, x, arrays, obs_stats):
         """One optimisation step: ``(carry, scalars)``."""
@@ -203,7 +226,12 @@ class OffPolicyAgent(Agent):
         clip = self.config["gradient_clip"]
         if clip:
             grads = xp.clip_by_global_norm(grads, clip)[0]
-        new_v, new_state = self.optimizers[part].step(v, grads, state)
+        optimizer = self.optimizers[part]
+        lr = (getattr(self, "_step_lrs", None) or {}).get(_LEARNING_RATE_OF_PART.get(part))
+        if lr is not None:
+            optimizer = copy.copy(optimizer)
+            optimizer.lr = lr
+        new_v, new_state = optimizer.step(v, grads, state)
         return new_v, new_state, {"loss": loss, **(aux[0] if aux else {})}
 
     def _soft_update(self, targets, v, parts):
@@ -307,7 +335,8 @@ class OffPolicyAgent(Agent):
         )
         xs = self._placed(self._draw(c["batch_iterations"]))
         carry = {"v": self.v, "targets": self.targets, "states": self.optimizer_states}
-        carry, logs = self._update(carry, xs, self.replay.arrays, self.obs_stats)
+        scheduled = self._scheduled_arrays()
+        carry, logs = self._update(carry, xs, self.replay.arrays, self.obs_stats, scheduled)
         self.v, self.targets = carry["v"], carry["targets"]
         self.optimizer_states = carry["states"]
         self.updates += 1

@@ -45,6 +45,7 @@ class PPO(A2C):
     """
 
     _unused = ("critic_iterations",)
+    scheduled = ("actor_lr", "critic_lr", "ratio_clip")
     _defaults: dict[str, Any] = dict(
         segment_size=2048,
         batch_size=64,
@@ -90,14 +91,20 @@ class PPO(A2C):
         keys = ("observations", "actions", "log_probs", "advantages", "returns")
         part = self._select(batch, indices, keys)
         actor_v, actor_state, actor_infos = self.actor_updater.minimize(
-            lambda w: self._actor_loss(w, stats, part), v["actor"], states["actor"]
+            lambda w: self._actor_loss(w, stats, part),
+            v["actor"],
+            states["actor"],
+            stats["scheduled"].get("actor_lr"),
         )
         threshold = self.actor_updater.kl_threshold
         if threshold is not None:
             actor_v = self._masked(active, actor_v, v["actor"])
             actor_state = self._masked(active, actor_state, states["actor"])
         critic_v, critic_state, critic_infos = self.critic_updater.minimize(
-            lambda w: self._critic_loss(w, stats, part), v["critic"], states["critic"]
+            lambda w: self._critic_loss(w, stats, part),
+            v["critic"],
+            states["critic"],
+            stats["scheduled"].get("critic_lr"),
         )
         ys = {f"actor/{k}": actor_infos[k] for k in _ACTOR_LOGS}
         ys["actor/taken"] = self.xp.astype(active, actor_infos["loss"].dtype)
@@ -107,6 +114,10 @@ class PPO(A2C):
         new_v = {"actor": actor_v, "critic": critic_v}
         new_states = {"actor": actor_state, "critic": critic_state}
         return (new_v, new_states, active), ys
+
+    def _actor_loss(self, actor_v, stats, batch):
+        dist = self.model.actor(batch["observations"], stats["obs"], v=actor_v)
+        return self.actor_updater.loss(dist, batch, stats["scheduled"].get("ratio_clip"))
 
     def _iteration_counts(self, batches: int) -> dict[str, float]:
         return {"critic/iterations": float(batches)}  # the actor's count is computed

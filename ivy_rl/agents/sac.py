@@ -40,6 +40,7 @@ class SAC(DDPG):
     """
 
     _unused = ("exploration", "exploration_scale")
+    scheduled = ("actor_lr", "critic_lr", "temperature_lr")
     _defaults: dict[str, Any] = dict(
         initial_temperature=1.0, temperature_lr=1e-3, target_entropy=None
     )
