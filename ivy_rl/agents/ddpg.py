@@ -33,6 +33,24 @@ from ivy_rl.models import (
 __all__ = ["DDPG"]
 
 
+class ExploresItself:
+    """For DDPG's descendants whose stochastic policy explores by itself (SAC, MPO): acting
+    adds no noise on the host, and there is no exploration state to keep. Listed before DDPG
+    among the bases, so that it replaces DDPG's noise."""
+
+    def _policy_actions(self, observations):
+        return self._behaviour_actions(observations)
+
+    def _reset_exploration(self, resets):
+        pass
+
+    def _exploration_state(self):
+        return {}
+
+    def _load_exploration_state(self, state):
+        pass
+
+
 class DDPG(OffPolicyAgent):
     """Deep deterministic policy gradient, with n-step returns and partial-episode
     bootstrapping.

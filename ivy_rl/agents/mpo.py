@@ -21,13 +21,13 @@ from typing import Any
 
 import numpy as np
 
-from ivy_rl.agents.ddpg import DDPG
+from ivy_rl.agents.ddpg import DDPG, ExploresItself
 from ivy_rl.models import GaussianHead
 
 __all__ = ["MPO"]
 
 
-class MPO(DDPG):
+class MPO(ExploresItself, DDPG):
     """Maximum a posteriori policy optimisation with decoupled KL constraints.
 
     Args:
@@ -104,18 +104,6 @@ class MPO(DDPG):
     def _act_fn(self, v, obs_stats, observations, noise):
         dist = self.model.actor(observations, obs_stats, v=v["actor"])
         return self.xp.clip(dist.sample(noise), -1.0, 1.0)
-
-    def _policy_actions(self, observations):
-        return self._behaviour_actions(observations)  # it explores itself: no added noise
-
-    def _reset_exploration(self, resets):
-        pass
-
-    def _exploration_state(self):
-        return {}
-
-    def _load_exploration_state(self, state):
-        pass
 
     # ------------------------------------------------------------------------------------------
     # Learning

@@ -19,13 +19,13 @@ from typing import Any
 
 import numpy as np
 
-from ivy_rl.agents.ddpg import DDPG
+from ivy_rl.agents.ddpg import DDPG, ExploresItself
 from ivy_rl.models import SquashedGaussianHead
 
 __all__ = ["SAC"]
 
 
-class SAC(DDPG):
+class SAC(ExploresItself, DDPG):
     """Soft actor-critic with twin critics and a learned temperature.
 
     Args:
@@ -85,18 +85,6 @@ class SAC(DDPG):
 
     def _act_fn(self, v, obs_stats, observations, noise):
         return self.model.actor(observations, obs_stats, v=v["actor"]).sample(noise)
-
-    def _policy_actions(self, observations):
-        return self._behaviour_actions(observations)  # it explores itself: no added noise
-
-    def _reset_exploration(self, resets):
-        pass
-
-    def _exploration_state(self):
-        return {}
-
-    def _load_exploration_state(self, state):
-        pass
 
     # ------------------------------------------------------------------------------------------
     # Learning
