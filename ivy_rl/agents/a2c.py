@@ -41,7 +41,6 @@ import numpy as np
 from ivy.nest import map_nest, multi_map_nest
 from ivy.typing import Array
 from ivy_rl.agents.agent import Agent
-from ivy_rl.agents.defaults import check_setting
 from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.models import ActorCriticModel
 from ivy_rl.normalizers import MeanStd, ReturnNormalizer, _fold_moments, _standard_deviation
@@ -135,7 +134,6 @@ class A2C(Agent):
         critic_gradient_clip=0.0,
         fusion="auto",
     )
-    _unused: tuple[str, ...] = ()
     scheduled = ("actor_lr", "critic_lr")
     _MODEL = (
         "hidden_sizes",
@@ -188,19 +186,7 @@ class A2C(Agent):
             "actor_updater": actor_updater,
             "critic_updater": critic_updater,
         }
-        config = {}
-        for cls in reversed(type(self).__mro__):
-            config.update(getattr(cls, "_defaults", {}))
-        for key in self._unused:
-            config.pop(key, None)
-        unknown = sorted(set(settings) - set(config))
-        if unknown:
-            raise TypeError(
-                f"{name} got unknown settings {unknown}; its settings are {sorted(config)}, "
-                f"and its parts {', '.join(self.parts)}"
-            )
-        config.update(settings)
-        config = {k: check_setting(k, v) for k, v in config.items()}
+        config = self._checked_settings(settings, f", and its parts {', '.join(self.parts)}")
         built = {}
         for role, (cls, names) in self.parts.items():
             part = given[role]

@@ -82,6 +82,30 @@ class Agent:
     #: the settings this agent reads at the run's progress (a schedule or a number each)
     scheduled: tuple[str, ...] = ()
 
+    #: settings of a base class that this agent does not read
+    _unused: tuple[str, ...] = ()
+
+    @classmethod
+    def _checked_settings(cls, settings: dict[str, Any], also: str = "") -> dict[str, Any]:
+        """The ``_defaults`` of every class in the MRO, less ``_unused``, overridden by
+        ``settings`` (an unknown one is a TypeError that lists the known ones, then ``also``),
+        each checked by :func:`~ivy_rl.agents.defaults.check_setting`."""
+        from ivy_rl.agents.defaults import check_setting
+
+        config: dict[str, Any] = {}
+        for klass in reversed(cls.__mro__):
+            config.update(getattr(klass, "_defaults", {}))
+        for key in cls._unused:
+            config.pop(key, None)
+        unknown = sorted(set(settings) - set(config))
+        if unknown:
+            raise TypeError(
+                f"{cls.__name__} got unknown settings {unknown}; its settings are "
+                f"{sorted(config)}{also}"
+            )
+        config.update(settings)
+        return {k: check_setting(k, v) for k, v in config.items()}
+
     def __init__(self, **config: Any) -> None:
         name = type(self).__name__
         for key, value in config.items():

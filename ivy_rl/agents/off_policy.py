@@ -26,7 +26,6 @@ import numpy as np
 
 import ivy
 from ivy_rl.agents.agent import Agent
-from ivy_rl.agents.defaults import check_setting
 from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.buffers import TransitionReplay, n_step_batch
 from ivy_rl.critics import soft_update
@@ -89,22 +88,9 @@ class OffPolicyAgent(Agent):
         normalize_observations=True,
         fusion="auto",
     )
-    _unused: tuple[str, ...] = ()
 
     def __init__(self, **settings: Any) -> None:
-        config: dict[str, Any] = {}
-        for cls in reversed(type(self).__mro__):
-            config.update(getattr(cls, "_defaults", {}))
-        for key in self._unused:
-            config.pop(key, None)
-        unknown = sorted(set(settings) - set(config))
-        if unknown:
-            raise TypeError(
-                f"{type(self).__name__} got unknown settings {unknown}; its settings are "
-                f"{sorted(config)}"
-            )
-        config.update(settings)
-        config = {k: check_setting(k, v) for k, v in config.items()}
+        config = self._checked_settings(settings)
         if config["fusion"] not in FUSION_LEVELS:
             raise ValueError(
                 f"{type(self).__name__}: unknown fusion {config['fusion']!r}; choose one of "
