@@ -30,17 +30,40 @@ def matmul(x1, x2, /):
     """``tf.linalg.matmul``, plus 1-D operands and dtype promotion as in numpy."""
     if type(x1) in FAST_TYPES and type(x2) in FAST_TYPES:
         try:
-            return tf.linalg.matmul(x1, x2)
+            return _batched_matmul(x1, x2)
         except REFUSED:
             pass
     x1, x2 = promote(x1, x2)
     vec1, vec2 = x1.shape.rank == 1, x2.shape.rank == 1
-    out = _integer_safe(tf.linalg.matmul, x1[None] if vec1 else x1, x2[:, None] if vec2 else x2)
+    out = _integer_safe(_batched_matmul, x1[None] if vec1 else x1, x2[:, None] if vec2 else x2)
     if vec2:
         out = out[..., 0]  # drop the column of the vector made a matrix
     if vec1:
         out = out[..., 0] if vec2 else out[..., 0, :]
     return out
+
+
+def _batched_matmul(x1, x2):
+    """``tf.linalg.matmul`` with batch broadcasting made explicit.
+
+    tensorflow 2.21's oneDNN kernel corrupts the heap (the process aborts) on some broadcast batch
+    shapes, e.g. float32 ``[8, 1, 3, 3] @ [1, 3, 1]`` or ``[8, 1, 3, 3] @ [3, 1]``. Operands with
+    equal batch shapes take the kernel's plain path; a matrix right operand folds the left
+    operand's batch into its rows; other batch shapes are broadcast to their common shape first.
+    """
+    rank1, rank2 = x1.shape.rank, x2.shape.rank
+    if rank1 is None or rank2 is None or rank1 < 2 or rank2 < 2 or rank1 + rank2 == 4:
+        return tf.linalg.matmul(x1, x2)  # no batch to broadcast (or tf's own error)
+    batch1, batch2 = x1.shape[:-2], x2.shape[:-2]
+    if batch1 == batch2 and batch1.is_fully_defined():
+        return tf.linalg.matmul(x1, x2)
+    if rank2 == 2:
+        rows = tf.linalg.matmul(tf.reshape(x1, [-1, tf.shape(x1)[-1]]), x2)
+        return tf.reshape(rows, tf.concat([tf.shape(x1)[:-1], tf.shape(x2)[-1:]], 0))
+    batch = tf.broadcast_dynamic_shape(tf.shape(x1)[:-2], tf.shape(x2)[:-2])
+    x1 = tf.broadcast_to(x1, tf.concat([batch, tf.shape(x1)[-2:]], 0))
+    x2 = tf.broadcast_to(x2, tf.concat([batch, tf.shape(x2)[-2:]], 0))
+    return tf.linalg.matmul(x1, x2)
 
 
 # Integer dtypes that tf's matmul has no kernel for: computed in int64 (uint64 as its bits),

@@ -60,6 +60,11 @@ MATMUL_SHAPES = [
     ((2, 3, 4), (4,)),  # matrix @ vector
     ((4,), (4,)),  # dot product: 0-d
     ((3, 0), (0, 2)),  # empty inner dimension: zeros
+    # broadcast batches on which tensorflow 2.21's oneDNN kernel corrupts the heap (float32)
+    ((8, 1, 3, 3), (1, 3, 1)),
+    ((8, 1, 3, 3), (3, 1)),
+    ((8, 1, 3, 3), (1, 1, 3, 3)),
+    ((3, 3), (8, 1, 3, 1)),
 ]
 
 
