@@ -42,11 +42,17 @@ class DynamicsMixin:
     """
 
     def __new__(cls, *args: Any, **kwargs: Any):
-        # keep the compiled MuJoCo model given to the constructor: the dynamic constants are
-        # read from it on first use
+        # read the dynamic constants from the compiled MuJoCo model when the tree is built, not
+        # on first use: a first use inside a traced function (torch.compile) cannot call into
+        # MuJoCo. What the dynamics do not model is raised on use, so kinematics still work.
         instance = super().__new__(cls)
         source = args[0] if args else kwargs.get("model")
         instance.__dict__["_dynamics_source"] = source
+        if source is not None:
+            try:
+                instance.__dict__["_dynamics_cache"] = D.read_dynamics(source)
+            except NotImplementedError as error:
+                instance.__dict__["_dynamics_error"] = str(error)
         return instance
 
     # ------------------------------------------------------------------------------------------
@@ -57,6 +63,8 @@ class DynamicsMixin:
     def dynamics_model(self) -> D.DynamicsModel:
         """The dynamic constants (Python floats and tuples), read once from the MuJoCo model."""
         cached = self.__dict__.get("_dynamics_cache")
+        if cached is None and "_dynamics_error" in self.__dict__:
+            raise NotImplementedError(self.__dict__["_dynamics_error"])
         if cached is None:
             source = getattr(self, "model", None) or self.__dict__.get("_dynamics_source")
             if source is None:

@@ -183,8 +183,24 @@ def test_step_gradients_match_finite_differences(name, oracles, request):
 
 
 def test_compiled_equals_eager(graph_backend, oracles):
-    model, tree, states, ref = oracles("inverted_pendulum")
+    """A fresh tree: the compiled call is its first use (its constants must not be read from
+    MuJoCo inside the trace, which torch.compile cannot follow)."""
+    model, _, states, ref = oracles("inverted_pendulum")
+    tree = ivy_robot.KinematicTree.from_mjcf(GYMNASIUM["inverted_pendulum"])
     q, v, u = (native(states[k], graph_backend) for k in ("qpos", "qvel", "ctrl"))
+    compiled = ivy.compile_fn(lambda q, v, u: tree.forward_dynamics(q, v, u))(q, v, u)
+    eager = tree.forward_dynamics(q, v, u)
+    np.testing.assert_allclose(numpy_of(compiled), numpy_of(eager), rtol=1e-12, atol=1e-12)
+
+
+def test_first_use_inside_torch_compile(oracles):
+    """torch.compile cannot trace into MuJoCo: a tree reads its constants when it is built, so
+    that a compiled function may be the first to use them (dynamo failed in the MuJoCo calls
+    with a RecursionError before)."""
+    pytest.importorskip("torch")
+    model, _, states, ref = oracles("inverted_pendulum")
+    tree = ivy_robot.KinematicTree.from_mjcf(GYMNASIUM["inverted_pendulum"])
+    q, v, u = (native(states[k], "torch") for k in ("qpos", "qvel", "ctrl"))
     compiled = ivy.compile_fn(lambda q, v, u: tree.forward_dynamics(q, v, u))(q, v, u)
     eager = tree.forward_dynamics(q, v, u)
     np.testing.assert_allclose(numpy_of(compiled), numpy_of(eager), rtol=1e-12, atol=1e-12)
