@@ -47,12 +47,10 @@ class DynamicsMixin:
         # MuJoCo. What the dynamics do not model is raised on use, so kinematics still work.
         instance = super().__new__(cls)
         source = args[0] if args else kwargs.get("model")
-        instance.__dict__["_dynamics_source"] = source
-        if source is not None:
-            try:
-                instance.__dict__["_dynamics_cache"] = D.read_dynamics(source)
-            except NotImplementedError as error:
-                instance.__dict__["_dynamics_error"] = str(error)
+        try:
+            instance.__dict__["_dynamics"] = None if source is None else D.read_dynamics(source)
+        except NotImplementedError as error:
+            instance.__dict__["_dynamics"] = error
         return instance
 
     # ------------------------------------------------------------------------------------------
@@ -61,20 +59,17 @@ class DynamicsMixin:
 
     @property
     def dynamics_model(self) -> D.DynamicsModel:
-        """The dynamic constants (Python floats and tuples), read once from the MuJoCo model."""
-        cached = self.__dict__.get("_dynamics_cache")
-        if cached is None and "_dynamics_error" in self.__dict__:
-            raise NotImplementedError(self.__dict__["_dynamics_error"])
-        if cached is None:
-            source = getattr(self, "model", None) or self.__dict__.get("_dynamics_source")
-            if source is None:
-                raise ValueError(
-                    "KinematicTree dynamics: this tree was built without a MuJoCo model; build "
-                    "it with KinematicTree.from_mjcf(...)"
-                )
-            cached = D.read_dynamics(source)
-            self.__dict__["_dynamics_cache"] = cached
-        return cached
+        """The dynamic constants (Python floats and tuples), read from the MuJoCo model when the
+        tree was built."""
+        dynamics = self.__dict__.get("_dynamics")
+        if isinstance(dynamics, NotImplementedError):
+            raise NotImplementedError(str(dynamics))
+        if dynamics is None:
+            raise ValueError(
+                "KinematicTree dynamics: this tree was built without a MuJoCo model; build "
+                "it with KinematicTree.from_mjcf(...)"
+            )
+        return dynamics
 
     @property
     def nu(self) -> int:

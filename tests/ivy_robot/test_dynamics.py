@@ -182,28 +182,26 @@ def test_step_gradients_match_finite_differences(name, oracles, request):
     check_gradients(backend, _step_state(tree), [q, v, u], rtol=1e-6)
 
 
-def test_compiled_equals_eager(graph_backend, oracles):
-    """A fresh tree: the compiled call is its first use (its constants must not be read from
-    MuJoCo inside the trace, which torch.compile cannot follow)."""
-    model, _, states, ref = oracles("inverted_pendulum")
+def _compiled_first_use_equals_eager(backend, oracles):
+    """A fresh tree, whose first use is the compiled call: its constants must not be read from
+    MuJoCo inside the trace, which torch.compile cannot follow."""
+    _, _, states, _ = oracles("inverted_pendulum")
     tree = ivy_robot.KinematicTree.from_mjcf(GYMNASIUM["inverted_pendulum"])
-    q, v, u = (native(states[k], graph_backend) for k in ("qpos", "qvel", "ctrl"))
+    q, v, u = (native(states[k], backend) for k in ("qpos", "qvel", "ctrl"))
     compiled = ivy.compile_fn(lambda q, v, u: tree.forward_dynamics(q, v, u))(q, v, u)
     eager = tree.forward_dynamics(q, v, u)
     np.testing.assert_allclose(numpy_of(compiled), numpy_of(eager), rtol=1e-12, atol=1e-12)
+
+
+def test_compiled_equals_eager(graph_backend, oracles):
+    _compiled_first_use_equals_eager(graph_backend, oracles)
 
 
 def test_first_use_inside_torch_compile(oracles):
-    """torch.compile cannot trace into MuJoCo: a tree reads its constants when it is built, so
-    that a compiled function may be the first to use them (dynamo failed in the MuJoCo calls
-    with a RecursionError before)."""
+    """dynamo failed in the MuJoCo calls with a RecursionError when the constants were read on
+    first use; torch.compile is slow to start, so torch has this one case."""
     pytest.importorskip("torch")
-    model, _, states, ref = oracles("inverted_pendulum")
-    tree = ivy_robot.KinematicTree.from_mjcf(GYMNASIUM["inverted_pendulum"])
-    q, v, u = (native(states[k], "torch") for k in ("qpos", "qvel", "ctrl"))
-    compiled = ivy.compile_fn(lambda q, v, u: tree.forward_dynamics(q, v, u))(q, v, u)
-    eager = tree.forward_dynamics(q, v, u)
-    np.testing.assert_allclose(numpy_of(compiled), numpy_of(eager), rtol=1e-12, atol=1e-12)
+    _compiled_first_use_equals_eager("torch", oracles)
 
 
 def test_batch_shape_and_dtype(backend, oracles):
