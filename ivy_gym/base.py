@@ -149,6 +149,33 @@ class Env:
         centre, half = (high + low) / 2, (high - low) / 2 * self.reset_scale
         return centre - half, centre + half
 
+    def draw_initial(self, rng: np.random.Generator, batch_shape: Shape | int = ()) -> np.ndarray:
+        """Initial draws on the host with numpy's generator, as Gymnasium's own environment draws
+        them: what the Gymnasium facades' seeded ``reset`` gives to :meth:`kernel_initial`.
+
+        The default draws the random components of :meth:`initial_bounds` with one
+        ``rng.random`` call, ``low + width * u``: the values of Gymnasium's
+        ``uniform(low, high)``. Tasks whose Gymnasium reset draws otherwise (normal velocities,
+        a goal by rejection) override this, and only this.
+
+        Args:
+            rng: the generator (the facade's ``np_random``).
+            batch_shape: leading shape of the batch, ``()`` for one state.
+
+        Returns:
+            float64 ``(*batch_shape, state_dim)``.
+        """
+        batch = _shape(batch_shape)
+        low, high = self.initial_bounds()
+        random = low != high
+        values = low[random] + (high - low)[random] * rng.random((*batch, int(random.sum())))
+        if random.all():
+            return values
+        states = np.empty((*batch, low.size))
+        states[...] = low
+        states[..., random] = values
+        return states
+
     def narrowed(self, scale: float) -> Env:
         """A copy whose initial states come from the reset box shrunk by ``scale`` (in (0, 1])
         about its centre: a curriculum of easier starts (for the swing-up tasks, whose boxes

@@ -87,24 +87,6 @@ class _Facade:
         # checks and converts the actions, so ``Env.step``'s look-up of the backend and its
         # checks are not needed at every step).
         self._step = functools.partial(core.kernel_step, self.xp)
-        reset_low, reset_high = core.initial_bounds()
-        random = reset_low != reset_high
-        self._reset_low, self._random = reset_low, None if random.all() else random
-        self._random_low = reset_low[random]
-        self._random_width = reset_high[random] - self._random_low
-
-    def _draw_states(self, rng: np.random.Generator, count: int | None) -> np.ndarray:
-        """Initial states drawn with Gymnasium's generator: the random components of the reset
-        box from one ``random`` call, ``low + width * u``, the values that Gymnasium's own
-        environments draw with ``uniform(low, high)``."""
-        batch = () if count is None else (count,)
-        values = self._random_low + self._random_width * rng.random((*batch, self._random_low.size))
-        if self._random is None:
-            return values
-        states = np.empty((*batch, self._reset_low.size))
-        states[...] = self._reset_low
-        states[..., self._random] = values
-        return states
 
     def _to_backend(self, states: np.ndarray):
         x = self.xp.asarray(np.asarray(states, np.float64), dtype=self.dtype, device=self.device)
@@ -217,7 +199,7 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
         super().reset(seed=seed)
-        self._state = self._to_backend(self._draw_states(self.np_random, None))
+        self._state = self._to_backend(self.core.draw_initial(self.np_random))
         return self._numpy(self.core.kernel_observe(self.xp, self._state)), {}
 
     def step(self, action):
@@ -320,7 +302,7 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
         super().reset(seed=seed)
-        self._state = self._to_backend(self._draw_states(self.np_random, self.num_envs))
+        self._state = self._to_backend(self.core.draw_initial(self.np_random, self.num_envs))
         self._steps[:] = 0
         self._prev_done[:] = False
         return self._numpy(self.core.kernel_observe(self.xp, self._state)), {}
@@ -342,7 +324,7 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         restarts = np.count_nonzero(restart)
         if restarts:
             # Gymnasium's next-step autoreset, in place on numpy copies of this step's outputs
-            fresh = self._to_backend(self._draw_states(self.np_random, restarts))
+            fresh = self._to_backend(self.core.draw_initial(self.np_random, restarts))
             if not state_np.flags.writeable or state_np is self._to_numpy(self._state):
                 state_np = state_np.copy()
             state_np[restart] = self._numpy(fresh)

@@ -229,3 +229,32 @@ def test_vector_env_discrete_actions_and_fresh_observations():
     np.testing.assert_allclose(obs, expected, rtol=1e-6, atol=1e-7)
     obs[:] = 100.0  # the caller's array: changing it leaves the environments' state alone
     np.testing.assert_allclose(envs.unwrapped.state, expected, rtol=1e-6, atol=1e-7)
+
+
+class _NormalStartPendulum(ivy_gym.Pendulum):
+    """A core whose host reset draws otherwise than the uniform box: the facades must use it."""
+
+    def draw_initial(self, rng, batch_shape=()):
+        batch = (batch_shape,) if isinstance(batch_shape, int) else tuple(batch_shape)
+        return np.stack([rng.standard_normal(batch), np.zeros(batch)], axis=-1) * 0.5
+
+
+def test_facades_reset_through_the_core_host_draw(backend):
+    core = _NormalStartPendulum()
+    env = ivy_gym.GymnasiumEnv(core, framework=backend, dtype="float64")
+    obs, _ = env.reset(seed=3)
+    theta = 0.5 * np.random.default_rng(3).standard_normal()
+    np.testing.assert_allclose(obs, [np.cos(theta), np.sin(theta), 0.0], atol=1e-12)
+    envs = ivy_gym.GymnasiumVectorEnv(core, 4, framework=backend, dtype="float64")
+    obs, _ = envs.reset(seed=5)
+    thetas = 0.5 * np.random.default_rng(5).standard_normal(4)
+    np.testing.assert_allclose(obs[:, 1], np.sin(thetas), atol=1e-12)
+    np.testing.assert_array_equal(obs[:, 2], 0.0)
+
+
+def test_default_host_draw_is_gymnasiums_uniform_box():
+    core = ivy_gym.Pendulum()
+    low, high = core.initial_bounds()
+    draws = core.draw_initial(np.random.default_rng(0), (3,))
+    np.testing.assert_array_equal(draws, np.random.default_rng(0).uniform(low, high, (3, 2)))
+    assert core.draw_initial(np.random.default_rng(0)).shape == (2,)
