@@ -197,6 +197,17 @@ def trust_region_step(
 # ----------------------------------------------------------------------------------------------
 
 
+def at_rate(optimizer: Any, lr: Array | None) -> Any:
+    """``optimizer`` taking its step at the learning rate ``lr`` (a scalar array: a scheduled
+    value, an input of the compiled update, so a new value never compiles anew); itself when
+    ``lr`` is None."""
+    if lr is None:
+        return optimizer
+    optimizer = copy.copy(optimizer)
+    optimizer.lr = lr
+    return optimizer
+
+
 class GradientUpdater:
     """An updater that takes Adam steps on gradients clipped by their global norm.
 
@@ -255,11 +266,7 @@ class GradientUpdater:
         loss, grads, *aux = xp.execute_with_gradients(loss_fn, v)
         if self.gradient_clip:
             grads = xp.clip_by_global_norm(grads, self.gradient_clip)[0]
-        optimizer = self.optimizer
-        if lr is not None:
-            optimizer = copy.copy(optimizer)
-            optimizer.lr = lr
-        new_v, new_state = optimizer.step(v, grads, state)
+        new_v, new_state = at_rate(self.optimizer, lr).step(v, grads, state)
         return new_v, new_state, {"loss": loss, **(aux[0] if aux else {})}
 
 

@@ -30,7 +30,8 @@ class APG(DifferentiableAgent):
 
     Args:
         hidden_sizes, activation: the policy's MLP.
-        actor_lr: Adam's learning rate.
+        actor_lr: Adam's learning rate: a number or a linear schedule of the run's progress
+            (``"linear:1e-3"``, :mod:`ivy_rl.schedules`).
         actor_gradient_clip: global norm of the gradient (0: no clipping).
         discount: γ of the return.
         batch_size: rollouts per update.
@@ -50,9 +51,12 @@ class APG(DifferentiableAgent):
         self.v = self._placed({"actor": self.actor.v})
         self.optimizer_states = {"actor": self.actor_optimizer.init(self.v["actor"])}
 
-    def _update_fn(self, v, states, start):
-        """One Adam step of the actor from rollouts of the initial states ``start``."""
-        actor_v, actor_state, logs = self._actor_step(v["actor"], states["actor"], start)
+    def _update_fn(self, v, states, start, scheduled):
+        """One Adam step of the actor from rollouts of the initial states ``start``, at the
+        scheduled learning rate."""
+        actor_v, actor_state, logs = self._actor_step(
+            v["actor"], states["actor"], start, scheduled["actor_lr"]
+        )
         return {"actor": actor_v}, {"actor": actor_state}, logs
 
     def policy_loss(self, actor_v: Any, start: Any) -> tuple[Any, dict[str, Any]]:
@@ -80,16 +84,18 @@ class APG(DifferentiableAgent):
         reward = xp.stop_gradient(xp.mean(rewards))
         return -xp.mean(discounted) / horizon, {"rollout_reward": reward}
 
-    def _actor_step(self, actor_v, actor_state, start):
+    def _actor_step(self, actor_v, actor_state, start, lr):
         def loss_fn(w):
             return self.policy_loss(w, start)
 
-        actor_v, actor_state, infos = self._actor_minimize(loss_fn, actor_v, actor_state)
+        actor_v, actor_state, infos = self._actor_minimize(loss_fn, actor_v, actor_state, lr)
         return actor_v, actor_state, {f"actor/{k}": x for k, x in infos.items()}
 
     def _learn(self) -> dict[str, float]:
         c = self.config
         start = self._asarray(self._initial_states(c["batch_size"]))
-        self.v, self.optimizer_states, logs = self._update(self.v, self.optimizer_states, start)
+        self.v, self.optimizer_states, logs = self._update(
+            self.v, self.optimizer_states, start, self._scheduled_arrays()
+        )
         self.simulated_steps += c["batch_size"] * c["horizon"]
         return self._logs(logs)

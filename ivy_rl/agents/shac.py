@@ -34,6 +34,8 @@ from ivy_rl.agents.through_gym import DifferentiableAgent
 from ivy_rl.models import Critic, ObservationEncoder, ValueHead, orthogonal_init, polyak_update
 from ivy_rl.normalizers import _fold_moments, _standard_deviation
 from ivy_rl.returns import _lambda_returns
+from ivy_rl.schedules import as_schedule
+from ivy_rl.updaters import at_rate
 
 __all__ = ["SHAC"]
 
@@ -45,7 +47,7 @@ class SHAC(DifferentiableAgent):
         horizon: K, steps per rollout (the gradient's horizon).
         batch_size: simulated environments carried across updates.
         critic_hidden_sizes: the critic's MLP (default: ``hidden_sizes``).
-        critic_lr: the critic's Adam learning rate.
+        critic_lr: the critic's Adam learning rate (a number or a linear schedule).
         critic_gradient_clip: global norm of the critic's gradients (0: no clipping).
         trace_decay: λ of the TD(λ) targets.
         critic_iterations: passes over a rollout's transitions per update.
@@ -60,6 +62,7 @@ class SHAC(DifferentiableAgent):
         >>> SHAC(horizon=32, critic_iterations=16)
     """
 
+    scheduled: tuple[str, ...] = ("actor_lr", "critic_lr")
     _defaults: dict[str, Any] = dict(
         horizon=32,
         batch_size=64,
@@ -83,7 +86,7 @@ class SHAC(DifferentiableAgent):
             torso.out_size, weight_init=orthogonal_init(self.rng, 1.0), **self._build_args()
         )
         self.critic = Critic(ObservationEncoder(self._obs_dim, f=xp), torso, head)
-        self.critic_optimizer = ivy.Adam(c["critic_lr"], f=xp)
+        self.critic_optimizer = ivy.Adam(as_schedule(c["critic_lr"])(0.0), f=xp)
         critic_v = self._placed(self.critic.v)
         self.v = {
             "actor": self._placed(self.actor.v),
@@ -114,16 +117,22 @@ class SHAC(DifferentiableAgent):
     # Pure functions
     # ------------------------------------------------------------------------------------------
 
-    def _update_fn(self, v, states, moments, start, orders):
+    def _update_fn(self, v, states, moments, start, orders, scheduled):
         """The whole update from the states ``start`` with the critic's mini-batches
-        ``orders``: ``(v, states, moments, final_states, restart, logs)``."""
+        ``orders``, at the scheduled learning rates: ``(v, states, moments, final_states,
+        restart, logs)``."""
         stats = self._return_stats(moments)
         actor_v, actor_state, data, logs = self._actor_step(
-            v["actor"], states["actor"], v["critic"], stats, start
+            v["actor"], states["actor"], v["critic"], stats, start, scheduled["actor_lr"]
         )
         batch, moments = self._critic_batch(v["target"], stats, moments, start, data)
         (critic_v, critic_state), ys = self._run_loop(
-            "critic_step", self._critic_step, (v["critic"], states["critic"]), orders, batch
+            "critic_step",
+            self._critic_step,
+            (v["critic"], states["critic"]),
+            orders,
+            batch,
+            scheduled["critic_lr"],
         )
         logs["critic/loss"] = self.xp.mean(ys["loss"])
         target_v = polyak_update(v["target"], critic_v, self.config["target_update"], f=self.xp)
@@ -138,7 +147,7 @@ class SHAC(DifferentiableAgent):
         std = _standard_deviation(self.xp, moments["mean"], moments["mean_sq"], 1e-2)
         return {"mean": moments["mean"], "std": std}
 
-    def _actor_step(self, actor_v, actor_state, critic_v, stats, start):
+    def _actor_step(self, actor_v, actor_state, critic_v, stats, start, lr):
         xp = self.xp
         horizon = self.config["horizon"]
         gamma = self.config["discount"]
@@ -164,7 +173,7 @@ class SHAC(DifferentiableAgent):
             }
             return loss, data
 
-        actor_v, actor_state, infos = self._actor_minimize(loss_fn, actor_v, actor_state)
+        actor_v, actor_state, infos = self._actor_minimize(loss_fn, actor_v, actor_state, lr)
         logs = {
             "actor/loss": infos.pop("loss"),
             "actor/gradient_norm": infos.pop("gradient_norm"),
@@ -214,7 +223,7 @@ class SHAC(DifferentiableAgent):
         }
         return batch, moments
 
-    def _critic_step(self, carry, indices, batch):
+    def _critic_step(self, carry, indices, batch, lr):
         xp = self.xp
         critic_v, critic_state = carry
         part = {k: xp.take(a, indices, axis=0) for k, a in batch.items()}
@@ -228,7 +237,9 @@ class SHAC(DifferentiableAgent):
         clip = self.config["critic_gradient_clip"]
         if clip:
             grads = xp.clip_by_global_norm(grads, clip)[0]
-        critic_v, critic_state = self.critic_optimizer.step(critic_v, grads, critic_state)
+        critic_v, critic_state = at_rate(self.critic_optimizer, lr).step(
+            critic_v, grads, critic_state
+        )
         return (critic_v, critic_state), {"loss": loss}
 
     # ------------------------------------------------------------------------------------------
@@ -255,6 +266,7 @@ class SHAC(DifferentiableAgent):
             self.moments,
             self._asarray(self._states),
             self._asarray(self._orders()),
+            self._scheduled_arrays(),
         )
         self.v, self.optimizer_states = v, states
         self.simulated_steps += c["batch_size"] * c["horizon"]

@@ -38,6 +38,8 @@ import numpy as np
 import ivy
 from ivy_rl.agents.agent import Agent
 from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
+from ivy_rl.schedules import as_schedule
+from ivy_rl.updaters import at_rate
 from ivy_rl.models import (
     Actor,
     DeterministicHead,
@@ -120,6 +122,7 @@ class DifferentiableAgent(Agent):
 
     learns = True
     differentiable = True
+    scheduled: tuple[str, ...] = ("actor_lr",)
     supported_action_spaces = ("Box",)
     _defaults: dict[str, Any] = dict(
         hidden_sizes=(64, 64),
@@ -213,7 +216,7 @@ class DifferentiableAgent(Agent):
         )
         self._action_low = tuple(float(x) for x in low)
         self._action_half = tuple(float(x) for x in (high - low) / 2)
-        self.actor_optimizer = ivy.Adam(c["actor_lr"], f=xp)
+        self.actor_optimizer = ivy.Adam(as_schedule(c["actor_lr"])(0.0), f=xp)
         self._build_learner()
         self.fusion = c["fusion"]
         if self.fusion == "auto":
@@ -290,20 +293,24 @@ class DifferentiableAgent(Agent):
         gamma = self.config["discount"]
         return self.xp.asarray([[gamma**t] for t in range(steps)], dtype=dtype)
 
-    def _actor_minimize(self, loss_fn, actor_v, actor_state):
+    def _actor_minimize(self, loss_fn, actor_v, actor_state, lr):
+        """A step of the actor on ``loss_fn`` at the learning rate ``lr`` (the scheduled value,
+        a scalar array), its gradient's global norm clipped."""
         xp = self.xp
         loss, grads, aux = xp.execute_with_gradients(loss_fn, actor_v)
         norm = _global_norm(xp, grads)
         clip = self.config["actor_gradient_clip"]
         if clip:
             grads = xp.clip_by_global_norm(grads, clip)[0]
-        actor_v, actor_state = self.actor_optimizer.step(actor_v, grads, actor_state)
+        actor_v, actor_state = at_rate(self.actor_optimizer, lr).step(actor_v, grads, actor_state)
         return actor_v, actor_state, {"loss": loss, "gradient_norm": norm, **aux}
 
     def _mode_fn(self, actor_v, observations):
         return self.actor(observations, None, v=actor_v).mode()
 
-    def _update_fn(self, v, states, start, orders):
+    def _update_fn(self, v, states, *args):
+        """The whole update (pure, compiled with ``fusion='update'``); its last argument is
+        :meth:`Agent._scheduled_arrays`, the scheduled learning rates at the run's progress."""
         raise NotImplementedError
 
     # ------------------------------------------------------------------------------------------

@@ -197,6 +197,41 @@ def test_compiled_update_equals_eager(diff_backend, cls):
         np.testing.assert_allclose([a[k] for k in a], [b[k] for k in a], rtol=1e-9, atol=1e-12)
 
 
+@pytest.mark.parametrize("cls", [APG, SHAC], ids=lambda c: c.__name__)
+def test_scheduled_learning_rates_are_the_constant_ones_at_the_progress(diff_backend, cls):
+    """``linear:`` learning rates read at the run's progress: the scheduled update (compiled
+    where loops stay loops) equals the eager update with the constants at that progress, and a
+    new progress compiles nothing new."""
+    xp = ivy.get_framework(f=diff_backend)
+    tiny = dict(hidden_sizes=(8,), batch_size=4, horizon=3, update_every=1)
+    if cls is SHAC:
+        tiny.update(critic_batches=2, critic_iterations=1)
+    scheduled = dict(actor_lr="linear:4e-2:0")
+    constant = dict(actor_lr=1e-2)
+    if cls is SHAC:
+        scheduled["critic_lr"], constant["critic_lr"] = "linear:1e-2:3e-2", 2.5e-2
+    obs, zeros, no = np.zeros((1, 3)), np.zeros(1), np.zeros(1, bool)
+
+    def run(settings, compile, progress):
+        init = {} if compile else {"compile": False}  # compiled: where loops stay loops
+        agent = _bound(cls(**tiny, **settings), seed=0, f=diff_backend, dtype="float64", **init)
+        compiles = []
+        for p in progress:
+            agent.set_progress(p)
+            agent.update(obs, zeros, no, no)
+            compiles.append(agent.compiles)
+        return [np.asarray(xp.to_numpy(a)) for a in ivy.nest.nest_leaves(agent.v)], compiles
+
+    weights, _ = run(scheduled, True, [0.75, 0.75])
+    same, _ = run(constant, False, [0.75, 0.75])
+    for a, b in zip(weights, same):
+        np.testing.assert_allclose(a, b, rtol=1e-9, atol=1e-12)
+    _, compiles = run(scheduled, True, [0.1, 0.4, 0.9])
+    assert len(set(compiles)) == 1, compiles  # a changing value compiles nothing new
+    start, _ = run({k: float(v.split(":")[1]) for k, v in scheduled.items()}, False, [0.75] * 2)
+    assert any(not np.allclose(a, b) for a, b in zip(weights, start))
+
+
 # ----------------------------------------------------------------------------------------------
 # Registration, checkpoints and errors
 # ----------------------------------------------------------------------------------------------
