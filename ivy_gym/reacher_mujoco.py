@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 import ivy
-from ivy_gym.base import Env, _shape
+from ivy_gym.base import Env, _is_number, _shape
 from ivy_gym.inverted_pendulum import _gymnasium_asset
 
 __all__ = ["ReacherMuJoCo", "ReacherMuJoCoParams", "reacher_tree"]
@@ -235,40 +235,48 @@ class ReacherMuJoCo(Env):
         return self._observation(xp, qpos, qvel, self._fingertip_minus_target(xp, qpos))
 
     def _rk4(self, xp, qpos, qvel, ctrl):
-        """One step of MuJoCo's RK4 (hinges and slides: positions advance linearly):
-        ``(qpos, qvel)`` after it, and the positions of its last stage, where MuJoCo's body
-        positions stay after ``mj_step``."""
+        """One step of MuJoCo's RK4 (hinges and slides: positions advance linearly), its four
+        stages one loop (``xp.scan``: compilers trace the dynamics once): ``(qpos, qvel)``
+        after it, and the positions of its last stage, where MuJoCo's body positions stay
+        after ``mj_step``."""
         tree, h = self.tree, self.tree.timestep
+        dtype, device = qpos.dtype, xp.dev(qpos)
+        # MuJoCo's tableau: stage k at fraction c_k of the step from the previous stage's
+        # velocity and acceleration, weighted w_k
+        fractions = xp.constant(np.array([0.0, 0.5, 0.5, 1.0]), dtype=dtype, device=device)
+        weights = xp.constant(np.array([1, 2, 2, 1]) / 6.0, dtype=dtype, device=device)
 
-        def acc(q, v):
-            return tree.forward_dynamics(q, v, ctrl, f=xp)
+        def stage(carry, x):
+            dv, da, mean_v, mean_a, _ = carry
+            fraction, weight = x
+            q = qpos + (h * fraction) * dv
+            v = qvel + (h * fraction) * da
+            a = tree.forward_dynamics(q, v, ctrl, f=xp)
+            return (v, a, mean_v + weight * v, mean_a + weight * a, q), None
 
-        a1 = acc(qpos, qvel)
-        v2 = qvel + (h / 2) * a1
-        a2 = acc(qpos + (h / 2) * qvel, v2)
-        v3 = qvel + (h / 2) * a2
-        a3 = acc(qpos + (h / 2) * v2, v3)
-        v4 = qvel + h * a3
-        stage4 = qpos + h * v3
-        a4 = acc(stage4, v4)
-        new_qpos = qpos + h * (qvel / 6 + v2 / 3 + v3 / 3 + v4 / 6)
-        new_qvel = qvel + h * (a1 / 6 + a2 / 3 + a3 / 3 + a4 / 6)
-        return new_qpos, new_qvel, stage4
+        zero = qvel * 0.0
+        carry = (zero, zero, zero, zero, qpos)
+        (_, _, mean_v, mean_a, last), _ = xp.scan(stage, carry, (fractions, weights))
+        return qpos + h * mean_v, qvel + h * mean_a, last
 
     def kernel_step(self, xp, state, action):
         p, nq = self.params, self.tree.nq
+        batch = np.broadcast_shapes(tuple(state.shape[:-1]), tuple(action.shape[:-1]))
+        if tuple(state.shape[:-1]) != batch:  # the loops' carries keep one shape
+            state = xp.broadcast_to(state, (*batch, self.state_dim))
         qpos, qvel = state[..., :nq], state[..., nq:]
-        for _ in range(int(p.frame_skip)):
-            qpos, qvel, stale = self._rk4(xp, qpos, qvel, action)
+
+        def frame(carry, _):
+            return self._rk4(xp, carry[0], carry[1], action), None
+
+        (qpos, qvel, stale), _ = xp.scan(
+            frame, (qpos, qvel, qpos), None, length=int(p.frame_skip)
+        )
         vec = self._fingertip_minus_target(xp, stale)
         obs = self._observation(xp, qpos, qvel, vec)
-        # Gymnasium: -|vec| * w_dist + (-sum(action^2) * w_control), the second in the action's
-        # dtype (float32 for its samples), added in float64
+        # Gymnasium: -|vec| * w_dist + (-sum(action^2) * w_control)
         dist = xp.safe_norm(vec, axis=-1) * p.reward_dist_weight
-        control = xp.sum(action * action, axis=-1) * p.reward_control_weight
-        if control.dtype != dist.dtype:
-            control = xp.astype(control, dist.dtype)
-        reward = -dist - control
+        reward = -dist - _control_cost(xp, action, p.reward_control_weight, dist)
         state = xp.concat([qpos, qvel], axis=-1)
         return state, obs, reward, xp.zeros_like(reward) > 1.0
 
@@ -290,3 +298,36 @@ class ReacherMuJoCo(Env):
         canvas.line(xy["body1"], xy[_FINGERTIP], 0.02, (0, 102, 153))
         canvas.disc(xy[_FINGERTIP], 0.01, (0, 204, 153))
         canvas.disc(xy["body0"], 0.011, (230, 102, 153))
+
+
+def _control_cost(xp, action, weight, like):
+    """``sum(action^2) * weight`` as Gymnasium computes it, in the action's dtype, then in
+    ``like``'s dtype.
+
+    A float32 action with a float64 ``like`` (Gymnasium's samples on a float64 core) rounds to
+    float32 after each operation, as numpy does: the squares, sums and products of float32
+    numbers are computed exactly in float64 and then rounded to float32 by arithmetic
+    (:func:`_round32`), not by casts, which XLA's CPU compiler drops (it then computes
+    ``a0 * a0 + a1 * a1`` unrounded, one float32 unit, 1.5e-8, away from Gymnasium's)."""
+    if action.dtype == xp.float32 and like.dtype == xp.float64:
+        wide = xp.astype(action, "float64")
+        squares = _round32(wide * wide)
+        total = squares[..., 0]
+        for i in range(1, squares.shape[-1]):
+            total = _round32(total + squares[..., i])
+        if _is_number(weight):
+            return _round32(total * float(np.float32(weight)))
+        return _round32(total * _round32(xp.astype(weight, "float64")))
+    cost = xp.sum(action * action, axis=-1) * weight
+    return cost if cost.dtype == like.dtype else xp.astype(cost, like.dtype)
+
+
+_SPLITTER = 2.0**29 + 1.0  # Veltkamp's constant: 53 - 29 = 24 significant bits remain
+
+
+def _round32(x):
+    """A float64 ``x`` rounded to float32's 24 significant bits (to nearest), as float64, by
+    Veltkamp's splitting ``c - (c - x)``, ``c = x (2^29 + 1)``: exact arithmetic that compilers
+    keep, with gradient 1 (the cast's straight-through). Valid for ``|x| < 1e300``."""
+    c = x * _SPLITTER
+    return c - (c - x)

@@ -14,7 +14,7 @@ from gymnasium.utils.env_checker import check_env
 
 import ivy
 import ivy_gym
-from tests.helpers import native, native_value_and_grads, numpy_of
+from tests.helpers import native_value_and_grads, numpy_of
 
 pytestmark = pytest.mark.filterwarnings(
     "ignore:.*Box (observation|action) space.*:UserWarning",
@@ -45,27 +45,31 @@ def _episode(seed: int):
     return rows
 
 
-@pytest.mark.parametrize("seed", SEEDS)
-def test_reacher_follows_gymnasium(seed, backend):
-    rows = _episode(seed)
-    assert len(rows) == 51  # Gymnasium's time limit: 50 steps
-    env = gymnasium.make("ivy_gym/Reacher-v5", framework=backend, dtype="float64")
-    core, tree = env.unwrapped.core, ivy_gym.reacher_tree()
-    obs, _ = env.reset(seed=seed)
-    np.testing.assert_allclose(obs, rows[0][1], rtol=0, atol=1e-12)
-    np.testing.assert_allclose(env.unwrapped.state, rows[0][4], rtol=0, atol=1e-15)
+def test_reacher_follows_gymnasium(backend):
+    # one environment of the vector facade: its step is compiled on jax and tensorflow (once for
+    # both episodes; eager, a step of these dynamics costs ~0.2 s there), eager elsewhere
+    core, tree = ivy_gym.ReacherMuJoCo(), ivy_gym.reacher_tree()
+    env = ivy_gym.GymnasiumVectorEnv(
+        core, 1, framework=backend, dtype="float64", max_episode_steps=50, device="cpu"
+    )
     stale = 0.0
-    for action, ref_obs, ref_reward, ref_truncated, ref_state in rows[1:]:
-        assert bool(tree.constraint_free(ref_state[:4]))  # where the dynamics are MuJoCo's
-        obs, reward, terminated, truncated, _ = env.step(action)
-        np.testing.assert_allclose(obs, ref_obs, rtol=0, atol=1e-8)
-        np.testing.assert_allclose(env.unwrapped.state, ref_state, rtol=0, atol=1e-8)
-        assert abs(reward - ref_reward) < 1e-8
-        assert not terminated and truncated == ref_truncated
-        # the fingertip after a step is MuJoCo's stale one: the state's own differs
-        fresh = core.observe(env.unwrapped.state, f="numpy")
-        stale = max(stale, np.abs(fresh[8:] - obs[8:]).max())
-    assert truncated
+    for seed in SEEDS:
+        rows = _episode(seed)
+        assert len(rows) == 51  # Gymnasium's time limit: 50 steps
+        obs, _ = env.reset(seed=seed)
+        np.testing.assert_allclose(obs[0], rows[0][1], rtol=0, atol=1e-12)
+        np.testing.assert_allclose(env.state[0], rows[0][4], rtol=0, atol=1e-15)
+        for action, ref_obs, ref_reward, ref_truncated, ref_state in rows[1:]:
+            assert bool(tree.constraint_free(ref_state[:4]))  # where the dynamics are MuJoCo's
+            obs, reward, terminated, truncated, _ = env.step(action[None])
+            np.testing.assert_allclose(obs[0], ref_obs, rtol=0, atol=1e-8)
+            np.testing.assert_allclose(env.state[0], ref_state, rtol=0, atol=1e-8)
+            assert abs(reward[0] - ref_reward) < 1e-8
+            assert not terminated[0] and truncated[0] == ref_truncated
+            # the fingertip after a step is MuJoCo's stale one: the state's own differs
+            fresh = core.observe(env.state[0], f="numpy")
+            stale = max(stale, np.abs(fresh[8:] - obs[0, 8:]).max())
+        assert truncated[0]
     assert stale > 1e-6  # 100 times the tolerance: the comparison tells stale from fresh
 
 
@@ -120,66 +124,44 @@ def test_reacher_check_env(backend):
     np.testing.assert_array_equal(env.action_space.high, [1, 1])
 
 
-# a state away from the target, and two steps of actions (one beyond the control range, where
-# the actuators clamp the control and only the control cost still depends on it)
-_STATE = np.array([[0.3, -0.8, 0.12, -0.05, 1.5, -2.0, 0.0, 0.0]])
-_ACTIONS = np.array([[[0.4, -0.7]], [[-0.2, 1.3]]])
+# a state away from the target, the target moving, and an action beyond the control range in
+# its second component (the actuator clamps the control: only the control cost depends on it)
+_STATE = np.array([[0.3, -0.8, 0.12, -0.05, 1.5, -2.0, 0.3, -0.2]])
+_ACTION = np.array([[0.4, 1.3]])
 
 
-def _two_step_return(state, actions):
-    traj = ivy_gym.rollout(ivy_gym.ReacherMuJoCo(), state, actions)
-    return ivy.sum(traj.rewards) + ivy.sum(traj.observations[-1, ..., 8:] ** 2)
+def _one_step_return(state, action):
+    """The reward of one step (two RK4 steps) and the squared fingertip-target distance of its
+    observation."""
+    _, obs, reward, _ = ivy_gym.ReacherMuJoCo().step(state, action)
+    return ivy.sum(reward) + ivy.sum(obs[..., 8:] ** 2)
 
 
 @functools.cache
 def _finite_differences():
-    """Central finite differences of the two-step return on numpy, float64."""
-
-    def value(state, actions):
-        return float(_two_step_return(state, actions))
-
+    """Central finite differences of the one-step return on numpy, float64."""
     eps = 1e-6
     grads = []
     for which in range(2):
-        arrays = [_STATE, _ACTIONS]
+        arrays = [_STATE, _ACTION]
         grad = np.zeros_like(arrays[which])
         for index in np.ndindex(grad.shape):
             plus, minus = [a.copy() for a in arrays], [a.copy() for a in arrays]
             plus[which][index] += eps
             minus[which][index] -= eps
-            grad[index] = (value(*plus) - value(*minus)) / (2 * eps)
+            delta = float(_one_step_return(*plus)) - float(_one_step_return(*minus))
+            grad[index] = delta / (2 * eps)
         grads.append(grad)
     return grads
 
 
 def test_reacher_return_gradient_matches_finite_differences(diff_backend):
-    value, (grad_state, grad_actions) = native_value_and_grads(
-        diff_backend, _two_step_return, [_STATE, _ACTIONS], 1.0
+    value, (grad_state, grad_action) = native_value_and_grads(
+        diff_backend, _one_step_return, [_STATE, _ACTION], 1.0
     )
-    assert np.isclose(value, float(_two_step_return(_STATE, _ACTIONS)), rtol=1e-12)
-    fd_state, fd_actions = _finite_differences()
-    assert np.abs(fd_state[..., :6]).min() > 1e-4  # every arm and target component counts
-    assert abs(fd_actions[1, 0, 1] + 2 * 1.3) < 1e-6  # clamped: only the control cost
+    assert np.isclose(value, float(_one_step_return(_STATE, _ACTION)), rtol=1e-12)
+    fd_state, fd_action = _finite_differences()
+    assert np.abs(fd_state).min() > 1e-4  # every component of the state counts
+    assert abs(fd_action[0, 1] + 2 * 1.3) < 1e-6 and abs(fd_action[0, 0]) > 1e-2
     np.testing.assert_allclose(grad_state, fd_state, rtol=1e-6, atol=1e-8)
-    np.testing.assert_allclose(grad_actions, fd_actions, rtol=1e-6, atol=1e-8)
-
-
-def test_reacher_batched_compiled_rollout(graph_backend):
-    env = ivy_gym.ReacherMuJoCo()
-    ivy.seed(0)
-    state = env.reset((3,), dtype="float64", f=graph_backend)
-    actions = native(np.random.default_rng(2).uniform(-1, 1, (3, 3, 2)), graph_backend)
-
-    def run(state, actions):
-        traj = ivy_gym.rollout(env, state, actions)
-        return traj.states, traj.observations, traj.rewards
-
-    states, observations, rewards = map(numpy_of, ivy.compile_fn(run)(state, actions))
-    # reference: each batch member stepped alone, eagerly, on numpy
-    for b in range(3):
-        s = numpy_of(state)[b]
-        for t in range(3):
-            s, obs, reward, _ = env.step(s, numpy_of(actions)[t, b])
-            np.testing.assert_allclose(states[t, b], s, rtol=1e-10, atol=1e-12)
-            np.testing.assert_allclose(observations[t, b], obs, rtol=1e-10, atol=1e-12)
-            np.testing.assert_allclose(rewards[t, b], reward, rtol=1e-10, atol=1e-12)
+    np.testing.assert_allclose(grad_action, fd_action, rtol=1e-6, atol=1e-8)
