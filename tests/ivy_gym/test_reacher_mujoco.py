@@ -14,7 +14,7 @@ from gymnasium.utils.env_checker import check_env
 
 import ivy
 import ivy_gym
-from tests.helpers import native_value_and_grads, numpy_of
+from tests.helpers import native, native_value_and_grads, numpy_of
 
 pytestmark = pytest.mark.filterwarnings(
     "ignore:.*Box (observation|action) space.*:UserWarning",
@@ -165,3 +165,26 @@ def test_reacher_return_gradient_matches_finite_differences(diff_backend):
     assert abs(fd_action[0, 1] + 2 * 1.3) < 1e-6 and abs(fd_action[0, 0]) > 1e-2
     np.testing.assert_allclose(grad_state, fd_state, rtol=1e-6, atol=1e-8)
     np.testing.assert_allclose(grad_action, fd_action, rtol=1e-6, atol=1e-8)
+
+
+def test_reacher_float32_broadcasting_and_narrowed_resets(backend):
+    core = ivy_gym.ReacherMuJoCo()
+    state = np.array([[0.05, -0.02, 0.1, 0.08, 0.003, -0.001, 0.0, 0.0]])
+    actions = np.array([[0.5, -0.5], [1.0, 0.2], [-0.3, 0.0]])
+    # one state, three actions: the batch broadcasts; float32 throughout stays float32
+    s, obs, reward, done = core.step(
+        native(state.astype(np.float32), backend), native(actions.astype(np.float32), backend)
+    )
+    assert tuple(s.shape) == (3, 8) and tuple(obs.shape) == (3, 10)
+    assert tuple(reward.shape) == (3,) and not numpy_of(done).any()
+    assert numpy_of(s).dtype == np.float32 and numpy_of(reward).dtype == np.float32
+    for b in range(3):  # each as its own batch of one, on numpy float64
+        ref = core.step(state, actions[b : b + 1])
+        np.testing.assert_allclose(numpy_of(s)[b], ref[0][0], rtol=1e-5, atol=1e-5)
+        np.testing.assert_allclose(numpy_of(obs)[b], ref[1][0], rtol=1e-5, atol=1e-5)
+        np.testing.assert_allclose(numpy_of(reward)[b], ref[2][0], rtol=1e-5, atol=1e-5)
+    # a narrowed reset box shrinks every noise and the goal's disc
+    draws = core.narrowed(0.5).draw_initial(np.random.default_rng(0), (200,))
+    assert (np.abs(draws[:, :2]) <= 0.05).all() and (np.abs(draws[:, 4:6]) <= 0.0025).all()
+    assert (np.hypot(draws[:, 2], draws[:, 3]) < 0.1).all()
+    assert np.hypot(draws[:, 2], draws[:, 3]).max() > 0.09
