@@ -269,9 +269,7 @@ class ReacherMuJoCo(Env):
         def frame(carry, _):
             return self._rk4(xp, carry[0], carry[1], action), None
 
-        (qpos, qvel, stale), _ = xp.scan(
-            frame, (qpos, qvel, qpos), None, length=int(p.frame_skip)
-        )
+        (qpos, qvel, stale), _ = xp.scan(frame, (qpos, qvel, qpos), None, length=int(p.frame_skip))
         vec = self._fingertip_minus_target(xp, stale)
         obs = self._observation(xp, qpos, qvel, vec)
         # Gymnasium: -|vec| * w_dist + (-sum(action^2) * w_control)

@@ -1,7 +1,7 @@
 """ReacherMuJoCo: Gymnasium's Reacher-v5 on the kinematic tree of its reacher.xml, step for step
-against Gymnasium's own MuJoCo environment (observations, rewards, states, seeded resets),
-check_env, the ivy reset's distribution, gradients against finite differences, and a batched
-compiled rollout."""
+against Gymnasium's own MuJoCo environment (observations, rewards, states, seeded resets; compiled
+on jax and tensorflow through the vector facade), check_env, the ivy reset's distribution,
+float32 and broadcast batches, and gradients against finite differences."""
 
 from __future__ import annotations
 
