@@ -25,6 +25,7 @@ from ivy_gym import (
     optimise,
     pendulum,
     reacher,
+    reacher_mujoco,
     rendering,
     rollouts,
     swimmer,
@@ -37,6 +38,7 @@ from ivy_gym.mountain_car import *  # noqa: F403
 from ivy_gym.optimise import *  # noqa: F403
 from ivy_gym.pendulum import *  # noqa: F403
 from ivy_gym.reacher import *  # noqa: F403
+from ivy_gym.reacher_mujoco import *  # noqa: F403
 from ivy_gym.rendering import *  # noqa: F403
 from ivy_gym.rollouts import *  # noqa: F403
 from ivy_gym.swimmer import *  # noqa: F403
@@ -61,6 +63,7 @@ __all__ = [
     *reacher.__all__,
     *swimmer.__all__,
     *inverted_pendulum.__all__,
+    *reacher_mujoco.__all__,
     *rollouts.__all__,
     *optimise.__all__,
     *rendering.__all__,

@@ -23,6 +23,7 @@ from ivy_gym.inverted_pendulum import InvertedPendulum
 from ivy_gym.mountain_car import MountainCar, MountainCarContinuous, MountainCarShaped
 from ivy_gym.pendulum import Pendulum, PendulumSmooth
 from ivy_gym.reacher import Reacher
+from ivy_gym.reacher_mujoco import ReacherMuJoCo
 from ivy_gym.swimmer import Swimmer
 
 __all__ = ["TASKS", "make_env", "make_vector_env", "register_envs"]
@@ -41,6 +42,7 @@ TASKS: dict[str, tuple[type, bool, float | None]] = {
     "Acrobot-v1": (Acrobot, True, -100.0),
     "MountainCar-v0": (MountainCar, True, -110.0),
     "InvertedPendulum-v5": (InvertedPendulum, False, 950.0),
+    "Reacher-v5": (ReacherMuJoCo, False, -3.75),
 }
 
 
