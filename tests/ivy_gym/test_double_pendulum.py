@@ -24,6 +24,23 @@ pytestmark = pytest.mark.filterwarnings(
 )
 
 POLE = 0.6  # each pole's length in Gymnasium's inverted_double_pendulum.xml
+# the batch of the batched tests: one shape for all (eager jax compiles each primitive per shape)
+BATCH = 5
+
+
+def _mj_steps(qpos, qvel, ctrl, n, *, limits=True):
+    """``n`` calls of MuJoCo's ``mj_step`` on Gymnasium's model: (qpos, qvel, site_xpos[0]);
+    ``limits=False`` disables the slider's limit (which the swing-up does not model)."""
+    model = mujoco.MjModel.from_xml_path(
+        ivy_gym.inverted_pendulum._gymnasium_asset("inverted_double_pendulum.xml")
+    )
+    if not limits:
+        model.opt.disableflags |= mujoco.mjtDisableBit.mjDSBL_LIMIT
+    data = mujoco.MjData(model)
+    data.qpos[:], data.qvel[:], data.ctrl[:] = qpos, qvel, ctrl
+    for _ in range(n):
+        mujoco.mj_step(model, data)
+    return data.qpos.copy(), data.qvel.copy(), data.site_xpos[0].copy()
 
 
 @functools.cache
@@ -85,19 +102,10 @@ def test_rk4_step_with_last_stage_equals_mujoco(backend):
     positions against the ``site_xpos`` that ``mj_step`` leaves."""
     tree = ivy_gym.inverted_double_pendulum_tree()
     rng = np.random.default_rng(3)
-    qpos = rng.uniform(-0.5, 0.5, (4, 3))
-    qvel = rng.uniform(-2.0, 2.0, (4, 3))
-    ctrl = rng.uniform(-1.0, 1.0, (4, 1))
-    model = mujoco.MjModel.from_xml_path(ivy_gym.inverted_pendulum._gymnasium_asset(
-        "inverted_double_pendulum.xml"
-    ))
-    data = mujoco.MjData(model)
-    expected = []
-    for b in range(4):
-        mujoco.mj_resetData(model, data)
-        data.qpos[:], data.qvel[:], data.ctrl[:] = qpos[b], qvel[b], ctrl[b]
-        mujoco.mj_step(model, data)
-        expected.append((data.qpos.copy(), data.qvel.copy(), data.site_xpos[0].copy()))
+    qpos = rng.uniform(-0.5, 0.5, (BATCH, 3))
+    qvel = rng.uniform(-2.0, 2.0, (BATCH, 3))
+    ctrl = rng.uniform(-1.0, 1.0, (BATCH, 1))
+    expected = [_mj_steps(q, v, c, 1) for q, v, c in zip(qpos, qvel, ctrl)]
     xp = getattr(ivy, backend)
     new_qpos, new_qvel, stage = ivy_gym.rk4_step_with_last_stage(
         xp, tree, native(qpos, backend), native(qvel, backend), native(ctrl, backend)
@@ -125,9 +133,10 @@ def test_termination_and_reward_of_chosen_states(backend):
             [0.3, 0.05, -0.1, 0.5, 2.0, -3.0],  # upright, moving
             [0.0, 0.6, 0.3, 0.0, 0.0, 0.0],  # fallen: tip below 1
             [-0.2, -0.7, -0.5, -1.0, 1.0, -60.0],  # fallen, velocity beyond the clip
+            [0.0, 0.15, 0.0, 0.0, 0.0, 0.0],  # leaning, still above the line
         ]
     )
-    actions = np.array([[0.0], [0.4], [-1.0], [1.0]], np.float32)
+    actions = np.array([[0.0], [0.4], [-1.0], [1.0], [-0.7]], np.float32)
     env = ivy_gym.InvertedDoublePendulum()
     state, obs, reward, terminated = env.step(native(states, backend), native(actions, backend))
     for b in range(len(states)):
@@ -135,7 +144,7 @@ def test_termination_and_reward_of_chosen_states(backend):
         np.testing.assert_allclose(numpy_of(obs)[b], ref_obs, rtol=0, atol=1e-10)
         assert float(numpy_of(reward)[b]) == pytest.approx(ref_reward, rel=0, abs=1e-10)
         assert bool(numpy_of(terminated)[b]) == ref_terminated
-    np.testing.assert_array_equal(numpy_of(terminated), [False, False, True, True])
+    np.testing.assert_array_equal(numpy_of(terminated), [False, False, True, True, False])
     assert np.abs(numpy_of(obs)[:, 5:8]).max() == 10.0  # Gymnasium's clip of the velocities
     # a state that is not finite ends the episode (Gymnasium's MuJoCo resets it itself)
     _, _, _, done = env.step(native(np.array([np.nan, 0, 0, 0, 0, 0]), backend),
@@ -179,11 +188,9 @@ def test_reset_draws_uniform_positions_and_normal_velocities(backend):
     np.testing.assert_allclose(narrow[:, 3:].std(axis=0), 0.05, rtol=0.06)
 
 
-@pytest.mark.parametrize("swing_up", [False, True])
-def test_check_env(swing_up, backend):
-    env = gymnasium.make(
-        "ivy_gym/InvertedDoublePendulum-v5", framework=backend, swing_up=swing_up
-    )
+def test_check_env_swing_up(backend):
+    # (the registered task's own check_env on every backend is test_facades.py's, over TASKS)
+    env = gymnasium.make("ivy_gym/InvertedDoublePendulum-v5", framework=backend, swing_up=True)
     check_env(env.unwrapped)
     assert env.spec.max_episode_steps == 1000
 
@@ -235,17 +242,20 @@ def test_swing_up_reward_and_no_termination(backend):
     r = numpy_of(reward)
     assert r[0] > 0.99 and r[1] < -0.99 and r[0] > r[2] > r[1]  # rewards the upright tip
     assert r[4] < -10.0  # the barrier
-    # the same dynamics as Gymnasium's task
-    state, *_ = ivy_gym.InvertedDoublePendulum().step(
-        native(states, backend), native(actions, backend)
-    )
-    np.testing.assert_allclose(numpy_of(new), numpy_of(state), rtol=0, atol=1e-12)
+    # the dynamics of Gymnasium's task, five mj_step with the control held, without the slider's
+    # limit (the last state lies beyond it)
+    for b in range(BATCH):
+        qpos, qvel, _ = _mj_steps(states[b, :3], states[b, 3:], actions[b], 5, limits=False)
+        np.testing.assert_allclose(numpy_of(new)[b], np.concatenate([qpos, qvel]), atol=1e-10)
 
 
 # ----------------------------------------------------------------------------------------------
 # Gradients: analytic on the differentiable backends, central differences on numpy
 # ----------------------------------------------------------------------------------------------
 
+# frame_skip=2 keeps the tests short and runs both integrator paths of a step: tree.step, then
+# the written-out last RK4 step (whose last stage's tip the reward reads)
+_FRAME_SKIP = 2
 _STATE = np.array([0.1, 0.05, -0.08, 0.3, -0.4, 0.6])  # upright: no termination in 2 steps
 _SWING_STATE = np.array([0.1, 3.0, 0.2, 0.3, -0.4, 0.6])
 _ACTIONS = np.array([[0.3], [-0.5]])
@@ -261,7 +271,7 @@ def _return(env, state, actions):
 
 @functools.cache
 def _finite_difference_gradient(swing_up: bool):
-    env = ivy_gym.InvertedDoublePendulum(swing_up=swing_up)
+    env = ivy_gym.InvertedDoublePendulum(swing_up=swing_up, frame_skip=_FRAME_SKIP)
     state = _SWING_STATE if swing_up else _STATE
     x = np.concatenate([state, _ACTIONS.ravel()])
 
@@ -279,7 +289,7 @@ def _finite_difference_gradient(swing_up: bool):
 
 @pytest.mark.parametrize("swing_up", [False, True])
 def test_return_gradient_matches_finite_differences(swing_up, diff_backend):
-    env = ivy_gym.InvertedDoublePendulum(swing_up=swing_up)
+    env = ivy_gym.InvertedDoublePendulum(swing_up=swing_up, frame_skip=_FRAME_SKIP)
     state = _SWING_STATE if swing_up else _STATE
 
     def total(xs):
