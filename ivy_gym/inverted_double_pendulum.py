@@ -188,8 +188,7 @@ class InvertedDoublePendulum(Env):
         p = self.params
         if int(p.frame_skip) < 1:
             raise ValueError(
-                f"InvertedDoublePendulum: frame_skip must be an integer >= 1, got "
-                f"{p.frame_skip!r}."
+                f"InvertedDoublePendulum: frame_skip must be an integer >= 1, got {p.frame_skip!r}."
             )
         if not 0.0 <= float(p.slider_barrier_start) < 1.0:
             raise ValueError(
@@ -304,8 +303,12 @@ class InvertedDoublePendulum(Env):
         if p.swing_up:
             qpos, qvel = tree.step(qpos, qvel, ctrl, f=xp)
             state = xp.concat([qpos, qvel], axis=-1)
-            return state, self.kernel_observe(xp, state), self._swing_up_reward(xp, state, ctrl), (
-                xp.zeros_like(qpos[..., 0]) > 0.0
+            never = xp.zeros_like(qpos[..., 0]) > 0.0
+            return (
+                state,
+                self.kernel_observe(xp, state),
+                self._swing_up_reward(xp, state, ctrl),
+                never,
             )
         qpos, qvel, stage = rk4_step_with_last_stage(xp, tree, qpos, qvel, ctrl)
         state = xp.concat([qpos, qvel], axis=-1)
