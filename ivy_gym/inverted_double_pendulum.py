@@ -10,7 +10,7 @@ as the motor's control (clamped to its control range [-1, 1] by the actuator, as
 ``data.site_xpos`` after ``mj_step``. MuJoCo's RK4 evaluates the dynamics (``mj_forward``, which
 also places the sites) at four stages and then advances ``qpos`` and ``qvel`` without evaluating
 them again, so after the step ``site_xpos`` is the tip at the last stage's positions,
-``qpos + h * (qvel + h / 2 * qacc_1)`` (``qacc_1`` the acceleration of the second stage), not at
+``qpos + h * (qvel + h / 2 * qacc_2)`` (``qacc_2`` the acceleration of the second stage), not at
 the new ``qpos``: up to ~1e-6 m apart in a step. The last of the ``frame_skip`` integrator steps
 is therefore written out here (:func:`rk4_step_with_last_stage`: MuJoCo's tableau, the same
 arithmetic as ``tree.step`` for these hinge and slide joints) so that its last stage's positions
