@@ -185,6 +185,12 @@ class InvertedDoublePendulum(Env):
     def __init__(self, **params) -> None:
         self.tree = inverted_double_pendulum_tree()
         super().__init__(**params)
+        if self.tree.integrator != "RK4":  # the reward's tip is read at an RK4 stage
+            raise ValueError(
+                "InvertedDoublePendulum follows Gymnasium's inverted_double_pendulum.xml, whose "
+                f"integrator is RK4; the installed model asks for {self.tree.integrator}. "
+                "Install a gymnasium whose model is RK4 (Gymnasium 1.x)."
+            )
         p = self.params
         if int(p.frame_skip) < 1:
             raise ValueError(
