@@ -322,7 +322,7 @@ class InvertedDoublePendulum(Env):
         x, y = tip[..., 0], tip[..., 2]
         finite = xp.all(xp.isfinite(state), axis=-1)
         terminated = xp.logical_or(y <= 1.0, xp.logical_not(finite))
-        alive = float(p.healthy_reward) * cast_like(xp, xp.logical_not(terminated), state)
+        alive = p.healthy_reward * cast_like(xp, xp.logical_not(terminated), state)
         distance = 0.01 * x**2 + (y - 2.0) ** 2
         velocity = 1e-3 * qvel[..., 1] ** 2 + 5e-3 * qvel[..., 2] ** 2
         reward = alive - distance - velocity
@@ -332,11 +332,11 @@ class InvertedDoublePendulum(Env):
         p, nq = self.params, self.tree.nq
         height = self._tip(xp, state[..., :nq])[..., 2] / (2 * _POLE)
         qvel = state[..., nq:]
-        velocity = float(p.swing_up_velocity_cost) * xp.sum(qvel**2, axis=-1)
-        effort = float(p.swing_up_action_cost) * ctrl[..., 0] ** 2
+        velocity = p.swing_up_velocity_cost * xp.sum(qvel**2, axis=-1)
+        effort = p.swing_up_action_cost * ctrl[..., 0] ** 2
         b = float(p.slider_barrier_start)
         x = state[..., 0]
-        barrier = (float(p.slider_barrier_weight) / (1.0 - b) ** 2) * (
+        barrier = (p.slider_barrier_weight / (1.0 - b) ** 2) * (
             xp.relu(x - b) ** 2 + xp.relu(-x - b) ** 2
         )
         return height - velocity - effort - barrier
