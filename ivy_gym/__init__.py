@@ -20,6 +20,7 @@ import sys
 from ivy_gym import (
     acrobot,
     cartpole,
+    inverted_double_pendulum,
     inverted_pendulum,
     mountain_car,
     optimise,
@@ -33,6 +34,7 @@ from ivy_gym import (
 from ivy_gym.acrobot import *  # noqa: F403
 from ivy_gym.base import Env
 from ivy_gym.cartpole import *  # noqa: F403
+from ivy_gym.inverted_double_pendulum import *  # noqa: F403
 from ivy_gym.inverted_pendulum import *  # noqa: F403
 from ivy_gym.mountain_car import *  # noqa: F403
 from ivy_gym.optimise import *  # noqa: F403
@@ -64,6 +66,7 @@ __all__ = [
     *swimmer.__all__,
     *inverted_pendulum.__all__,
     *reacher_mujoco.__all__,
+    *inverted_double_pendulum.__all__,
     *rollouts.__all__,
     *optimise.__all__,
     *rendering.__all__,

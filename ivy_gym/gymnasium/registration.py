@@ -19,6 +19,7 @@ from ivy.typing import Dtype, Framework
 from ivy_gym.acrobot import Acrobot
 from ivy_gym.cartpole import CartPole, CartPoleSwingUp
 from ivy_gym.gymnasium.facades import GymnasiumEnv, GymnasiumVectorEnv
+from ivy_gym.inverted_double_pendulum import InvertedDoublePendulum
 from ivy_gym.inverted_pendulum import InvertedPendulum
 from ivy_gym.mountain_car import MountainCar, MountainCarContinuous, MountainCarShaped
 from ivy_gym.pendulum import Pendulum, PendulumSmooth
@@ -43,6 +44,7 @@ TASKS: dict[str, tuple[type, bool, float | None]] = {
     "MountainCar-v0": (MountainCar, True, -110.0),
     "InvertedPendulum-v5": (InvertedPendulum, False, 950.0),
     "Reacher-v5": (ReacherMuJoCo, False, -3.75),
+    "InvertedDoublePendulum-v5": (InvertedDoublePendulum, False, 9100.0),
 }
 
 
