@@ -210,8 +210,14 @@ def set_threads(xp: Any, threads: int) -> str:
     threading = getattr(getattr(native, "config", None), "threading", None)
     if threading is not None and hasattr(threading, "set_intra_op_parallelism_threads"):
         pairs = (
-            (threading.get_intra_op_parallelism_threads, threading.set_intra_op_parallelism_threads),
-            (threading.get_inter_op_parallelism_threads, threading.set_inter_op_parallelism_threads),
+            (
+                threading.get_intra_op_parallelism_threads,
+                threading.set_intra_op_parallelism_threads,
+            ),
+            (
+                threading.get_inter_op_parallelism_threads,
+                threading.set_inter_op_parallelism_threads,
+            ),
         )
         for get, put in pairs:
             if get() == threads:
