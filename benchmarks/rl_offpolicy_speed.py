@@ -13,6 +13,10 @@ before it starts, and the runs do not compete for the cores). Reported per run:
   both) to the end;
 - the ratio of each to stable-baselines3's, and the load average during the run.
 
+Every run starts with empty compilation caches (``TORCHINDUCTOR_CACHE_DIR`` in a new folder;
+jax and tensorflow keep none between processes by default), so the figures including the
+compilation are those of a first run on a machine.
+
 stable-baselines3 is a benchmark-only peer (``pip install stable-baselines3==2.9.2``); without
 it the peer row is skipped and no ratio is given.
 
@@ -26,6 +30,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -118,12 +123,19 @@ def main() -> None:
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     for which in runs:
         started = time.monotonic()
+        cache = tempfile.mkdtemp(prefix="inductor-cache-")
+        env = {
+            **os.environ,
+            "PYTHONPATH": root + os.pathsep + os.environ.get("PYTHONPATH", ""),
+            "TORCHINDUCTOR_CACHE_DIR": cache,
+        }
         done = subprocess.run(
             [sys.executable, os.path.abspath(__file__), "--child", which, "--steps",
              str(args.steps)],
             capture_output=True, text=True, cwd=root,
-            env={**os.environ, "PYTHONPATH": root + os.pathsep + os.environ.get("PYTHONPATH", "")},
+            env=env,
         )  # fmt: skip
+        shutil.rmtree(cache, ignore_errors=True)
         lines = [x for x in done.stdout.splitlines() if x.startswith("RESULT ")]
         if done.returncode or not lines:
             print(f"{which} failed:\n{done.stderr[-3000:]}", file=sys.stderr)
