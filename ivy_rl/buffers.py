@@ -3,8 +3,10 @@ device, with n-step returns computed where the batches are read (inside the comp
 
 Each environment step of every worker is one row of arrays ``[capacity * workers, ...]``
 (row ``r``, worker ``w`` at index ``r * workers + w``): a ring over the last ``capacity`` steps of
-each worker. Steps are staged on the host and written to the backend's arrays in one piece at
-:meth:`TransitionReplay.flush` (before each update), so that acting costs no device write.
+each worker. Steps are staged on the host (in preallocated arrays, written in place) and written
+to the backend's arrays at :meth:`TransitionReplay.flush` (before each update), so that acting
+costs no device write; where the backend's arrays are mutable the flush writes only the new
+rows, in place.
 
 A batch is drawn as windows of ``return_steps`` consecutive rows of one worker
 (:meth:`TransitionReplay.windows`, from the agent's numpy generator, so every backend reads the
@@ -66,7 +68,9 @@ class TransitionReplay:
         self.workers = 0
         self.capacity = 0
         self.arrays: dict[str, Array] | None = None  # the backend's arrays, after flush
-        self._staged: list[dict[str, np.ndarray]] = []
+        # staged steps: preallocated host arrays [room, workers, ...], filled in place
+        self._staging: dict[str, np.ndarray] = {}
+        self._count = 0  # staged steps
         self._specs: dict[str, tuple[tuple[int, ...], np.dtype]] = {}
         self.position = 0  # the ring row that the next step goes to
         self.stored = 0  # steps of each worker in the ring (at most capacity)
@@ -79,8 +83,8 @@ class TransitionReplay:
     def store(self, **arrays: Any) -> None:
         """Stage one step of every worker: arrays ``[workers, ...]`` by name (always the same
         names, shapes and dtypes)."""
-        staged = {k: np.asarray(v) for k, v in arrays.items()}
         if not self._specs:
+            staged = {k: np.asarray(v) for k, v in arrays.items()}
             workers = {v.shape[0] if v.ndim else None for v in staged.values()}
             if len(workers) != 1 or None in workers:
                 raise ValueError(
@@ -90,23 +94,37 @@ class TransitionReplay:
             self.workers = workers.pop()
             self.capacity = max(self.size // self.workers, self.return_steps)
             self._specs = {k: (v.shape[1:], v.dtype) for k, v in staged.items()}
-        elif set(staged) != set(self._specs):
+        elif arrays.keys() != self._specs.keys():
             raise ValueError(
-                f"TransitionReplay.store: got {sorted(staged)}, expected {sorted(self._specs)}"
+                f"TransitionReplay.store: got {sorted(arrays)}, expected {sorted(self._specs)}"
             )
-        for key, value in staged.items():
-            shape, dtype = self._specs[key]
-            if value.shape != (self.workers, *shape):
+        if self._count == len(next(iter(self._staging.values()), ())):
+            self._grow_staging()
+        row = self._count
+        for key, value in arrays.items():
+            shape = self._specs[key][0]
+            value_shape = np.shape(value)
+            if value_shape != (self.workers, *shape):
                 raise ValueError(
-                    f"TransitionReplay.store: {key} has shape {value.shape}, expected "
+                    f"TransitionReplay.store: {key} has shape {value_shape}, expected "
                     f"{(self.workers, *shape)}"
                 )
-        self._staged.append({k: v.astype(self._specs[k][1]) for k, v in staged.items()})
+            self._staging[key][row] = value  # cast to the staged dtype in place
+        self._count += 1
+
+    def _grow_staging(self, room: int | None = None) -> None:
+        """Room for twice as many staged steps (at least 64), keeping those staged."""
+        room = room or max(64, 2 * self._count)
+        for key, (shape, dtype) in self._specs.items():
+            grown = np.zeros((room, self.workers, *shape), dtype)
+            if key in self._staging:
+                grown[: self._count] = self._staging[key][: self._count]
+            self._staging[key] = grown
 
     @property
     def steps(self) -> int:
         """Steps of each worker available to batches (flushed and staged)."""
-        return min(self.stored + len(self._staged), self.capacity)
+        return min(self.stored + self._count, self.capacity)
 
     def flush(
         self,
@@ -120,20 +138,24 @@ class TransitionReplay:
         """Write the staged steps into the backend's arrays (created on the first flush, zeros
         of ``[capacity * workers, ...]`` on ``device``).
 
-        The steps go in pieces of ``chunk_steps`` steps (padded; default: all staged steps),
-        each written by one pure function of the arrays, the piece and the ring position
-        (:func:`write_rows`), so that a compiled writer (``compile``, e.g. ``ivy.compile_fn``)
-        compiles once, whatever the position.
+        Where the backend's arrays can be written in place (``xp.capabilities.mutable_arrays``:
+        torch, numpy), the staged rows are assigned to their slices of the ring (two slices where
+        it wraps around), which costs what the new rows cost, whatever the replay's size.
+        Elsewhere (jax, tensorflow: immutable arrays) the steps go in pieces of ``chunk_steps``
+        steps (padded; default: all staged steps), each written by one pure function of the
+        arrays, the piece and the ring position (:func:`write_rows`), so that a compiled writer
+        (``compile``, e.g. ``ivy.compile_fn``) compiles once, whatever the position; its result
+        is a new array, a pass over the whole replay that the compiler fuses into one.
 
         Args:
             xp: the backend namespace.
             device: where the arrays live.
             dtypes: numpy dtypes to store each array in (default: the staged dtypes), e.g. the
                 agent's float dtype and int32 indices.
-            chunk_steps: steps per written piece.
-            compile: compiles the writer (default: run as it is).
+            chunk_steps: steps per written piece (immutable arrays).
+            compile: compiles the writer (immutable arrays; default: run as it is).
         """
-        if not self._staged:
+        if not self._count:
             return
         dtypes = {k: np.dtype((dtypes or {}).get(k, spec[1])) for k, spec in self._specs.items()}
         if self.arrays is None:
@@ -141,32 +163,52 @@ class TransitionReplay:
             for key, (shape, _) in self._specs.items():
                 zeros = np.zeros((self.capacity * self.workers, *shape), dtypes[key])
                 self.arrays[key] = xp.asarray(zeros, device=device)
+        count, self._count = self._count, 0
+        begin = 0
+        if count > self.capacity:  # only the last capacity steps survive
+            begin = count - self.capacity
+            self.position = (self.position + begin) % self.capacity
+        staged = {k: a[begin:count] for k, a in self._staging.items()}
+        count -= begin
+        mutable = getattr(getattr(xp, "capabilities", None), "mutable_arrays", False)
+        if mutable:
+            self._write_in_place(xp, staged, count, dtypes, device)
+        else:
+            self._write_pieces(xp, staged, count, dtypes, device, chunk_steps, compile)
+
+    def _write_in_place(self, xp, staged, count, dtypes, device) -> None:
+        w, first = self.workers, self.position
+        head = min(count, self.capacity - first)  # the rows before the ring wraps
+        for key, rows in staged.items():
+            flat = rows.reshape((count * w, *rows.shape[2:])).astype(dtypes[key], copy=False)
+            buffer = self.arrays[key]
+            buffer[first * w : (first + head) * w] = xp.asarray(flat[: head * w], device=device)
+            if head < count:
+                buffer[: (count - head) * w] = xp.asarray(flat[head * w :], device=device)
+        self.position = (first + count) % self.capacity
+        self.stored = min(self.stored + count, self.capacity)
+
+    def _write_pieces(self, xp, staged, count, dtypes, device, chunk_steps, compile) -> None:
         if self._writer is None:
             self._writer = write_rows if compile is None else compile(write_rows)
-        staged, self._staged = self._staged, []
-        if len(staged) > self.capacity:  # only the last capacity steps survive
-            skipped = len(staged) - self.capacity
-            staged = staged[skipped:]
-            self.position = (self.position + skipped) % self.capacity
-        size = min(chunk_steps or len(staged), self.capacity)
-        for begin in range(0, len(staged), size):
-            piece = staged[begin : begin + size]
-            count = len(piece)
+        size = min(chunk_steps or count, self.capacity)
+        for begin in range(0, count, size):
+            piece = min(size, count - begin)
             chunk = {}
-            for key in self.arrays:
-                rows = np.zeros((size, *piece[0][key].shape), dtypes[key])
-                rows[:count] = np.stack([s[key] for s in piece])
-                chunk[key] = rows.reshape((size * self.workers, *rows.shape[2:]))
+            for key, rows in staged.items():
+                padded = np.zeros((size, *rows.shape[1:]), dtypes[key])
+                padded[:piece] = rows[begin : begin + piece]
+                chunk[key] = padded.reshape((size * self.workers, *rows.shape[2:]))
             start = np.asarray(self.position * self.workers, np.int32)
-            length = np.asarray(count * self.workers, np.int32)
+            length = np.asarray(piece * self.workers, np.int32)
             self.arrays = self._writer(
                 self.arrays,
                 {k: xp.asarray(a, device=device) for k, a in chunk.items()},
                 xp.asarray(start, device=device),
                 xp.asarray(length, device=device),
             )
-            self.position = (self.position + count) % self.capacity
-            self.stored = min(self.stored + count, self.capacity)
+            self.position = (self.position + piece) % self.capacity
+            self.stored = min(self.stored + piece, self.capacity)
 
     # ------------------------------------------------------------------------------------------
     # Reading
@@ -210,10 +252,11 @@ class TransitionReplay:
             "workers": np.asarray(self.workers, np.int64),
         }
         for key, value in (self.arrays or {}).items():
-            state[f"arrays.{key}"] = np.asarray(ivy.to_numpy(value))
+            # a copy: the arrays may be written in place by later flushes
+            state[f"arrays.{key}"] = np.array(ivy.to_numpy(value), copy=True)
         for key in self._specs:
-            if self._staged:
-                state[f"staged.{key}"] = np.stack([s[key] for s in self._staged])
+            if self._count:
+                state[f"staged.{key}"] = self._staging[key][: self._count].copy()
             state[f"specs.{key}"] = np.zeros((0, *self._specs[key][0]), self._specs[key][1])
         return state
 
@@ -228,11 +271,16 @@ class TransitionReplay:
         }
         self.capacity = max(self.size // max(self.workers, 1), self.return_steps)
         arrays = {k.split(".", 1)[1]: v for k, v in state.items() if k.startswith("arrays.")}
-        self.arrays = {k: xp.asarray(np.asarray(v), device=device) for k, v in arrays.items()}
+        # copies: the arrays may be written in place, and must not alias the state's
+        self.arrays = {k: xp.asarray(np.array(v), device=device) for k, v in arrays.items()}
         self.arrays = self.arrays or None
         staged = {k.split(".", 1)[1]: v for k, v in state.items() if k.startswith("staged.")}
-        count = len(next(iter(staged.values()))) if staged else 0
-        self._staged = [{k: np.asarray(v[i]) for k, v in staged.items()} for i in range(count)]
+        self._count = len(next(iter(staged.values()))) if staged else 0
+        self._staging = {}
+        if self._specs:
+            self._grow_staging(max(64, self._count))
+            for key, value in staged.items():
+                self._staging[key][: self._count] = value
 
 
 def write_rows(

@@ -15,7 +15,8 @@ folder that is not empty is refused unless ``--resume`` (continue its run) or ``
 (start again). ``--resume`` takes the run's settings from its ``config.json``; an explicit flag
 may change only ``--steps``, ``--framework``, ``--device``, ``--vectorization``,
 ``--ray-groups``, ``--eager``, ``--tensorboard``, ``--keep-checkpoints`` and ``--quiet``, and
-any other flag that contradicts the saved run is an error.
+any other flag that contradicts the saved run is an error (``--threads`` included: a resumed run
+keeps its threads).
 """
 
 from __future__ import annotations
@@ -54,6 +55,7 @@ DEFAULTS: dict[str, Any] = {
     "resume": False,
     "overwrite": False,
     "quiet": False,
+    "threads": 1,
 }
 # what a resumed run may change; every other setting comes from its config.json
 CHANGEABLE_ON_RESUME = (
@@ -128,6 +130,11 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--resume", action="store_true", help="continue the run in --out")
     p.add_argument("--overwrite", action="store_true", help="start again in a used --out")
     p.add_argument("--quiet", action="store_true", help="no progress bar or table")
+    p.add_argument(
+        "--threads",
+        type=int,
+        help="intra-op threads of the framework (default 1: fastest for small models)",
+    )
     return p
 
 
@@ -188,6 +195,7 @@ def _check(settings: dict[str, Any]) -> None:
         ("workers", 1),
         ("ray_groups", 1),
         ("seed", 0),
+        ("threads", 1),
     ):
         value = settings[key]
         if value is None and key in ("epoch_steps", "save_steps", "ray_groups"):
@@ -244,6 +252,7 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
         keep_checkpoints=settings["keep_checkpoints"],
         show_progress=not settings["quiet"],
         tensorboard=settings["tensorboard"],
+        threads=settings["threads"],
     )
     _cli.enable_float64(settings["framework"], settings["dtype"])
     record = {"agent": settings["agent"], "agent_kwargs": settings["agent_kwargs"], "out": out}

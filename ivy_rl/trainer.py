@@ -19,6 +19,7 @@ Example:
 from __future__ import annotations
 
 import glob
+import importlib
 import json
 import os
 import shutil
@@ -42,6 +43,7 @@ __all__ = [
     "latest_checkpoint",
     "usable_checkpoint",
     "RUN_ENTRIES",
+    "set_threads",
 ]
 
 RUN_ENTRIES = ("config.json", "log.csv", "checkpoints", "best", "tensorboard")
@@ -58,6 +60,7 @@ RUN_DEFINING = (
     "epoch_steps",
     "save_steps",
     "test_episodes",
+    "threads",
 )
 
 
@@ -167,6 +170,90 @@ def usable_checkpoint(out: str, *, warn: Callable[[str], None] | None = None) ->
     return None
 
 
+def set_threads(xp: Any, threads: int) -> str:
+    """Set the intra-op threads of the framework behind ``xp`` (a backend namespace, or a
+    framework's name: a name does not load ivy's backend, and tensorflow's threads can only be
+    set before anything, ivy's backend included, runs on it) to ``threads``.
+
+    The setter is found by what the framework offers, not by its name: a
+    ``set_num_threads`` function (torch; its inter-op pool is left alone, it can be sized only
+    before its first use), ``config.threading``'s intra- and inter-op setters (tensorflow; they
+    are settable only before its first operation, afterwards a value that differs is reported in
+    a warning), or XLA's ``XLA_FLAGS`` (jax: ``--xla_cpu_multi_thread_eigen=false`` and
+    ``intra_op_parallelism_threads=N`` for one thread, read when XLA starts, so they act only if
+    set before jax's first computation; afterwards a warning says so). Frameworks with none of
+    these (numpy, whose element-wise functions use one thread) are left as they are.
+
+    Args:
+        xp: a backend namespace (``ivy.get_framework(f="torch")``) or a framework's name.
+        threads: intra-op threads, an integer >= 1 (1: small models run fastest on a shared
+            machine).
+
+    Returns:
+        What was done, in words (``'torch.set_num_threads(1)'``, ``'not settable'``...).
+
+    Example:
+        >>> set_threads(ivy.get_framework(f="torch"), 1)
+        'torch.set_num_threads(1)'
+    """
+    _check_count("threads", threads, 1)
+    threads = int(threads)
+    name = xp if isinstance(xp, str) else str(getattr(xp, "backend", ""))
+    try:
+        native = importlib.import_module(ivy.framework_handler._canonical_name(name))
+    except ImportError:
+        return "not settable"
+    name = native.__name__
+    if callable(getattr(native, "set_num_threads", None)):
+        native.set_num_threads(threads)
+        return f"{name}.set_num_threads({threads})"
+    threading = getattr(getattr(native, "config", None), "threading", None)
+    if threading is not None and hasattr(threading, "set_intra_op_parallelism_threads"):
+        pairs = (
+            (
+                threading.get_intra_op_parallelism_threads,
+                threading.set_intra_op_parallelism_threads,
+            ),
+            (
+                threading.get_inter_op_parallelism_threads,
+                threading.set_inter_op_parallelism_threads,
+            ),
+        )
+        for get, put in pairs:
+            if get() == threads:
+                continue
+            try:
+                put(threads)
+            except RuntimeError:
+                _warn(
+                    f"{name} already ran operations with {get() or 'its default'} threads; its "
+                    f"threads can be set only before: set them ({put.__name__}) first in the "
+                    "process, or run the command in a new process"
+                )
+                return f"{name}: not changed (already started)"
+        return f"{name}.config.threading: intra/inter-op {threads}"
+    try:
+        bridge = importlib.import_module(f"{name}._src.xla_bridge")
+    except ImportError:
+        bridge = None
+    if bridge is not None and hasattr(bridge, "backends_are_initialized"):
+        if threads != 1:
+            return f"{name}: XLA's default threads (only one thread can be asked for)"
+        flags = "--xla_cpu_multi_thread_eigen=false intra_op_parallelism_threads=1"
+        current = os.environ.get("XLA_FLAGS", "")
+        if flags in current:
+            return f"{name}: XLA_FLAGS {flags}"
+        if bridge.backends_are_initialized():
+            _warn(
+                f"{name} has started XLA, which reads its threads from XLA_FLAGS only when it "
+                f"starts: set XLA_FLAGS='{flags}' before the process's first {name} computation"
+            )
+            return f"{name}: not changed (already started)"
+        os.environ["XLA_FLAGS"] = f"{current} {flags}".strip()
+        return f"{name}: XLA_FLAGS {flags}"
+    return "not settable"
+
+
 def _check_count(name: str, value: Any, minimum: int, *, optional: bool = False) -> None:
     if value is None and optional:
         return
@@ -189,6 +276,9 @@ class Trainer:
         keep_checkpoints: the number of checkpoints kept (the last ones); None: all.
         show_progress: print the progress bar and the table of each epoch.
         tensorboard: also write the scalars to TensorBoard (``<out>/tensorboard``).
+        threads: intra-op threads of the agent's framework (:func:`set_threads`), set when a
+            run starts; 1 (the default) is fastest for small models, above all on a shared
+            machine, where more threads wait on each other.
 
     Example:
         >>> Trainer(steps=50_000, epoch_steps=5_000, test_episodes=5)
@@ -204,8 +294,10 @@ class Trainer:
         keep_checkpoints: int | None = 2,
         show_progress: bool = True,
         tensorboard: bool = False,
+        threads: int = 1,
     ) -> None:
         _check_count("steps", steps, 1)
+        _check_count("threads", threads, 1)
         _check_count("epoch_steps", epoch_steps, 1, optional=True)
         _check_count("save_steps", save_steps, 1, optional=True)
         _check_count("test_episodes", test_episodes, 0)
@@ -217,6 +309,7 @@ class Trainer:
         self.keep_checkpoints = keep_checkpoints
         self.show_progress = show_progress
         self.tensorboard = tensorboard
+        self.threads = int(threads)
 
     def run(
         self,
@@ -291,6 +384,7 @@ class Trainer:
             self.test_env = make_env(
                 environment, env_kwargs=env_kwargs, time_feature=time_feature, wrappers=wrappers
             )
+            self.threads_set = set_threads(_framework_of(agent, f), self.threads)
             self._initialize(agent, seed, f, dtype, compile, device)
             record = self._record(
                 agent, environment, workers, seed, env_kwargs, wrappers, time_feature,
@@ -410,6 +504,7 @@ class Trainer:
             "test_episodes": self.test_episodes,
             "keep_checkpoints": self.keep_checkpoints,
             "tensorboard": self.tensorboard,
+            "threads": self.threads,
         }
 
     def _write_config(self, out: str, record: dict[str, Any], resume: bool, overwrite: bool):
@@ -607,6 +702,14 @@ class Trainer:
         self.best_score = -np.inf if best is None else float(best)
         self.logger.restore(self.epochs)
         return observations
+
+
+def _framework_of(agent: Any, f: Any) -> Any:
+    """The framework the agent computes with: its own namespace once initialized, else ``f``
+    (the global framework, else numpy, as :meth:`Agent.initialize` chooses), not yet loaded."""
+    if getattr(agent, "initialized", False) and getattr(agent, "xp", None) is not None:
+        return agent.xp
+    return f if f is not None else ivy.current_framework() or "numpy"
 
 
 def _fits(own: Any, other: Any) -> bool:

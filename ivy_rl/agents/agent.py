@@ -270,10 +270,25 @@ class Agent:
         """``compiled`` (a compiled callable, e.g. from ``ivy.compiled_scan``) counting the
         distinct input signatures of its calls in :attr:`compiles` under ``name``."""
         seen = self._signatures.setdefault(name, set())
+        quick: set = set()
+        calls = [0]
         xp = self.xp
 
+        # The full signature flattens every argument (the weights, optimiser states and replay
+        # of an update: hundreds of leaves, about a millisecond a call), which would cost more
+        # than a small compiled step itself. So it is computed on the first two calls (the first
+        # compilation, and the steady state that follows it), then whenever a cheap key of the
+        # arguments (the shape and dtype of the arrays passed directly, the size of the nests,
+        # other values as they are: what changes when a batch size or a setting changes) is new,
+        # and on every _FULL_EVERY-th call, which catches a change deep inside a nest that
+        # persists (a change that lasts fewer calls can be missed: it is counted when it recurs
+        # at a checked call).
         def counted(*args: Any) -> Any:
-            seen.add(_signature(xp, args))
+            calls[0] += 1
+            key = _quick_key(args)
+            if calls[0] <= 2 or key not in quick or calls[0] % _FULL_EVERY == 0:
+                quick.add(key)
+                seen.add(_signature(xp, args))
             return compiled(*args)
 
         return counted
@@ -449,6 +464,28 @@ class Agent:
     def __repr__(self) -> str:
         where = f", f={self.xp.backend}" if self.xp is not None else ""
         return f"{type(self).__name__}({self.config}{where})"
+
+
+#: calls between full signatures of a counted function (see Agent._counted)
+_FULL_EVERY = 64
+
+
+def _quick_key(args: tuple) -> tuple:
+    """A cheap key of a call's arguments: the shape and dtype of each array passed directly, the
+    size of each nest, the type and value of other hashable arguments."""
+    parts = []
+    for arg in args:
+        if hasattr(arg, "shape") and hasattr(arg, "dtype"):
+            parts.append((tuple(arg.shape), arg.dtype))
+        elif isinstance(arg, (dict, list, tuple)):
+            parts.append((type(arg), len(arg)))
+        else:
+            try:
+                hash(arg)
+                parts.append((type(arg), arg))
+            except TypeError:
+                parts.append(type(arg))
+    return tuple(parts)
 
 
 def _signature(xp: Any, args: Any) -> Any:

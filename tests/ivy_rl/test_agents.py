@@ -368,3 +368,41 @@ def test_arrays_live_on_the_agents_device(diff_backend, target_device):
     assert set(segment["distribution"]) == {"loc", "scale"}
     leaves += ivy.nest.flatten_nest(segment)[0]
     assert leaves and {str(xp.dev(leaf)) for leaf in leaves} == {target_device}
+
+
+def test_compile_counts_follow_signatures_without_flattening_every_call():
+    # Agent._counted: the full signature on the first two calls, on a new cheap key (the
+    # shapes of the arrays passed directly) and every _FULL_EVERY-th call
+    from ivy_rl.agents import agent as agent_module
+
+    agent = ivy_rl.agents.Agent()
+    agent.xp = ivy.get_framework(f="numpy")
+    agent._signatures = {}
+    full = []
+    real = agent_module._signature
+    calls = []
+
+    def counting(xp, args):
+        full.append(len(calls) + 1)  # the number of the call being made
+        return real(xp, args)
+
+    counted = agent._counted(lambda *args: calls.append(args) or len(calls), "fn")
+    every = agent_module._FULL_EVERY
+    weights = {"w": np.zeros((2, 3), np.float32)}
+    try:
+        agent_module._signature = counting
+        for _ in range(every + 5):
+            assert counted(weights, np.zeros((4, 3), np.float32)) == len(calls)
+        assert agent.compiles == 1
+        assert full == [1, 2, every]  # not per call
+        counted(weights, np.zeros((1, 3), np.float32))  # a new batch shape: counted at once
+        assert agent.compiles == 2 and full[-1] == len(calls)
+        counted(weights, np.zeros((1, 3), np.float64))  # a new dtype
+        assert agent.compiles == 3
+        # a change deep inside a nest is counted at the next full check
+        deeper = {"w": np.zeros((5, 3), np.float32)}
+        while len(calls) % every:
+            counted(deeper, np.zeros((4, 3), np.float32))
+        assert agent.compiles == 4
+    finally:
+        agent_module._signature = real

@@ -80,6 +80,7 @@ def test_resume_alone_continues_the_run_as_configured(tmp_path):
         ("--agent-kwargs", json.dumps({**PPO_TINY, "epochs": 2})),
         ("--environment", "Pendulum-v1"),
         ("--epoch-steps", "8"),
+        ("--threads", "2"),
     ):
         with pytest.raises(ValueError, match=f"{flag} .*the run has"):
             train.main(["--out", str(out), "--resume", flag, value])
@@ -88,6 +89,7 @@ def test_resume_alone_continues_the_run_as_configured(tmp_path):
     config = _config(out)
     assert config["framework"] == "tensorflow" and config["seed"] == 4 and config["steps"] == 48
     assert config["agent_kwargs"] == PPO_TINY and config["epoch_steps"] == 16
+    assert config["threads"] == 1  # the saved run's value (the default), kept on resume
     assert [r["train/steps"] for r in rows] == [16, 32, 48]
     assert _rows(rows[:2]) == _rows(first)
     assert np.isfinite(rows[-1]["actor/loss"])  # it learned after the resume
@@ -105,6 +107,7 @@ def test_resume_alone_continues_the_run_as_configured(tmp_path):
         (["--workers", "0"], "--workers must be"),
         (["--keep-checkpoints", "0"], "--keep-checkpoints must be"),
         (["--seed", "-1"], "--seed must be"),
+        (["--threads", "0"], "--threads must be an integer >= 1"),
         (["--ray-groups", "2"], "--ray-groups needs --vectorization ray"),
         (["--device", "quantum:0"], "--device 'quantum:0' is not a device"),
         (["--framework", "caffe"], "Unknown framework 'caffe'"),

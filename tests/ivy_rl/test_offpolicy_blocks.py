@@ -104,6 +104,39 @@ def test_n_step_transitions_match_a_reference(backend, xp, return_steps):
     assert len(seen) >= 10
 
 
+@pytest.mark.parametrize("flushes", [(2, 5, 9, 12), (12,)])
+def test_the_ring_holds_the_last_steps_whatever_the_flushes(backend, xp, flushes):
+    # the ring's rows against the last steps written by hand; flushes of a few steps, wrapping
+    # around, and one flush of more steps than the ring holds (only the last ones survive)
+    obs, nxt, rewards, actions, resets, terms = _history()
+    capacity = 5
+    replay = TransitionReplay(capacity * WORKERS)
+    before = None
+    for t in range(STEPS):
+        replay.store(
+            observations=obs[t],
+            actions=actions[t],
+            rewards=rewards[t],
+            next_observations=nxt[t],
+            resets=resets[t].astype(np.float64),
+            terminations=terms[t].astype(np.float64),
+        )
+        if t in flushes:
+            replay.flush(xp, device="cpu")
+            before = before or dict(replay.arrays)
+    assert replay.stored == capacity and replay.position == STEPS % capacity
+    expected = np.zeros((capacity, WORKERS, OBS))
+    for t in range(STEPS - capacity, STEPS):
+        expected[t % capacity] = obs[t]
+    got = np.asarray(ivy.to_numpy(replay.arrays["observations"]))
+    np.testing.assert_array_equal(got, expected.reshape(capacity * WORKERS, OBS))
+    if xp.capabilities.mutable_arrays:  # written in place: the same arrays throughout
+        assert all(replay.arrays[k] is before[k] for k in before)
+        state = replay.state_dict()  # a copy, which later writes leave alone
+        replay.arrays["rewards"][0] = 123.0
+        assert state["arrays.rewards"][0] != 123.0
+
+
 def test_replay_checkpoint_round_trip_and_errors(backend, xp):
     obs, nxt, rewards, actions, resets, terms = _history()
     replay = TransitionReplay(10, return_steps=2)

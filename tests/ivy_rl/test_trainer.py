@@ -159,12 +159,83 @@ def test_the_trainer_binds_counts_and_reports_the_agents_hooks(tmp_path):
     np.testing.assert_allclose(probe.progress, expected)
     assert [r["train/compiles"] for r in rows][-1] == 2
     with open(tmp_path / "a" / "config.json") as fh:
-        assert json.load(fh)["device"] == "cpu"
+        config = json.load(fh)
+    assert config["device"] == "cpu" and config["threads"] == 1
     # a compilation after the first update is reported once
     with pytest.warns(RuntimeWarning, match=r"compiled again .* \(2 -> 3 compilations"):
         Trainer(96, epoch_steps=32, test_episodes=1, show_progress=False).run(
             _Probe(recompile_at=3), "CartPole-v1", workers=2, f="numpy"
         )
+
+
+def test_threads_are_checked_recorded_and_set_on_torch(tmp_path):
+    torch = pytest.importorskip("torch")
+    from ivy_rl.trainer import set_threads
+
+    for bad in (0, -1, 1.5, True, "2"):
+        with pytest.raises(ValueError, match="threads must be an integer >= 1"):
+            Trainer(32, threads=bad)
+        with pytest.raises(ValueError, match="threads must be an integer >= 1"):
+            set_threads(ivy.get_framework(f="torch"), bad)
+    before = torch.get_num_threads()
+    try:
+        Trainer(16, epoch_steps=16, test_episodes=0, show_progress=False, threads=2).run(
+            "A2C", "CartPole-v1", workers=1, f="torch", compile=False, out=str(tmp_path / "r")
+        )
+        assert torch.get_num_threads() == 2
+        with open(tmp_path / "r" / "config.json") as fh:
+            assert json.load(fh)["threads"] == 2
+        # resuming with other threads is refused, naming the setting
+        with pytest.raises(ValueError, match="threads: this run 1, the saved run 2"):
+            Trainer(32, epoch_steps=16, test_episodes=0, show_progress=False).run(
+                "A2C", "CartPole-v1", workers=1, f="torch", out=str(tmp_path / "r"), resume=True
+            )
+        assert set_threads(ivy.get_framework(f="torch"), 1) == "torch.set_num_threads(1)"
+        assert torch.get_num_threads() == 1
+    finally:
+        torch.set_num_threads(before)
+
+
+_THREADS_SCRIPT = """
+import os, sys, warnings
+import ivy
+from ivy_rl.trainer import set_threads
+name = sys.argv[1]
+os.environ.pop("XLA_FLAGS", None)
+print(set_threads(name, 1))
+if name == "tensorflow":
+    import tensorflow as tf
+    print(tf.config.threading.get_intra_op_parallelism_threads(),
+          tf.config.threading.get_inter_op_parallelism_threads())
+else:
+    print(os.environ["XLA_FLAGS"])
+    os.environ.pop("XLA_FLAGS")
+xp = ivy.get_framework(f=name)
+xp.sum(xp.ones(3))  # the framework starts
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    print(set_threads(xp, 2 if name == "tensorflow" else 1))
+print(caught[0].message if caught else "no warning")
+"""
+
+
+@pytest.mark.parametrize("name", ["tensorflow", "jax"])
+def test_threads_are_set_before_the_framework_starts_and_a_late_change_warns(name):
+    # a fresh process: these frameworks read their threads once, when they start
+    pytest.importorskip(name)
+    done = subprocess.run(
+        [sys.executable, "-c", _THREADS_SCRIPT, name], capture_output=True, text=True,
+        cwd=ROOT, timeout=120,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr[-2000:]
+    lines = done.stdout.strip().splitlines()[-4:]
+    if name == "tensorflow":
+        assert lines[:2] == ["tensorflow.config.threading: intra/inter-op 1", "1 1"]
+    else:
+        flags = "--xla_cpu_multi_thread_eigen=false intra_op_parallelism_threads=1"
+        assert lines[:2] == [f"jax: XLA_FLAGS {flags}", flags]
+    assert lines[2] == f"{name}: not changed (already started)"
+    assert "only" in lines[3] and "before" in lines[3]
 
 
 def test_schedules_follow_the_runs_progress():
