@@ -36,11 +36,15 @@ import contextlib
 import fcntl
 import json
 import os
+import sys
 import time
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# this checkout's ivy_rl, not an installed one (``python benchmarks/...`` puts only benchmarks/
+# on the path)
+sys.path.insert(0, os.path.dirname(HERE))
 RESULTS = os.path.join(HERE, "results", "rl_offpolicy.json")
 FIXED_EPISODES = range(1000, 1010)
 

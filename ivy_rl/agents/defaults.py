@@ -145,13 +145,13 @@ _OFF_POLICY_CONTINUOUS = dict(
 # TD3 on MuJoCo: the RL zoo's and stable-baselines3's torsos (400, 300), without observation
 # normalisation (stable-baselines3 does not normalise either). Measured on Hopper-v5, 30k steps,
 # jax, seed 0 (docs/ivy_rl.md, "Off-policy results"): the agent's own settings ((256, 256),
-# normalised observations) scored 238.5 in an earlier measurement; (400, 300) with normalised
-# observations stayed below 40 until 21k steps and ended at 239; without normalisation it
-# learned from the start and ended at 302 (stable-baselines3's TD3, its defaults: 318). The
-# zoo's 10k steps before learning would spend a third of that budget; the agent's 1000 random
-# steps and 50 optimisation steps every 50 environment steps (one per step, as the zoo's
-# train_freq 1) are kept. SAC and DDPG keep their own settings on MuJoCo (SAC: 2160 on the
-# same budget, against stable-baselines3's 554, in an earlier measurement).
+# normalised observations) stayed below 40 for 20k steps and ended at 239; (400, 300) without
+# normalisation learned from the start and ended at 302; (256, 256) without it was at 180 after
+# 18k steps (stopped; 210 for (400, 300) there). stable-baselines3's TD3 (its defaults): 318,
+# so this row does not reach it on this seed. The zoo's 10k steps before learning would spend
+# a third of the budget; the agent's 1000 random steps and 50 optimisation steps every 50
+# environment steps (one per step, as train_freq 1) are kept. SAC and DDPG keep their own
+# settings on MuJoCo (SAC: 2127 on the same budget).
 _TD3_MUJOCO = dict(hidden_sizes=(400, 300), normalize_observations=False)
 DEFAULTS.update(
     {
