@@ -264,6 +264,18 @@ def capabilities(name: str) -> Capabilities:
     return _BACKENDS[_canonical_name(name)].capabilities
 
 
+def native_package(name: str) -> str:
+    """The import name of backend ``name``'s own framework (``'tensorflow'`` for ``'tf'``).
+
+    Nothing is imported; an unknown name raises :class:`UnknownFrameworkError`.
+
+    Example:
+        >>> native_package("tf")
+        'tensorflow'
+    """
+    return _BACKENDS[_canonical_name(name)].package
+
+
 def available_frameworks() -> tuple[str, ...]:
     """Names of every framework ivy supports, installed or not."""
     return tuple(_BACKENDS)

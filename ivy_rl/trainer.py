@@ -200,8 +200,8 @@ def set_threads(xp: Any, threads: int) -> str:
     threads = int(threads)
     name = xp if isinstance(xp, str) else str(getattr(xp, "backend", ""))
     try:
-        native = importlib.import_module(ivy.framework_handler._canonical_name(name))
-    except ImportError:
+        native = importlib.import_module(ivy.framework_handler.native_package(name))
+    except (ImportError, ivy.framework_handler.UnknownFrameworkError):
         return "not settable"
     name = native.__name__
     if callable(getattr(native, "set_num_threads", None)):

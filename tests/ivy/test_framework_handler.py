@@ -345,6 +345,19 @@ def test_unknown_framework_name():
         ivy.zeros(2, f=types.ModuleType("numpy"))
 
 
+def test_native_package_names_the_frameworks_own_module_and_imports_nothing():
+    import sys
+
+    before = set(sys.modules)
+    assert fh.native_package("tf") == "tensorflow"
+    assert fh.native_package("Torch") == "torch"
+    assert fh.native_package("numpy") == "numpy"
+    assert fh.native_package("jax") == "jax"
+    assert set(sys.modules) == before
+    with pytest.raises(ivy.UnknownFrameworkError, match="Choose one of"):
+        fh.native_package("caffe")
+
+
 def test_framework_not_installed_names_the_extra(monkeypatch):
     spec = fh._BackendSpec("ivy.backends.paddle", "paddle_is_not_installed_here", "paddle")
     monkeypatch.setitem(fh._BACKENDS, "paddle", spec)
