@@ -11,10 +11,11 @@ as the motor's control (clamped to its control range [-1, 1] by the actuator, as
 also places the sites) at four stages and then advances ``qpos`` and ``qvel`` without evaluating
 them again, so after the step ``site_xpos`` is the tip at the last stage's positions,
 ``qpos + h * (qvel + h / 2 * qacc_2)`` (``qacc_2`` the acceleration of the second stage), not at
-the new ``qpos``: up to ~1e-6 m apart in a step. The last of the ``frame_skip`` integrator steps
-is therefore written out here (:func:`rk4_step_with_last_stage`: MuJoCo's tableau, the same
-arithmetic as ``tree.step`` for these hinge and slide joints) so that its last stage's positions
-come out of the step at no extra cost; the stale tip is a function of the state before the step
+the new ``qpos``: up to ~1e-6 m apart in a step. The integrator's step is therefore written out
+here (:func:`rk4_step_with_last_stage`: MuJoCo's tableau, the same arithmetic as ``tree.step``
+for these hinge and slide joints, its four stages one ``xp.scan`` and the ``frame_skip`` steps
+another, so that compilers trace the dynamics once) and the last stage's positions come out of
+the step at no extra cost; the stale tip is a function of the state before the step
 and the action, so nothing beyond ``[qpos, qvel]`` is carried in the state.
 
 **Scope.** Joint limits and contacts are out of the tree's scope. The poles' hinges are unlimited
@@ -78,24 +79,33 @@ def rk4_step_with_last_stage(xp, tree, qpos: Array, qvel: Array, ctrl: Array) ->
     Args:
         xp: the backend namespace.
         tree: the :class:`ivy_robot.KinematicTree` (RK4, hinge and slide joints only).
-        qpos, qvel: *[batch_shape, nq]* and *[batch_shape, nv]*.
-        ctrl: *[batch_shape, nu]* in their dtype.
+        qpos, qvel: *[batch_shape, nq]* and *[batch_shape, nv]*, of one batch shape (the
+            stages are one ``xp.scan``, whose carry keeps its shape).
+        ctrl: *[batch_shape, nu]* in their dtype (broadcasting against the batch).
 
     Returns:
         ``(qpos, qvel, stage_qpos)`` after one ``tree.timestep``.
     """
-    h = tree.timestep
-    acc0 = tree.forward_dynamics(qpos, qvel, ctrl, f=xp)
-    vel1 = qvel + (0.5 * h) * acc0
-    acc1 = tree.forward_dynamics(qpos + (0.5 * h) * qvel, vel1, ctrl, f=xp)
-    vel2 = qvel + (0.5 * h) * acc1
-    acc2 = tree.forward_dynamics(qpos + (0.5 * h) * vel1, vel2, ctrl, f=xp)
-    vel3 = qvel + h * acc2
-    stage = qpos + h * vel2
-    acc3 = tree.forward_dynamics(stage, vel3, ctrl, f=xp)
-    mean_vel = qvel / 6 + vel1 / 3 + vel2 / 3 + vel3 / 6
-    mean_acc = acc0 / 6 + acc1 / 3 + acc2 / 3 + acc3 / 6
-    return qpos + h * mean_vel, qvel + h * mean_acc, stage
+    tree_h = tree.timestep
+    dtype, device = qpos.dtype, xp.dev(qpos)
+    # stage k starts a fraction c_k of the step from the start along the previous stage's
+    # velocity and acceleration; the step averages the stages with weights w_k
+    fractions = xp.constant(np.array([0.0, 0.5, 0.5, 1.0]), dtype=dtype, device=device)
+    weights = xp.constant(np.array([1.0, 2.0, 2.0, 1.0]) / 6.0, dtype=dtype, device=device)
+
+    def stage(carry, x):
+        velocity, acceleration, mean_vel, mean_acc, _ = carry
+        fraction, weight = x
+        q = qpos + (tree_h * fraction) * velocity
+        v = qvel + (tree_h * fraction) * acceleration
+        a = tree.forward_dynamics(q, v, ctrl, f=xp)
+        return (v, a, mean_vel + weight * v, mean_acc + weight * a, q), None
+
+    zero = qvel * 0.0
+    # one loop of the four stages: compilers trace the dynamics once, not four times
+    carry = (zero, zero, zero, zero, qpos)
+    (_, _, mean_vel, mean_acc, last), _ = xp.scan(stage, carry, (fractions, weights))
+    return qpos + tree_h * mean_vel, qvel + tree_h * mean_acc, last
 
 
 @dataclass(frozen=True)
@@ -302,13 +312,19 @@ class InvertedDoublePendulum(Env):
     def kernel_step(self, xp, state, action):
         tree, p = self.tree, self.params
         nq = tree.nq
-        qpos, qvel = state[..., :nq], state[..., nq:]
         ctrl = cast_like(xp, action, state)
-        for _ in range(int(p.frame_skip) - 1):
-            qpos, qvel = tree.step(qpos, qvel, ctrl, f=xp)
+        batch = np.broadcast_shapes(tuple(state.shape[:-1]), tuple(ctrl.shape[:-1]))
+        if tuple(state.shape[:-1]) != batch:  # the loops' carries keep one shape
+            state = xp.broadcast_to(state, (*batch, self.state_dim))
+        qpos, qvel = state[..., :nq], state[..., nq:]
+
+        def frame(carry, _):
+            return rk4_step_with_last_stage(xp, tree, carry[0], carry[1], ctrl), None
+
+        # the frames as one loop (compilers trace one RK4 step, not frame_skip of them)
+        (qpos, qvel, stage), _ = xp.scan(frame, (qpos, qvel, qpos), None, length=int(p.frame_skip))
+        state = xp.concat([qpos, qvel], axis=-1)
         if p.swing_up:
-            qpos, qvel = tree.step(qpos, qvel, ctrl, f=xp)
-            state = xp.concat([qpos, qvel], axis=-1)
             never = xp.zeros_like(qpos[..., 0]) > 0.0
             return (
                 state,
@@ -316,8 +332,6 @@ class InvertedDoublePendulum(Env):
                 self._swing_up_reward(xp, state, ctrl),
                 never,
             )
-        qpos, qvel, stage = rk4_step_with_last_stage(xp, tree, qpos, qvel, ctrl)
-        state = xp.concat([qpos, qvel], axis=-1)
         tip = self._tip(xp, stage)  # where Gymnasium reads it: the last RK4 stage
         x, y = tip[..., 0], tip[..., 2]
         finite = xp.all(xp.isfinite(state), axis=-1)

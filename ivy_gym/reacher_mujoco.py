@@ -35,6 +35,7 @@ import numpy as np
 
 import ivy
 from ivy_gym.base import Env, _is_number, _shape
+from ivy_gym.inverted_double_pendulum import rk4_step_with_last_stage
 from ivy_gym.inverted_pendulum import _gymnasium_asset
 
 __all__ = ["ReacherMuJoCo", "ReacherMuJoCoParams", "reacher_tree"]
@@ -236,31 +237,6 @@ class ReacherMuJoCo(Env):
         qpos, qvel = state[..., :nq], state[..., nq:]
         return self._observation(xp, qpos, qvel, self._fingertip_minus_target(xp, qpos))
 
-    def _rk4(self, xp, qpos, qvel, ctrl):
-        """One step of MuJoCo's RK4 (hinges and slides: positions advance linearly), its four
-        stages one loop (``xp.scan``: compilers trace the dynamics once): ``(qpos, qvel)``
-        after it, and the positions of its last stage, where MuJoCo's body positions stay
-        after ``mj_step``."""
-        tree, h = self.tree, self.tree.timestep
-        dtype, device = qpos.dtype, xp.dev(qpos)
-        # MuJoCo's tableau: stage k at fraction c_k of the step from the previous stage's
-        # velocity and acceleration, weighted w_k
-        fractions = xp.constant(np.array([0.0, 0.5, 0.5, 1.0]), dtype=dtype, device=device)
-        weights = xp.constant(np.array([1, 2, 2, 1]) / 6.0, dtype=dtype, device=device)
-
-        def stage(carry, x):
-            dv, da, mean_v, mean_a, _ = carry
-            fraction, weight = x
-            q = qpos + (h * fraction) * dv
-            v = qvel + (h * fraction) * da
-            a = tree.forward_dynamics(q, v, ctrl, f=xp)
-            return (v, a, mean_v + weight * v, mean_a + weight * a, q), None
-
-        zero = qvel * 0.0
-        carry = (zero, zero, zero, zero, qpos)
-        (_, _, mean_v, mean_a, last), _ = xp.scan(stage, carry, (fractions, weights))
-        return qpos + h * mean_v, qvel + h * mean_a, last
-
     def kernel_step(self, xp, state, action):
         p, nq = self.params, self.tree.nq
         batch = np.broadcast_shapes(tuple(state.shape[:-1]), tuple(action.shape[:-1]))
@@ -269,7 +245,7 @@ class ReacherMuJoCo(Env):
         qpos, qvel = state[..., :nq], state[..., nq:]
 
         def frame(carry, _):
-            return self._rk4(xp, carry[0], carry[1], action), None
+            return rk4_step_with_last_stage(xp, self.tree, carry[0], carry[1], action), None
 
         (qpos, qvel, stale), _ = xp.scan(frame, (qpos, qvel, qpos), None, length=int(p.frame_skip))
         vec = self._fingertip_minus_target(xp, stale)
