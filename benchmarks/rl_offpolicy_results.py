@@ -46,7 +46,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 # on the path)
 sys.path.insert(0, os.path.dirname(HERE))
 RESULTS = os.path.join(HERE, "results", "rl_offpolicy.json")
-FIXED_EPISODES = range(1000, 1010)
+
+from _gym_scores import FIXED_EPISODES, evaluate  # noqa: E402
 
 # name: (agent, environment, steps, the issue's target)
 ROWS: dict[str, tuple[str, str, int, str]] = {
@@ -64,24 +65,6 @@ SB3_AGENTS = ("DQN", "SAC", "TD3", "DDPG")
 
 def _load() -> float:
     return os.getloadavg()[0]
-
-
-def evaluate(act, env_id: str) -> float:
-    """Mean score of ``act(observation) -> action`` over the fixed episodes."""
-    import gymnasium as gym
-
-    env = gym.make(env_id)
-    scores = []
-    for seed in FIXED_EPISODES:
-        obs, _ = env.reset(seed=seed)
-        score, done = 0.0, False
-        while not done:
-            obs, reward, terminated, truncated, _ = env.step(act(obs))
-            score += float(reward)
-            done = terminated or truncated
-        scores.append(score)
-    env.close()
-    return float(np.mean(scores))
 
 
 def run_ivy(agent: str, env_id: str, framework: str, steps: int, seed: int, root: str) -> dict:

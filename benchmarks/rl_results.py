@@ -34,6 +34,7 @@ import os
 import time
 
 import numpy as np
+from _gym_scores import evaluate
 
 # Every run uses the command line's defaults: ivy_rl.agents.DEFAULTS, the row of the agent and the
 # environment's task family (the RL zoo's settings: for CartPole, PPO with a segment of 32 steps
@@ -42,25 +43,6 @@ import numpy as np
 CARTPOLE = {"PPO": {}, "A2C": {}, "TRPO": {}}
 PENDULUM: dict = {}
 HOPPER: dict = {}
-FIXED_EPISODES = range(1000, 1010)
-
-
-def evaluate(act, env_id):
-    """Mean score of ``act(observation) -> action`` over the fixed episodes."""
-    import gymnasium as gym
-
-    env = gym.make(env_id)
-    scores = []
-    for seed in FIXED_EPISODES:
-        obs, _ = env.reset(seed=seed)
-        score, done = 0.0, False
-        while not done:
-            obs, reward, terminated, truncated, _ = env.step(act(obs))
-            score += float(reward)
-            done = terminated or truncated
-        scores.append(score)
-    env.close()
-    return float(np.mean(scores))
 
 
 def run_ivy(agent, env_id, framework, steps, workers, kwargs, root, seed, test_episodes):
