@@ -271,3 +271,29 @@ def check_meta(actual, backend: str, dtype: str, shape: tuple):
     assert dtype_name(actual) == dtype, f"dtype {dtype_name(actual)} != expected {dtype}"
     got = tuple(numpy_of(actual).shape)
     assert got == tuple(shape), f"shape {got} != expected {tuple(shape)}"
+
+
+def run_notebook(path, monkeypatch, settings: dict, timeout: int = 600) -> tuple[list, str]:
+    """Execute the notebook at ``path`` headless (nbclient) with the environment variables
+    ``settings`` and this checkout on ``PYTHONPATH``; assert that no cell raised. Returns the
+    PNG outputs and the text that the cells printed."""
+    import os
+    import pathlib
+
+    import nbclient
+    import nbformat
+
+    root = pathlib.Path(__file__).resolve().parents[1]
+    for key, value in settings.items():
+        monkeypatch.setenv(key, value)
+    path_var = os.pathsep.join(filter(None, [str(root), os.environ.get("PYTHONPATH")]))
+    monkeypatch.setenv("PYTHONPATH", path_var)
+    book = nbformat.read(path, as_version=4)
+    nbclient.NotebookClient(
+        book, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": str(root)}}
+    ).execute()
+    outputs = [o for cell in book.cells if cell.cell_type == "code" for o in cell.outputs]
+    errors = [o for o in outputs if o.get("output_type") == "error"]
+    assert not errors, errors
+    images = [o for o in outputs if "image/png" in o.get("data", {})]
+    return images, "".join(o.get("text", "") for o in outputs)

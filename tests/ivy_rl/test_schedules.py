@@ -56,11 +56,14 @@ def test_agents_accept_schedules_and_refuse_bad_ones_by_name():
         ivy_rl.agents.make("PPO", ratio_clip="linear:0.2:-0.1")
     with pytest.raises(ValueError, match="'dual_lr'"):
         ivy_rl.agents.make("MPO", dual_lr="cosine:1e-3")
+
     # an agent that reads a setting as a constant refuses a schedule, naming it
     class ConstantRateAPG(ivy_rl.agents.APG):
         scheduled = ()
 
-    with pytest.raises(ValueError, match="ConstantRateAPG does not schedule the setting 'actor_lr'"):
+    with pytest.raises(
+        ValueError, match="ConstantRateAPG does not schedule the setting 'actor_lr'"
+    ):
         ConstantRateAPG(actor_lr="linear:1e-3")
     assert ivy_rl.agents.make("APG", actor_lr="linear:1e-3").scheduled_values(0.5) == {
         "actor_lr": pytest.approx(5e-4)
