@@ -11,9 +11,7 @@ The notebook: several depth cameras of a MuJoCo scene -> point clouds fused in a
 
 from __future__ import annotations
 
-import pathlib
-
-import nbformat
+from _notebooks import write_notebook  # scripts/ is on the path of `python scripts/...`
 
 CELLS = [
     (
@@ -232,31 +230,7 @@ plt.show()""",
 
 
 def main():
-    import argparse
-
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--execute", action="store_true", help="run it and save the outputs")
-    args = parser.parse_args()
-    nb = nbformat.v4.new_notebook()
-    nb.metadata["kernelspec"] = {
-        "name": "python3",
-        "display_name": "Python 3",
-        "language": "python",
-    }
-    for kind, source in CELLS:
-        make = nbformat.v4.new_code_cell if kind == "code" else nbformat.v4.new_markdown_cell
-        nb.cells.append(make(source))
-    root = pathlib.Path(__file__).resolve().parents[1]
-    path = root / "notebooks" / "vision_multiview.ipynb"
-    path.parent.mkdir(exist_ok=True)
-    if args.execute:
-        from nbclient import NotebookClient
-
-        NotebookClient(
-            nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(root)}}
-        ).execute()
-    nbformat.write(nb, path)
-    print(path)
+    write_notebook(CELLS, "vision_multiview.ipynb", __doc__.splitlines()[0], timeout=600)
 
 
 if __name__ == "__main__":
