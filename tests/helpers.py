@@ -276,13 +276,14 @@ def check_meta(actual, backend: str, dtype: str, shape: tuple):
 def run_notebook(path, monkeypatch, settings: dict, timeout: int = 600) -> tuple[list, str]:
     """Execute the notebook at ``path`` headless (nbclient) with the environment variables
     ``settings`` and this checkout on ``PYTHONPATH``; assert that no cell raised. Returns the
-    PNG outputs and the text that the cells printed."""
+    PNG outputs and the text that the cells printed. Skips without nbformat and nbclient."""
     import os
     import pathlib
 
-    import nbclient
-    import nbformat
+    import pytest
 
+    nbformat = pytest.importorskip("nbformat", reason="notebook tests need the [test] extra")
+    nbclient = pytest.importorskip("nbclient", reason="notebook tests need the [test] extra")
     root = pathlib.Path(__file__).resolve().parents[1]
     for key, value in settings.items():
         monkeypatch.setenv(key, value)

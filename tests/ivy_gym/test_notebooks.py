@@ -8,9 +8,6 @@ import pytest
 
 from tests.helpers import run_notebook
 
-pytest.importorskip("nbformat", reason="notebook tests need the [test] extra")
-pytest.importorskip("nbclient", reason="notebook tests need the [test] extra")
-
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SMALL = {
     "IVY_GYM_NOTEBOOK_ITERATIONS": "3",

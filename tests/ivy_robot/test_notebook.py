@@ -11,9 +11,6 @@ import pytest
 
 from tests.helpers import run_notebook
 
-pytest.importorskip("nbformat")
-pytest.importorskip("nbclient")
-
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 NOTEBOOK = ROOT / "notebooks" / "robot_trajectory_optimisation.ipynb"
 

@@ -10,9 +10,6 @@ import pytest
 
 from tests.helpers import run_notebook
 
-pytest.importorskip("nbformat")
-pytest.importorskip("nbclient")
-
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 NOTEBOOK = ROOT / "notebooks" / "vision_multiview.ipynb"
 
