@@ -238,7 +238,7 @@ def optimise_actions(
         f = ivy.get_framework(initial_state)
     xp = _differentiable(f, "optimise_actions")
     if seed is not None:
-        ivy.seed(seed, f=xp)
+        xp.seed(seed)
     if initial_state is None:
         initial_state = env.reset(tuple(batch_shape), dtype=dtype, device=device, f=xp)
     check_state(env, initial_state, "optimise_actions", argument="initial_state")
@@ -346,7 +346,7 @@ def optimise_policy(
     xp = _differentiable(f, "optimise_policy")
     device = _device_of(xp, v) if device is None else device
     if seed is not None:
-        ivy.seed(seed, f=xp)
+        xp.seed(seed)
     opt = ivy.Adam(lr, f=xp)
     if compile is None:
         compile = _compile_by_default(xp)

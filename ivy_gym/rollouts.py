@@ -153,7 +153,7 @@ def rollout(
     alive0 = xp.ones(batch_shape, dtype="bool", device=device)
     carry = (state, env.kernel_observe(xp, state), alive0)
     if window is None or window >= steps:
-        carry, outs = ivy.scan(step, carry, actions, length=steps, f=xp)
+        carry, outs = xp.scan(step, carry, actions, length=steps)
     else:
         carry, outs = _windowed_scan(xp, step, carry, actions, steps, operator.index(window))
     observations, actions_taken, rewards, terminated, valid, states = outs
@@ -175,20 +175,20 @@ def _windowed_scan(xp, step, carry, actions, steps, window):
         return (xp.stop_gradient(state), xp.stop_gradient(obs), alive)
 
     def run_window(carry, window_actions):
-        return ivy.scan(step, cut(carry), window_actions, length=window, f=xp)
+        return xp.scan(step, cut(carry), window_actions, length=window)
 
-    carry, first = ivy.scan(step, carry, part(0, window), length=window, f=xp)
+    carry, first = xp.scan(step, carry, part(0, window), length=window)
     pieces = [first]
     if full > 1:
         middle = part(window, full * window)
         if middle is not None:
             middle = xp.reshape(middle, (full - 1, window, *middle.shape[1:]))
-        carry, outs = ivy.scan(run_window, carry, middle, length=full - 1, f=xp)
+        carry, outs = xp.scan(run_window, carry, middle, length=full - 1)
         pieces.append(
             ivy.nest.map_nest(lambda a: xp.reshape(a, ((full - 1) * window, *a.shape[2:])), outs)
         )
     if rest:
-        carry, outs = ivy.scan(step, cut(carry), part(full * window, steps), length=rest, f=xp)
+        carry, outs = xp.scan(step, cut(carry), part(full * window, steps), length=rest)
         pieces.append(outs)
     if len(pieces) == 1:
         return carry, first

@@ -10,6 +10,10 @@
   ("jax", "tensorflow")``): they ask the backend's capabilities (``xp.capabilities.autodiff``,
   ``.compilation``, ``.compiled_loops``, ``.float64``) or the core's functions
   (``ivy.compiled_scan``, ``ivy.enable_float64``, ``ivy.dtype_name``).
+- Applied packages call ``ivy.<name>(..., f=...)`` only where ``ivy.<name>`` takes ``f`` while a
+  framework is set globally too (the core's compositions, ``get_framework``): a backend's
+  primitive bound into ``ivy`` (``ivy.scan``, ``ivy.seed``) has no ``f``, so such calls break
+  the library for users who set a framework; resolve ``xp`` once and call ``xp.scan(...)``.
 - Applied packages read no other object's private attributes (``env._boxes``, ``core._step``,
   ``model._forward``): only those of ``self``, ``cls``, ``super()``, and of objects of the
   module's own classes (a class of the module, a variable annotated with one, made by one, or a
@@ -309,6 +313,35 @@ def test_applied_packages_read_no_private_attributes_of_others(package):
     assert not found, "make the contract public (or read it through self):\n" + "\n".join(found)
 
 
+def ivy_calls_with_f(tree: ast.AST) -> list[tuple[int, str]]:
+    """``ivy.<name>(..., f=...)`` calls: (line, name)."""
+    return [
+        (node.lineno, node.func.attr)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Attribute)
+        and isinstance(node.func.value, ast.Name)
+        and node.func.value.id == "ivy"
+        and any(k.arg == "f" for k in node.keywords)
+    ]
+
+
+@pytest.mark.parametrize("package", APPLIED)
+def test_applied_packages_pass_f_only_where_a_set_framework_takes_it(package):
+    calls = _offences(package, ivy_calls_with_f)
+    with ivy.set_framework("numpy"):
+        found = [
+            c
+            for c in calls
+            if "f" not in inspect.signature(getattr(ivy, c.rsplit(" ", 1)[1])).parameters
+        ]
+    assert not found, (
+        "these calls fail while a framework is set globally (the backend's function has no f): "
+        "resolve xp = ivy.get_framework(..., f=f) once and call xp.<name>(...):\n"
+        + "\n".join(found)
+    )
+
+
 def test_the_convention_checks_find_what_they_look_for():
     """Both checks flag what they must and leave legitimate code alone."""
     flagged = ast.parse(
@@ -321,6 +354,8 @@ def test_the_convention_checks_find_what_they_look_for():
         "        pass\n"
     )
     assert [line for line, _ in framework_name_comparisons(flagged)] == [1, 2, 3, 4, 6]
+    calls = ast.parse("ivy.scan(g, c, xs, f=xp)\nxp.scan(g, c, xs)\nivy.compile_fn(g, f=xp)\n")
+    assert ivy_calls_with_f(calls) == [(1, "scan"), (3, "compile_fn")]
     fine = ast.parse(
         "if dtype == 'float32' and mode in ('train', 'eval'): pass\n"
         "ok = xp.capabilities.compiled_loops\n"

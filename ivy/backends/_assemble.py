@@ -335,19 +335,32 @@ def _core_function(name: str) -> Callable:
 
 
 def _bound(comp: Callable, ns: types.ModuleType) -> Callable:
-    """The composition ``comp`` with ``f`` bound to the namespace ``ns``."""
+    """The composition ``comp`` with ``f`` bound to the namespace ``ns``.
 
-    def bound(*args: Any, **kwargs: Any) -> Any:
+    An explicit ``f`` is accepted, so that code written with ``ivy.compile_fn(fn, f=xp)`` also
+    runs while a framework is set globally (when ``ivy.compile_fn`` is this backend's): ``f``
+    naming this backend costs one comparison, and ``f`` naming another one runs that backend's
+    composition, as ``f`` chooses the framework everywhere else.
+    """
+
+    name = comp.__name__
+
+    def elsewhere(f: Any) -> Any:
+        other = _fh.get_framework(f=f)
+        return None if other is ns else getattr(other, name)
+
+    def bound(*args: Any, f: Any = None, **kwargs: Any) -> Any:
+        if f is not None and f is not ns:
+            other = elsewhere(f)
+            if other is not None:
+                return other(*args, **kwargs)
         return comp(*args, f=ns, **kwargs)
 
     # The same code with the composition's globals, where typing.get_type_hints finds the names
     # its annotations use.
-    bound = types.FunctionType(bound.__code__, comp.__globals__, None, None, bound.__closure__)
+    bound = types.FunctionType(bound.__code__, comp.__globals__, None, (), bound.__closure__)
+    bound.__kwdefaults__ = {"f": None}
     functools.update_wrapper(bound, comp)
-    bound.__annotations__ = {k: v for k, v in comp.__annotations__.items() if k != "f"}
-    sig = inspect.signature(comp)
-    bound.__signature__ = sig.replace(
-        parameters=[p for p in sig.parameters.values() if p.name != "f"]
-    )
+    bound.__signature__ = inspect.signature(comp)  # f included: it is accepted
     del bound.__wrapped__
     return _fh.run_as_is_in_autograph(bound)

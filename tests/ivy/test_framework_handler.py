@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import inspect
+
 import types
 
 import numpy as np
@@ -249,6 +251,23 @@ def test_f_wins_over_the_global_framework(backend, xp):
         assert ivy.get_framework(f=backend) is xp
         out = ivy.core.zeros(2, f=backend)
         assert ivy.framework_of_type(type(out)) == backend
+
+
+def test_compositions_take_f_while_a_framework_is_set(backend, xp):
+    """Under a global framework ``ivy.compiled_scan`` is that backend's composition; an
+    explicit ``f`` still chooses the backend (the same one, or another one)."""
+
+    def step(c, x):
+        return c + x, c
+
+    xs = np.arange(3.0, dtype=np.float32)
+    for outer in ("numpy", backend):
+        with ivy.set_framework(outer):
+            run = ivy.compiled_scan(step, f=backend)
+            carry, ys = run(xp.asarray(np.float32(0.0)), xp.asarray(xs))
+            assert ivy.framework_of_type(type(carry)) == backend
+            np.testing.assert_allclose(ivy.to_numpy(ys), [0.0, 0.0, 1.0])
+            assert "f" in inspect.signature(ivy.compiled_scan).parameters
 
 
 # ---------------------------------------------------------------------------------------------

@@ -181,3 +181,22 @@ def test_optimise_policy_curriculum_stages(request):
         callback=lambda i, v: i == 2,
     )  # fmt: skip
     assert stopped.returns.shape == (3,)
+
+
+def test_a_globally_set_framework_gives_the_same_numbers(diff_backend):
+    """``ivy.set_framework`` binds the backend's functions into ``ivy``: the rollouts and the
+    optimisations (which pass ``f`` on) run under it and give what ``f=`` gives."""
+    env = ivy_gym.CartPoleSwingUp()
+    options = dict(batch_shape=(2,), window=5, dtype="float64", seed=3)
+
+    def run():
+        ivy.seed(0)
+        mlp = ivy.MLP(5, (8,), 1, output_activation="tanh", f=diff_backend)
+        policy = ivy_gym.optimise_policy(env, mlp, 10, 2, batch_size=4, seed=2, f=diff_backend)
+        actions = ivy_gym.optimise_actions(env, 10, 3, f=diff_backend, **options)
+        roll = ivy_gym.rollout(env, actions.initial_state, actions.actions, f=diff_backend)
+        return [*policy.returns, *actions.returns, *numpy_of(roll.rewards).ravel()]
+
+    expected = run()
+    with ivy.set_framework(diff_backend):
+        np.testing.assert_allclose(run(), expected, rtol=1e-6)

@@ -447,3 +447,11 @@ def test_ray_workers_match_sync_workers():
     )
     assert done.returncode == 0, done.stderr[-3000:]
     assert "ray workers: ok" in done.stdout
+
+
+def test_a_globally_set_framework_gives_the_same_log(tmp_path):
+    """Agents compile with ``ivy.compile_fn(fn, f=xp)``: under ``ivy.set_framework`` that is
+    the backend's composition, which takes the same ``f``; the run's log does not change."""
+    expected = _rows(_run(tmp_path / "plain", 64, f="jax", compile=True))
+    with ivy.set_framework("jax"):
+        assert _rows(_run(tmp_path / "set", 64, f="jax", compile=True)) == expected
