@@ -5,8 +5,12 @@ Each environment step of every worker is one row of arrays ``[capacity * workers
 (row ``r``, worker ``w`` at index ``r * workers + w``): a ring over the last ``capacity`` steps of
 each worker. Steps are staged on the host (in preallocated arrays, written in place) and written
 to the backend's arrays at :meth:`TransitionReplay.flush` (before each update), so that acting
-costs no device write; where the backend's arrays are mutable the flush writes only the new
-rows, in place.
+costs no device write. A flush costs what the new rows cost, whatever the replay's size: where
+the backend's arrays are mutable (torch, numpy) it assigns them in place; elsewhere (jax,
+tensorflow) a pure writer, :func:`put_ring_rows`, replaces those rows with ``ivy.put_rows``,
+which a compiler that reuses the donated buffers (``ivy.compile_fn(..., donate_argnums=0)`` on
+jax) writes in place. (:func:`write_rows`, the earlier writer, makes every row anew: a pass over
+the whole replay per flush; it is kept as the reference that the new writer equals.)
 
 A batch is drawn as windows of ``return_steps`` consecutive rows of one worker
 (:meth:`TransitionReplay.windows`, from the agent's numpy generator, so every backend reads the
@@ -35,7 +39,7 @@ import numpy as np
 import ivy
 from ivy.typing import Array, Framework
 
-__all__ = ["TransitionReplay", "n_step_batch", "write_rows"]
+__all__ = ["TransitionReplay", "n_step_batch", "put_ring_rows", "write_rows"]
 
 _FLAGS = ("resets", "terminations")
 
@@ -143,9 +147,18 @@ class TransitionReplay:
         it wraps around), which costs what the new rows cost, whatever the replay's size.
         Elsewhere (jax, tensorflow: immutable arrays) the steps go in pieces of ``chunk_steps``
         steps (padded; default: all staged steps), each written by one pure function of the
-        arrays, the piece and the ring position (:func:`write_rows`), so that a compiled writer
-        (``compile``, e.g. ``ivy.compile_fn``) compiles once, whatever the position; its result
-        is a new array, a pass over the whole replay that the compiler fuses into one.
+        arrays, the piece and the ring position (:func:`put_ring_rows`), so that a compiled
+        writer (``compile``, e.g. ``ivy.compile_fn``) compiles once, whatever the position. It
+        replaces only the piece's rows (``ivy.put_rows``; the padding rows keep their values),
+        work of the piece's size; its result is new arrays, which a compiler that reuses the
+        donated old ones (``compile=lambda fn: ivy.compile_fn(fn, donate_argnums=0)``, on jax)
+        writes in place, and which tensorflow (no donation) makes by copying the old ones: a
+        copy, which costs less than the pass over every row that the writer before,
+        :func:`write_rows`, made (``benchmarks/replay_flush.py`` measures both).
+
+        With donation the arrays that :attr:`arrays` held before the flush are deleted by it:
+        read ``replay.arrays`` anew after each flush, and keep no reference to its arrays across
+        one (:meth:`state_dict` copies them to numpy).
 
         Args:
             xp: the backend namespace.
@@ -153,7 +166,9 @@ class TransitionReplay:
             dtypes: numpy dtypes to store each array in (default: the staged dtypes), e.g. the
                 agent's float dtype and int32 indices.
             chunk_steps: steps per written piece (immutable arrays).
-            compile: compiles the writer (immutable arrays; default: run as it is).
+            compile: compiles the writer (immutable arrays; default: run as it is), e.g.
+                ``lambda fn: ivy.compile_fn(fn, donate_argnums=0)`` (its first argument is the
+                dict of arrays).
         """
         if not self._count:
             return
@@ -190,7 +205,7 @@ class TransitionReplay:
 
     def _write_pieces(self, xp, staged, count, dtypes, device, chunk_steps, compile) -> None:
         if self._writer is None:
-            self._writer = write_rows if compile is None else compile(write_rows)
+            self._writer = put_ring_rows if compile is None else compile(put_ring_rows)
         size = min(chunk_steps or count, self.capacity)
         for begin in range(0, count, size):
             piece = min(size, count - begin)
@@ -283,12 +298,61 @@ class TransitionReplay:
                 self._staging[key][: self._count] = value
 
 
+def put_ring_rows(
+    arrays: dict[str, Array], chunk: dict[str, Array], start: Array, length: Array
+) -> dict[str, Array]:
+    """``arrays`` with the rows ``start, start + 1, ..., start + length - 1`` (wrapping around
+    the end) replaced by the first ``length`` rows of ``chunk``, by work of ``chunk``'s size
+    (pure; it compiles once for a chunk's shape: the position and the length are arrays).
+
+    The chunk's ``size`` rows go to rows ``(start + arange(size)) % total`` with
+    ``ivy.put_rows``; those beyond ``length`` (padding) write back the values the arrays hold
+    there, so the result equals :func:`write_rows`'s. Compiled with the arrays donated
+    (``ivy.compile_fn(put_ring_rows, donate_argnums=0)``), jax writes the rows in place.
+
+    Args:
+        arrays: arrays of ``total`` rows each, by name.
+        chunk: arrays of ``size <= total`` rows each, by the same names.
+        start: integer 0-d array, the first row written (taken modulo ``total``).
+        length: integer 0-d array, ``0 <= length <= size``: the rows of ``chunk`` written.
+
+    Returns:
+        New arrays by name, of the same shapes and dtypes.
+
+    Example:
+        >>> put_ring_rows({"r": jnp.zeros(4)}, {"r": jnp.ones(2)}, jnp.int32(3), jnp.int32(2))
+        {'r': Array([1., 0., 0., 1.], dtype=float32)}
+    """
+    first = next(iter(arrays.values()))
+    xp = ivy.get_framework(first)
+    total = int(first.shape[0])
+    size = int(next(iter(chunk.values())).shape[0])
+    if size > total:
+        raise ValueError(
+            f"put_ring_rows: a chunk of {size} rows does not fit in arrays of {total} rows"
+        )
+    steps = xp.arange(size, dtype=start.dtype, device=xp.dev(first))
+    rows = xp.remainder(start + steps, total)  # distinct: size <= total
+    inside = steps < length
+    out = {}
+    for key, buffer in arrays.items():
+        mask = xp.reshape(inside, (size,) + (1,) * (len(buffer.shape) - 1))
+        rows_now = xp.take(buffer, rows, axis=0)
+        out[key] = xp.put_rows(buffer, rows, xp.where(mask, chunk[key], rows_now))
+    return out
+
+
 def write_rows(
     arrays: dict[str, Array], chunk: dict[str, Array], start: Array, length: Array
 ) -> dict[str, Array]:
     """``arrays`` with the entries ``start, start + 1, ..., start + length - 1`` (wrapping
     around the end) replaced by the first ``length`` entries of ``chunk`` (pure; it compiles
     once for a chunk's shape: the position and the length are arrays).
+
+    Every row of the result is computed anew (a ``where`` over all rows): a pass over the whole
+    replay per call, however few rows change. :meth:`TransitionReplay.flush` writes with
+    :func:`put_ring_rows` instead, whose result is the same; this one is kept as its reference
+    and for ``benchmarks/replay_flush.py``.
 
     Example:
         >>> write_rows({"r": jnp.zeros(4)}, {"r": jnp.ones(2)}, jnp.int32(3), jnp.int32(2))

@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from ivy.errors import IndexOutOfBoundsError
+from ivy.errors import DtypeError, IndexOutOfBoundsError, ShapeError
 
 
 def problem(indices: np.ndarray, size: int, *, negative: bool = True) -> str | None:
@@ -59,3 +59,40 @@ def check_bounds_per_column(
             raise IndexOutOfBoundsError(
                 f"column {k}: {found}", function=function, argument=argument, backend=backend
             )
+
+
+def check_rows(
+    x_shape: Sequence[Any] | None,
+    indices_shape: Sequence[Any] | None,
+    updates_shape: Sequence[Any] | None,
+    *,
+    integer: bool,
+    backend: str,
+    function: str = "put_rows",
+) -> None:
+    """Raise unless ``indices`` is a 1-D integer array ``[k]`` of rows of ``x`` (at least one
+    axis) and ``updates`` is ``[k, *x.shape[1:]]``. What is not known yet in a graph being traced
+    (a size None, or a shape None: its rank) passes. Shapes are known inside ``jax.jit``, so
+    this holds there."""
+
+    def fail(argument: str, message: str, kind: type = ShapeError) -> None:
+        raise kind(message, function=function, argument=argument, backend=backend)
+
+    if not integer:
+        fail("indices", "indices must be an integer array (row numbers).", DtypeError)
+    if x_shape is not None and len(x_shape) == 0:
+        fail("x", "x must have at least one axis (its rows), got a 0-d array.")
+    if indices_shape is not None and len(indices_shape) != 1:
+        fail("indices", f"indices must be 1-D (row numbers), got shape {tuple(indices_shape)}.")
+    if x_shape is None or indices_shape is None or updates_shape is None:
+        return
+    expected = (indices_shape[0], *x_shape[1:])
+    same = len(updates_shape) == len(expected) and all(
+        a is None or b is None or a == b for a, b in zip(updates_shape, expected)
+    )
+    if not same:
+        fail(
+            "updates",
+            f"updates must have shape {tuple(expected)} (one row of x's shape {tuple(x_shape)} "
+            f"per index), got {tuple(updates_shape)}.",
+        )

@@ -382,6 +382,8 @@ def _index_bounds(name: str, bound: dict) -> tuple[str, Any, Callable[[Any], str
         x, axis = bound["x"], bound.get("axis", -1 if name == "take_along_axis" else None)
         size = int(np.prod(x.shape)) if axis is None else x.shape[axis]
         return "indices", bound["indices"], within(size)
+    if name == "put_rows" and len(bound["x"].shape):
+        return "indices", bound["indices"], within(bound["x"].shape[0])
     if name == "gather_flat":
         return "indices", bound["indices"], within(int(np.prod(bound["params"].shape)))
     if name == "gather_nd":

@@ -1,10 +1,16 @@
 """Compilation: ``ivy.compile_fn(fn)`` compiles with the backend's own compiler.
 
-- jax: ``jax.jit``, with ``static_argnums`` / ``static_argnames``; the backend's PRNG key is
-  threaded through as an extra input, so random draws differ from call to call;
+- jax: ``jax.jit``, with ``static_argnums`` / ``static_argnames`` and ``donate_argnums``; the
+  backend's PRNG key is threaded through as an extra input, so random draws differ from call to
+  call;
 - tensorflow: ``tf.function`` (Python arguments are static by nature);
 - torch: ``torch.compile``; where it cannot run, the function runs eagerly, with a warning;
 - numpy: no compiler; the function is returned unchanged, with a warning.
+
+Donation (``donate_argnums``) lets the compiled function reuse the buffers of those arguments
+for its results (an array updated by ``ivy.put_rows`` is then written in place). Only jax's
+compiler does it; the donated arrays are deleted by the call there, so the caller must hold no
+other reference to them. Elsewhere it is accepted and changes nothing: the arguments stay valid.
 
 Compiled results equal eager results. With no ``f``, the framework is resolved from the arguments
 of the first call (or the global framework at that time) and kept for later calls.
@@ -31,6 +37,7 @@ def compile_native(
     *,
     static_argnums: int | Sequence[int] | None = None,
     static_argnames: str | Sequence[str] | None = None,
+    donate_argnums: int | Sequence[int] | None = None,
     f: Framework = None,
 ) -> Callable:
     """Compile ``fn`` now with the backend of ``f`` (or the global framework); prefer
@@ -48,6 +55,7 @@ def compile_fn(
     *,
     static_argnums: int | Sequence[int] | None = None,
     static_argnames: str | Sequence[str] | None = None,
+    donate_argnums: int | Sequence[int] | None = None,
     f: Framework = None,
 ) -> Callable:
     """Compile ``fn`` with the framework's compiler (``jax.jit``, ``tf.function``,
@@ -58,6 +66,11 @@ def compile_fn(
         static_argnums: positions of arguments that are compile-time constants (jax; tf and
             torch treat Python values as static by themselves).
         static_argnames: names of such arguments.
+        donate_argnums: positions of arguments (arrays, or nests of arrays) whose buffers the
+            compiled function may reuse for its results (jax: ``jax.jit``'s ``donate_argnums``;
+            the arrays passed there are deleted by the call, so pass only arrays nothing else
+            refers to, and use the results instead). tensorflow, torch and numpy have no
+            donation: accepted, with no effect.
         f: framework name or namespace; by default resolved from the first call's arguments.
 
     Returns:
@@ -66,19 +79,25 @@ def compile_fn(
     Example:
         >>> step = ivy.compile_fn(train_step)
         >>> v = step(v, batch)  # traced and compiled on this first call, for v's framework
+        >>> write = ivy.compile_fn(lambda x, i, u: ivy.put_rows(x, i, u), donate_argnums=0)
+        >>> x = write(x, indices, rows)  # on jax, in place: the x passed in is deleted
     """
+    options = dict(
+        static_argnums=static_argnums,
+        static_argnames=static_argnames,
+        donate_argnums=donate_argnums,
+    )
     if f is not None:
-        xp = _fh.get_framework(f=f)
-        return xp.compile_native(fn, static_argnums=static_argnums, static_argnames=static_argnames)
-    return _CompiledOnFirstCall(fn, static_argnums, static_argnames)
+        return _fh.get_framework(f=f).compile_native(fn, **options)
+    return _CompiledOnFirstCall(fn, options)
 
 
 class _CompiledOnFirstCall:
     """``fn`` compiled for the framework of the arguments of its first call."""
 
-    def __init__(self, fn, static_argnums, static_argnames):
+    def __init__(self, fn, options):
         self._fn = fn
-        self._static = dict(static_argnums=static_argnums, static_argnames=static_argnames)
+        self._options = options  # of compile_native
         self._compiled = None
         self._lock = threading.Lock()
         functools.update_wrapper(self, fn)
@@ -89,7 +108,7 @@ class _CompiledOnFirstCall:
             with self._lock:
                 if self._compiled is None:
                     xp = _fh.get_framework(args, kwargs)
-                    self._compiled = xp.compile_native(self._fn, **self._static)
+                    self._compiled = xp.compile_native(self._fn, **self._options)
                 compiled = self._compiled
         return compiled(*args, **kwargs)
 

@@ -1,5 +1,5 @@
 """Indexing: gathering and scattering, along an axis, by index tuples (``_nd``) or into flattened
-arrays (``_flat``), and the coordinates of true elements."""
+arrays (``_flat``), replacing rows (``put_rows``), and the coordinates of true elements."""
 
 from __future__ import annotations
 
@@ -17,6 +17,7 @@ __all__ = [
     "one_hot",
     "gather_flat",
     "scatter_flat",
+    "put_rows",
     "indices_where",
 ]
 
@@ -122,6 +123,40 @@ def scatter_flat(
 
     Example: ``ivy.scatter_flat(np.array([0, 2, 0]), np.array([1., 2., 3.]), 4)`` ->
     ``[4., 0., 2., 0.]``.
+    """
+
+
+@dispatch
+def put_rows(x: Array, indices: Array, updates: Array, /, *, f: Framework = None) -> Array:
+    """``x`` with its rows ``indices`` (along axis 0) replaced by ``updates``: the functional
+    form of ``x[indices] = updates``, the inverse of ``take(x, indices, axis=0)``.
+
+    The work is that of the rows written, not of ``x``: jax ``x.at[indices].set``, tensorflow
+    ``tensor_scatter_nd_update``, torch ``index_copy`` (out of place), numpy a copy then the
+    assignment. The result is a new array and ``x`` is left as it was, so eager calls copy ``x``
+    (a copy, no arithmetic); a compiler that may reuse ``x``'s buffer (``ivy.compile_fn(fn,
+    donate_argnums=...)`` on jax) writes the rows in place. Differentiable where the framework
+    is: gradients flow to ``updates`` and to the rows of ``x`` that are kept.
+
+    Args:
+        x: array of at least one axis, ``[n, ...]``.
+        indices: 1-D integer array ``[k]`` of rows of ``x``; negative ones count from the end.
+            Where a row appears twice, which of its updates is written is unspecified.
+        updates: ``[k, ...]``, the rows to write (``x.shape[1:]`` after the first axis),
+            converted to ``x``'s dtype as an assignment would.
+
+    Returns:
+        An array of ``x``'s shape and dtype.
+
+    Raises:
+        ShapeError: ``indices`` is not 1-D, ``x`` has no axis, or ``updates`` is not ``[k,
+            *x.shape[1:]]``.
+        DtypeError: ``indices`` is not an integer array.
+        IndexOutOfBoundsError: an index out of range (in eager calls; inside ``jax.jit`` such
+            rows are dropped, as jax's scatters do).
+
+    Example: ``ivy.put_rows(np.zeros((3, 2)), np.array([2, 0]), np.array([[1., 1.], [2.,
+    2.]]))`` -> ``[[2., 2.], [0., 0.], [1., 1.]]``.
     """
 
 

@@ -259,12 +259,14 @@ class Agent:
     def _build(self) -> None:
         """Create models, optimisers, replays (after :meth:`initialize` set the spaces)."""
 
-    def _compile(self, fn: Any, name: str | None = None) -> Any:
+    def _compile(self, fn: Any, name: str | None = None, *, donate_argnums: Any = None) -> Any:
         """``fn`` compiled with ``ivy.compile_fn`` for the agent's framework (or as it is, when
-        the agent runs eagerly or the framework has no compiler), counted in :attr:`compiles`."""
+        the agent runs eagerly or the framework has no compiler), counted in :attr:`compiles`;
+        ``donate_argnums`` as for ``ivy.compile_fn`` (jax reuses those arguments' buffers)."""
         if not self.compiled or not self.xp.capabilities.compilation:
             return fn
-        return self._counted(ivy.compile_fn(fn, f=self.xp), name or fn.__name__)
+        compiled = ivy.compile_fn(fn, f=self.xp, donate_argnums=donate_argnums)
+        return self._counted(compiled, name or fn.__name__)
 
     def _counted(self, compiled: Any, name: str) -> Any:
         """``compiled`` (a compiled callable, e.g. from ``ivy.compiled_scan``) counting the

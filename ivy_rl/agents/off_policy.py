@@ -317,7 +317,8 @@ class OffPolicyAgent(Agent):
             device=self.device,
             dtypes={"actions": action_dtype, "observations": self.np_dtype},
             chunk_steps=-(-c["update_every"] // self.replay.workers),
-            compile=lambda fn: self._compile(fn, "replay_write"),
+            # the replay's old arrays are donated: written in place on jax, never read again
+            compile=lambda fn: self._compile(fn, "replay_write", donate_argnums=0),
         )
         xs = self._placed(self._draw(c["batch_iterations"]))
         carry = {"v": self.v, "targets": self.targets, "states": self.optimizer_states}

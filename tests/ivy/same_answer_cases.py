@@ -544,6 +544,18 @@ def _indexing() -> None:
         C(a([1, 1], "int64"), a([4, 5], "int64"), 3, reduction="max"),
         C(a([3], "int64"), a([1.0], "float32"), 3, _raises=IndexError),
     ]
+    CASES["put_rows"] = [
+        C(x, a([2, -3], "int64"), small("float32", (2, 4), seed=1)),  # negative from the end
+        C(small("int8", (4,)), a([3, 0], "int32"), a([7, -7], "int8")),
+        C(small("float64", (2, 2, 3)), a([1], "int64"), small("float64", (1, 2, 3), seed=2)),
+        C(x, a([], "int64"), small("float32", (0, 4))),
+        C(x, a([1], "int64"), small("float32", (1, 4)).astype("float64")),  # to x's dtype
+        C(x, a([3], "int64"), small("float32", (1, 4)), _raises=IndexError),
+        C(x, a([-4], "int64"), small("float32", (1, 4)), _raises=IndexError),
+        C(x, a([0, 1], "int64"), small("float32", (1, 4)), _raises=ValueError),  # rows differ
+        C(x, a([[0]], "int64"), small("float32", (1, 4)), _raises=ValueError),  # not 1-D
+        C(x, a([0.0], "float32"), small("float32", (1, 4)), _raises=TypeError),  # not integers
+    ]
     CASES["one_hot"] = [
         C(a([0, 2, 1], "int64"), 3),
         C(a([[1], [0]], "int32"), 2, dtype="int8"),

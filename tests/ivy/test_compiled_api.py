@@ -46,6 +46,8 @@ CALLS = {
     ],
     "selection, statistics and clipping": lambda xp, x, i: [
         xp.take_along_axis(x, xp.remainder(i, 4) - 2, axis=1),
+        xp.put_rows(x, xp.asarray([-1]), x[:1] * 2.0),
+        xp.put_rows(i, xp.asarray([1, 0]), i[::-1] + 1),
         *xp.top_k(x, 3, axis=1),
         *xp.top_k(i, 1, axis=0, largest=False),
         xp.logsumexp(x, axis=1),

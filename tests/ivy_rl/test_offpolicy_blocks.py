@@ -1,5 +1,6 @@
 """Off-policy building blocks: the transition replay's n-step transitions against a reference
-written here (resets, terminations, time limits, the ring wrapping around), the categorical
+written here (resets, terminations, time limits, the ring wrapping around), its writers (the
+rows of a piece, padded, wrapping around; compiled with the arrays donated), the categorical
 projection, critics' heads, and the explorations."""
 
 from __future__ import annotations
@@ -8,7 +9,7 @@ import numpy as np
 import pytest
 
 import ivy
-from ivy_rl.buffers import TransitionReplay, n_step_batch
+from ivy_rl.buffers import TransitionReplay, n_step_batch, put_ring_rows, write_rows
 from ivy_rl.critics import (
     BranchingQHead,
     CriticEnsemble,
@@ -175,6 +176,85 @@ def test_replay_checkpoint_round_trip_and_errors(backend, xp):
         )
     with pytest.raises(ValueError, match="return_steps"):
         TransitionReplay(10, return_steps=0)
+
+
+def _ring_reference(arrays, chunk, start, length):
+    """Row ``(start + j) % total`` takes ``chunk``'s row ``j`` for ``j < length``, one at a time."""
+    out = {k: np.array(a, copy=True) for k, a in arrays.items()}
+    for key, a in out.items():
+        for j in range(length):
+            a[(start + j) % len(a)] = chunk[key][j]
+    return out
+
+
+# (start, length, chunk rows) in arrays of 10 rows: inside, padded, wrapping around, empty,
+# the whole ring, a start beyond the end
+RING_WRITES = [(0, 3, 4), (8, 4, 4), (9, 2, 4), (5, 0, 3), (3, 10, 10), (13, 5, 6), (7, 1, 1)]
+
+
+@pytest.mark.parametrize("start, length, size", RING_WRITES)
+def test_put_ring_rows_writes_the_piece_as_write_rows_did(backend, xp, start, length, size):
+    data = np.random.default_rng(start * 10 + length)
+    arrays = {"o": data.normal(size=(10, 2)), "r": data.normal(size=10)}
+    chunk = {"o": data.normal(size=(size, 2)), "r": data.normal(size=size)}
+    expected = _ring_reference(arrays, chunk, start, length)
+
+    def inputs():
+        return (
+            {k: xp.asarray(a) for k, a in arrays.items()},
+            {k: xp.asarray(a) for k, a in chunk.items()},
+            xp.asarray(np.int32(start)),
+            xp.asarray(np.int32(length)),
+        )
+
+    new, old = put_ring_rows(*inputs()), write_rows(*inputs())
+    for key in arrays:
+        np.testing.assert_array_equal(ivy.to_numpy(new[key]), expected[key])
+        np.testing.assert_array_equal(ivy.to_numpy(old[key]), expected[key])
+    arrays_in, chunk_in, start_in, length_in = inputs()
+    too_long = {k: xp.concat([c] * 11) for k, c in chunk_in.items()}
+    with pytest.raises(ValueError, match="does not fit"):
+        put_ring_rows(arrays_in, too_long, start_in, length_in)
+
+
+def test_flush_compiled_with_the_arrays_donated_holds_what_eager_flushes_do(graph_backend):
+    """The immutable-array path in padded pieces that wrap around, its writer compiled with
+    the arrays donated, against the same flushes run eagerly and the last steps written by
+    hand; on jax the arrays held before a flush are deleted by it (nothing may keep them)."""
+    xp = getattr(ivy, graph_backend)
+    obs, nxt, rewards, actions, resets, terms = _history()
+    capacity = 5
+    compiled, eager = TransitionReplay(capacity * WORKERS), TransitionReplay(capacity * WORKERS)
+
+    def donating(fn):
+        return ivy.compile_fn(fn, donate_argnums=0)
+
+    for t in range(STEPS):
+        for replay in (compiled, eager):
+            replay.store(
+                observations=obs[t],
+                actions=actions[t],
+                rewards=rewards[t],
+                next_observations=nxt[t],
+                resets=resets[t].astype(np.float64),
+                terminations=terms[t].astype(np.float64),
+            )
+        if t in (3, 4, 11, 12):  # pieces of 2 steps, padded; the ring wraps around
+            before = dict(compiled.arrays or {})
+            compiled.flush(xp, chunk_steps=2, compile=donating)
+            eager.flush(xp, chunk_steps=2)
+            if graph_backend == "jax" and before:
+                assert all(a.is_deleted() for a in before.values())
+            for key in eager.arrays:
+                np.testing.assert_array_equal(
+                    ivy.to_numpy(compiled.arrays[key]), ivy.to_numpy(eager.arrays[key])
+                )
+    expected = np.zeros((capacity, WORKERS, OBS))
+    for t in range(STEPS - capacity, STEPS):
+        expected[t % capacity] = obs[t]
+    got = ivy.to_numpy(compiled.arrays["observations"])
+    np.testing.assert_array_equal(got, expected.reshape(capacity * WORKERS, OBS))
+    assert compiled.position == eager.position == STEPS % capacity
 
 
 def _project_reference(probs, returns, discounts, support):

@@ -15,6 +15,13 @@ warning of ``ivy.backends.jax.random``, as for any draw under a plain ``jax.jit`
 ``static_argnums`` and ``static_argnames`` refer to ``fn``'s parameters, as in ``jax.jit``; each
 completes the other through ``fn``'s signature, so a static argument may be passed by position
 or by name.
+
+``donate_argnums`` (positions of ``fn``'s parameters, as in ``jax.jit``; jax finds their names
+through the signature, so a donated argument may be passed by name too) lets XLA reuse those
+arguments' buffers for outputs of the same shape and dtype: an array updated with
+``ivy.put_rows`` or ``.at[...].set`` and returned is then written in place instead of copied.
+jax deletes the donated arrays at the call (``arr.is_deleted()``); reading one afterwards
+raises. The PRNG key is never donated.
 """
 
 from __future__ import annotations
@@ -68,7 +75,26 @@ def _committed_like(key, arguments):
     return key
 
 
-def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
+def _donated(sig, donate_argnums):
+    """jax.jit's ``donate_argnums`` for the traced function (whose first argument is the key):
+    ``fn``'s positions shifted by one, negative ones counted from the end of ``fn``'s
+    positional parameters."""
+    nums = (donate_argnums,) if isinstance(donate_argnums, int) else (donate_argnums or ())
+    nums = [operator.index(i) for i in nums]
+    if any(i < 0 for i in nums):
+        params = [] if sig is None else list(sig.parameters.values())
+        if sig is not None and not any(p.kind is p.VAR_POSITIONAL for p in params):
+            count = sum(p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD) for p in params)
+            nums = [i + count if i < 0 else i for i in nums]
+        if any(i < 0 for i in nums):
+            raise ValueError(
+                f"compile_fn: donate_argnums {donate_argnums!r} counts back past this "
+                f"function's positional parameters (or its signature has none to count)."
+            )
+    return tuple(i + 1 for i in nums)
+
+
+def compile_native(fn, /, *, static_argnums=None, static_argnames=None, donate_argnums=None):
     state = _random._state
 
     def with_key(key_data, /, *args, **kwargs):
@@ -89,7 +115,8 @@ def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
         key = inspect.Parameter("_ivy_prng_key", inspect.Parameter.POSITIONAL_ONLY)
         with_key.__signature__ = sig.replace(parameters=[key, *sig.parameters.values()])
     nums, names = _static_args(sig, static_argnums, static_argnames)
-    jitted = jax.jit(with_key, static_argnums=nums, static_argnames=names)
+    donated = _donated(sig, donate_argnums)
+    jitted = jax.jit(with_key, static_argnums=nums, static_argnames=names, donate_argnums=donated)
 
     @functools.wraps(fn)
     def compiled(*args, **kwargs):

@@ -4,7 +4,7 @@ Out-of-bounds indices raise :class:`ivy.errors.IndexOutOfBoundsError` in eager c
 every backend (``ivy/backends/_index_checks.py``). Inside ``jax.jit`` indices have no values to
 check, and jax's own behaviour applies: ``take``, ``take_along_axis``, ``gather_nd`` and
 ``gather_flat`` return a fill value there (NaN for floats, the smallest integer for ints; jax's
-``mode='fill'``), ``scatter_nd`` and ``scatter_flat`` drop those updates, and ``one_hot`` gives a
+``mode='fill'``), ``scatter_nd``, ``scatter_flat`` and ``put_rows`` drop those updates, and ``one_hot`` gives a
 row of zeros. ``indices_where`` has a result shape that depends on the values, so it cannot run
 under ``jax.jit``.
 """
@@ -14,7 +14,7 @@ from __future__ import annotations
 import jax
 import jax.numpy as jnp
 
-from ivy.backends._index_checks import check_bounds, check_bounds_per_column
+from ivy.backends._index_checks import check_bounds, check_bounds_per_column, check_rows
 from ivy.backends.jax._helpers import native_dtype
 
 indices_where = jnp.argwhere
@@ -83,3 +83,15 @@ def take_along_axis(x, indices, /, *, axis=-1):
     if _eager(indices):
         check_bounds(indices, x.shape[axis], function="take_along_axis", backend="jax")
     return jnp.take_along_axis(x, indices, axis=axis)
+
+
+def put_rows(x, indices, updates, /):
+    """``x.at[indices].set(updates)``: a scatter of the rows, which XLA writes in place where
+    ``x``'s buffer may be reused (donated to a jitted function)."""
+    x, indices = jnp.asarray(x), jnp.asarray(indices)
+    updates = jnp.asarray(updates)
+    integer = jnp.issubdtype(indices.dtype, jnp.integer)
+    check_rows(x.shape, indices.shape, updates.shape, integer=integer, backend="jax")
+    if _eager(indices):
+        check_bounds(indices, x.shape[0], function="put_rows", backend="jax")
+    return x.at[indices].set(updates.astype(x.dtype))

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ivy.backends._index_checks import check_bounds
+from ivy.backends._index_checks import check_bounds, check_rows
 from ivy.backends.numpy._helpers import native_dtype
 
 gather_flat = np.take  # (params, indices): flattened, any index shape, negative from the end
@@ -69,3 +69,14 @@ def scatter_flat(indices, updates, /, size, *, reduction="sum"):
 
 def take_along_axis(x, indices, /, *, axis=-1):
     return np.take_along_axis(np.asarray(x), np.asarray(indices), axis=axis)
+
+
+def put_rows(x, indices, updates, /):
+    """A copy of ``x``, then the assignment ``out[indices] = updates``."""
+    x, indices, updates = np.asarray(x), np.asarray(indices), np.asarray(updates)
+    integer = indices.dtype.kind in "iu"
+    check_rows(x.shape, indices.shape, updates.shape, integer=integer, backend="numpy")
+    check_bounds(indices, x.shape[0], function="put_rows", backend="numpy")
+    out = x.copy()
+    out[indices] = updates
+    return out

@@ -8,6 +8,9 @@ Static arguments: ``tf.function`` treats every non-tensor argument (Python numbe
 tuples of them) as static and retraces when one changes, so ``static_argnums`` and
 ``static_argnames`` are accepted for a uniform signature and need nothing more.
 
+Donation: ``tf.function`` has none; ``donate_argnums`` is accepted for a uniform signature and
+has no effect (the arguments stay valid, and an updated tensor is a new one).
+
 Randomness: the backend's ``tf.random.Generator`` keeps its state in a ``tf.Variable`` that the
 graph reads and advances on every call, so draws differ from call to call and ``ivy.seed``
 (which resets that same variable) reproduces them.
@@ -59,7 +62,7 @@ _MAX_FAST_TRACES = 64  # beyond this many argument signatures, tf.function's own
 _UNCHECKED, _REFUSED = object(), object()
 
 
-def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
+def compile_native(fn, /, *, static_argnums=None, static_argnames=None, donate_argnums=None):
     function = tf.function(fn, autograph=False)
     if not _FAST_PATH:
         return function

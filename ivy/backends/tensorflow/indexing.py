@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import tensorflow as tf
 
-from ivy.backends._index_checks import check_bounds, check_bounds_per_column
+from ivy.backends._index_checks import check_bounds, check_bounds_per_column, check_rows
 from ivy.backends.tensorflow._helpers import native_dtype, tensor
 
 
@@ -90,3 +90,24 @@ def indices_where(x, /):
 
 def take_along_axis(x, indices, /, *, axis=-1):
     return tf.experimental.numpy.take_along_axis(tensor(x), tf.convert_to_tensor(indices), axis)
+
+
+def put_rows(x, indices, updates, /):
+    """``tf.tensor_scatter_nd_update`` of the rows (differentiable in ``x`` and ``updates``),
+    with negative indices counted from the end (tf refuses them)."""
+    x, indices = tensor(x), tf.convert_to_tensor(indices)
+    updates = tensor(updates)
+    check_rows(
+        *(None if t.shape.rank is None else t.shape.as_list() for t in (x, indices, updates)),
+        integer=indices.dtype.is_integer,
+        backend="tensorflow",
+    )
+    if tf.executing_eagerly():
+        check_bounds(indices.numpy(), x.shape[0], function="put_rows", backend="tensorflow")
+    if indices.dtype not in (tf.int32, tf.int64):
+        indices = tf.cast(indices, tf.int64)
+    size = tf.shape(x, out_type=indices.dtype)[0]
+    indices = tf.where(indices < 0, indices + size, indices)
+    if updates.dtype != x.dtype:
+        updates = tf.cast(updates, x.dtype)
+    return tf.tensor_scatter_nd_update(x, indices[:, None], updates)

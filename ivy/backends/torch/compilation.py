@@ -4,6 +4,9 @@ Static arguments: dynamo guards on every non-tensor argument and recompiles when
 Python values are always static; ``static_argnums`` and ``static_argnames`` are accepted for a
 uniform signature and need nothing more.
 
+Donation: ``torch.compile`` has none (torch writes in place by itself, where code asks for it);
+``donate_argnums`` is accepted for a uniform signature and has no effect.
+
 Randomness: inductor draws compiled random numbers from a seed it takes from torch's global
 generator on every call, so draws differ from call to call and ``ivy.seed`` (``torch
 .manual_seed``) reproduces them (the compiled numbers differ from eager ones for the same seed).
@@ -43,7 +46,7 @@ def _warn_fallback(reason: str) -> None:
     )
 
 
-def compile_native(fn, /, *, static_argnums=None, static_argnames=None):
+def compile_native(fn, /, *, static_argnums=None, static_argnames=None, donate_argnums=None):
     if not torch._dynamo.is_dynamo_supported():
         _warn_fallback("TorchDynamo does not support this Python or platform")
         return fn

@@ -7,7 +7,7 @@ import math
 import torch
 
 from ivy._args.axes import normalize_axis
-from ivy.backends._index_checks import check_bounds
+from ivy.backends._index_checks import check_bounds, check_rows
 from ivy.backends.torch._helpers import native_dtype
 from ivy.backends.torch._unsigned import SIGNED_OF, WIDE_UNSIGNED, from_order_key, order_key
 
@@ -117,3 +117,23 @@ def take_along_axis(x, indices, /, *, axis=-1):
     indices = torch.where(indices < 0, indices + size, indices)  # negatives from the end
     x, dtype = _signed_view(x)
     return _back(torch.take_along_dim(x, indices, dim=axis), dtype)
+
+
+def put_rows(x, indices, updates, /):
+    """Out-of-place ``index_copy`` along axis 0 (differentiable in ``x`` and ``updates``), with
+    negative indices counted from the end."""
+    indices = torch.as_tensor(indices, device=x.device)
+    updates = torch.as_tensor(updates, device=x.device)
+    integer = not indices.dtype.is_floating_point and not indices.dtype.is_complex
+    integer = integer and indices.dtype is not torch.bool
+    check_rows(x.shape, indices.shape, updates.shape, integer=integer, backend="torch")
+    size = x.shape[0]
+    if not _compiling():  # (index_copy checks bounds only on the CPU)
+        check_bounds(indices.cpu().numpy(), size, function="put_rows", backend="torch")
+    indices = indices.long()
+    indices = torch.where(indices < 0, indices + size, indices)
+    x, dtype = _signed_view(x)
+    updates = updates.to(dtype or x.dtype)
+    if dtype is not None:
+        updates = updates.view(x.dtype)
+    return _back(x.index_copy(0, indices, updates), dtype)

@@ -2,7 +2,8 @@
 
 ivy.compile_fn: compiled results equal eager results, on every backend, including a whole
 training step (loss, gradients, SGD update). torch.compile is slow to start, so torch compiles
-one function here (the training step), cached for the module and reused.
+two functions here: the training step, cached for the module and reused, and a writer of rows
+given ``donate_argnums`` (donation: jax reuses the donated buffers; elsewhere it changes nothing).
 """
 
 from __future__ import annotations
@@ -301,3 +302,59 @@ def test_jax_compiles_once_whether_or_not_arrays_are_placed(request, committed):
     assert compiled.jitted._cache_size() == 1
     assert len(set(losses)) == 3  # the noise is drawn anew on every call
     assert all(leaf.committed == committed for leaf in jax.tree_util.tree_leaves(v))
+
+
+def _write_rows(buffers, rows, values):
+    """A nest of buffers with rows replaced: what a replay's writer does."""
+    return {k: ivy.put_rows(b, rows, values[k]) for k, b in buffers.items()}
+
+
+def _write_rows_reference(buffers, rows, values):
+    out = {k: np.array(b, copy=True) for k, b in buffers.items()}
+    for k, b in out.items():
+        b[rows] = values[k]
+    return out
+
+
+BUFFERS = {"a": rng.normal(size=(6, 2)), "b": rng.normal(size=6)}
+ROWS, VALUES = np.array([4, 1]), {"a": np.ones((2, 2)), "b": np.array([7.0, 8.0])}
+
+
+def test_jax_donated_arguments_are_deleted_and_the_results_right(request):
+    """jax: the donated argument (a nest of arrays, by position or by name) is deleted by the
+    call, its buffers reused for the results; the other arguments stay valid."""
+    if "jax" not in request.config.ivy_backends:
+        pytest.skip("jax not selected")
+    expected = _write_rows_reference(BUFFERS, ROWS, VALUES)
+    for f, donate in ((None, 0), ("jax", (0,)), (None, -3)):
+        write = ivy.compile_fn(_write_rows, donate_argnums=donate, f=f)
+        for by_name in (False, True):
+            (buffers, values), rows = _on("jax", (BUFFERS, VALUES)), native(ROWS, "jax")
+            if by_name:
+                out = write(buffers=buffers, rows=rows, values=values)
+            else:
+                out = write(buffers, rows, values)
+            assert all(b.is_deleted() for b in buffers.values())
+            assert not rows.is_deleted() and not any(v.is_deleted() for v in values.values())
+            for k in expected:
+                np.testing.assert_array_equal(numpy_of(out[k]), expected[k])
+    undonated = ivy.compile_fn(_write_rows, f="jax")
+    buffers = _on("jax", BUFFERS)
+    undonated(buffers, native(ROWS, "jax"), _on("jax", VALUES))
+    assert not any(b.is_deleted() for b in buffers.values())
+
+
+def test_donation_elsewhere_is_accepted_and_changes_nothing(backend):
+    """tensorflow, torch (one torch.compile) and the backends without a compiler take
+    ``donate_argnums`` and give the eager results; the donated arrays stay valid."""
+    if backend == "jax":
+        pytest.skip("jax donates: see the test above")
+    expected = _write_rows_reference(BUFFERS, ROWS, VALUES)
+    (buffers, values), rows = _on(backend, (BUFFERS, VALUES)), native(ROWS, backend)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)  # no compiler (numpy): it runs eagerly
+        out = ivy.compile_fn(_write_rows, donate_argnums=0)(buffers, rows, values)
+    for k in expected:
+        assert is_native(out[k], backend)
+        np.testing.assert_array_equal(numpy_of(out[k]), expected[k])
+        np.testing.assert_array_equal(numpy_of(buffers[k]), BUFFERS[k])  # still valid, unchanged

@@ -6,8 +6,8 @@ cumprod, einsum, constant_pad, zero_pad, linear_resample, interp, vector_to_skew
 cosine_similarity, clip_vector_norm, clip_by_global_norm, nan_to_num, isclose, allclose and
 to_framework.
 
-take, take_along_axis, gather_nd, scatter_nd and one_hot against references written with Python
-loops.
+take, take_along_axis, gather_nd, scatter_nd, put_rows and one_hot against references written
+with Python loops.
 """
 
 from __future__ import annotations
@@ -283,6 +283,106 @@ def test_scatter_nd_unknown_reduction_raises_value_error(backend, reduction):
     for fn in api(backend, "scatter_nd"):
         with pytest.raises(ValueError):
             fn(idx, updates, (3,), reduction=reduction)
+
+
+def _put_rows_reference(x, indices, updates):
+    """``x`` with row ``indices[j]`` (negative from the end) replaced by ``updates[j]``, one row
+    at a time, in a new array."""
+    out = np.array(x, copy=True)
+    for j, i in enumerate(indices):
+        out[int(i) % x.shape[0]] = updates[j]
+    return out
+
+
+PUT_ROWS_CASES = {
+    "matrix, negative index": ((5, 3), [4, -5, 2]),
+    "vector": ((6,), [0, 5]),
+    "3-D, one row": ((4, 2, 3), [1]),
+    "every row, shuffled": ((3, 2), [2, 0, 1]),
+    "no rows": ((4, 2), []),
+}
+
+
+@pytest.mark.parametrize("dtype", [*DTYPES, "bool"])
+@pytest.mark.parametrize("case", list(PUT_ROWS_CASES.values()), ids=list(PUT_ROWS_CASES))
+def test_put_rows(backend, dtype, case):
+    shape, rows = case
+    rng = np.random.default_rng(len(rows))
+    x = _params(dtype, shape) if dtype != "bool" else rng.random(shape) > 0.5
+    indices = np.array(rows, np.int64)
+    updates = (rng.normal(size=(len(rows), *shape[1:])) * 9).astype(dtype)
+    expected = _put_rows_reference(x, indices, updates)
+    for fn in api(backend, "put_rows"):
+        for idx in (indices, indices.astype(np.int32)):
+            native_x = native(x, backend)
+            out = fn(native_x, native(idx, backend), native(updates, backend))
+            check(out, expected, backend)
+            check(native_x, x, backend)  # x itself is left as it was
+
+
+def test_put_rows_converts_updates_to_the_dtype_of_x(backend):
+    x = _params("float32", (3, 2))
+    updates = np.array([[1.5, -2.25]], np.float64)
+    expected = _put_rows_reference(x, [1], updates.astype(np.float32))
+    for fn in api(backend, "put_rows"):
+        out = fn(native(x, backend), native(np.array([1]), backend), native(updates, backend))
+        check(out, expected, backend)
+
+
+def test_put_rows_gradients(diff_backend):
+    """Gradients reach ``updates`` and the rows of ``x`` that are kept (none of the replaced
+    rows' values survive, so their gradient is zero)."""
+    indices = native(np.array([3, 0]), diff_backend)
+
+    def fn(x, updates):
+        return ivy.put_rows(x, indices, updates) ** 2
+
+    rng = np.random.default_rng(11)
+    x, updates = rng.normal(size=(4, 3)), rng.normal(size=(2, 3))
+    check_gradients(diff_backend, fn, [x, updates], n_directions=3)
+    v = {"x": native(x, diff_backend), "u": native(updates, diff_backend)}
+    _, grads = ivy.execute_with_gradients(
+        lambda v: ivy.sum(ivy.put_rows(v["x"], indices, v["u"])), v
+    )
+    kept = np.ones((4, 3))
+    kept[[3, 0]] = 0.0
+    check(grads["x"], kept, diff_backend)
+    check(grads["u"], np.ones((2, 3)), diff_backend)
+
+
+BAD_PUT_ROWS = {
+    "updates rows differ from indices": ((4, 3), [0, 1], (1, 3), ivy.ShapeError),
+    "updates row shape differs": ((4, 3), [0], (1, 2), ivy.ShapeError),
+    "2-D indices": ((4, 3), [[0], [1]], (2, 3), ivy.ShapeError),
+    "0-d x": ((), [0], (1,), ivy.ShapeError),
+    "float indices": ((4, 3), [0.0], (1, 3), ivy.DtypeError),
+    "index past the end": ((4, 3), [4], (1, 3), ivy.IndexOutOfBoundsError),
+    "negative index past the start": ((4, 3), [-5], (1, 3), ivy.IndexOutOfBoundsError),
+}
+
+
+@pytest.mark.parametrize("case", list(BAD_PUT_ROWS.values()), ids=list(BAD_PUT_ROWS))
+def test_put_rows_bad_input_raises_a_clear_error(backend, case):
+    shape, rows, updates_shape, error = case
+    x, updates = np.zeros(shape, np.float32), np.ones(updates_shape, np.float32)
+    indices = np.array(rows)
+    for fn in api(backend, "put_rows"):
+        with pytest.raises(error, match="put_rows"):
+            fn(native(x, backend), native(indices, backend), native(updates, backend))
+
+
+def test_put_rows_compiled_with_x_donated(graph_backend):
+    """Compiled, with ``x`` donated (on jax the rows are then written into ``x``'s buffer; see
+    test_compilation.py), the result is the reference's, and the shape checks hold in tracing."""
+    x = _params("float64", (6, 2))
+    indices, updates = np.array([5, 1]), np.array([[1.0, 2.0], [3.0, 4.0]])
+    write = ivy.compile_fn(lambda x, i, u: ivy.put_rows(x, i, u), donate_argnums=0)
+    for _ in range(2):  # the second call runs the compiled function traced by the first
+        i, u = native(indices, graph_backend), native(updates, graph_backend)
+        out = write(native(x, graph_backend), i, u)
+        check(out, _put_rows_reference(x, indices, updates), graph_backend)
+    with pytest.raises(ivy.ShapeError, match="updates must have shape"):
+        write(native(x, graph_backend), i, native(updates[:1], graph_backend))
 
 
 def _one_hot_reference(indices, depth, dtype):
