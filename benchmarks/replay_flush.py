@@ -6,7 +6,7 @@ stores them. Each flush writes 56 steps of 1 worker (an update every 56 steps) t
 replay's own API, ``store`` then ``flush`` with ``chunk_steps=56``, as the agents do; the stores
 are not timed, the flush is (until its arrays are ready). The writers, in one run per backend:
 
-    old                 the writer before: ``write_rows`` compiled (``ivy.compile_fn``), a
+    old                 the writer before: ``write_rows`` (below) compiled (``ivy.compile_fn``), a
                         ``where`` over every row of the replay per flush
     new                 what ``flush`` does now: jax and tensorflow ``put_ring_rows`` compiled
                         with the arrays donated (as the agents compile it), which writes the
@@ -36,7 +36,26 @@ import warnings
 import numpy as np
 
 import ivy
-from ivy_rl.buffers import TransitionReplay, write_rows
+from ivy_rl.buffers import TransitionReplay
+
+
+def write_rows(arrays, chunk, start, length):
+    """The replay's writer before ``put_ring_rows``: ``arrays`` with the entries ``start, ...,
+    start + length - 1`` (wrapping around) replaced by the first ``length`` entries of ``chunk``,
+    every row computed anew (a ``where`` over all rows), the pass per flush measured here."""
+    first = next(iter(arrays.values()))
+    xp = ivy.get_framework(first)
+    total = int(first.shape[0])
+    size = int(next(iter(chunk.values())).shape[0])
+    offsets = xp.remainder(xp.arange(total, dtype=start.dtype, device=xp.dev(first)) - start, total)
+    inside = offsets < length
+    picks = xp.clip(offsets, 0, size - 1)
+    out = {}
+    for key, buffer in arrays.items():
+        mask = xp.reshape(inside, (total,) + (1,) * (len(buffer.shape) - 1))
+        out[key] = xp.where(mask, xp.take(chunk[key], picks, axis=0), buffer)
+    return out
+
 
 SHAPES = {
     "observations": (11,),

@@ -9,8 +9,7 @@ costs no device write. A flush costs what the new rows cost, whatever the replay
 the backend's arrays are mutable (torch, numpy) it assigns them in place; elsewhere (jax,
 tensorflow) a pure writer, :func:`put_ring_rows`, replaces those rows with ``ivy.put_rows``,
 which a compiler that reuses the donated buffers (``ivy.compile_fn(..., donate_argnums=0)`` on
-jax) writes in place. (:func:`write_rows`, the earlier writer, makes every row anew: a pass over
-the whole replay per flush; it is kept as the reference that the new writer equals.)
+jax) writes in place.
 
 A batch is drawn as windows of ``return_steps`` consecutive rows of one worker
 (:meth:`TransitionReplay.windows`, from the agent's numpy generator, so every backend reads the
@@ -39,7 +38,7 @@ import numpy as np
 import ivy
 from ivy.typing import Array, Framework
 
-__all__ = ["TransitionReplay", "n_step_batch", "put_ring_rows", "write_rows"]
+__all__ = ["TransitionReplay", "n_step_batch", "put_ring_rows"]
 
 _FLAGS = ("resets", "terminations")
 
@@ -153,8 +152,8 @@ class TransitionReplay:
         work of the piece's size; its result is new arrays, which a compiler that reuses the
         donated old ones (``compile=lambda fn: ivy.compile_fn(fn, donate_argnums=0)``, on jax)
         writes in place, and which tensorflow (no donation) makes by copying the old ones: a
-        copy, which costs less than the pass over every row that the writer before,
-        :func:`write_rows`, made (``benchmarks/replay_flush.py`` measures both).
+        copy, which costs less than a pass that computes every row anew
+        (``benchmarks/replay_flush.py`` measures both).
 
         With donation the arrays that :attr:`arrays` held before the flush are deleted by it:
         read ``replay.arrays`` anew after each flush, and keep no reference to its arrays across
@@ -307,7 +306,7 @@ def put_ring_rows(
 
     The chunk's ``size`` rows go to rows ``(start + arange(size)) % total`` with
     ``ivy.put_rows``; those beyond ``length`` (padding) write back the values the arrays hold
-    there, so the result equals :func:`write_rows`'s. Compiled with the arrays donated
+    there. Compiled with the arrays donated
     (``ivy.compile_fn(put_ring_rows, donate_argnums=0)``), jax writes the rows in place.
 
     Args:
@@ -339,36 +338,6 @@ def put_ring_rows(
         mask = xp.reshape(inside, (size,) + (1,) * (len(buffer.shape) - 1))
         rows_now = xp.take(buffer, rows, axis=0)
         out[key] = xp.put_rows(buffer, rows, xp.where(mask, chunk[key], rows_now))
-    return out
-
-
-def write_rows(
-    arrays: dict[str, Array], chunk: dict[str, Array], start: Array, length: Array
-) -> dict[str, Array]:
-    """``arrays`` with the entries ``start, start + 1, ..., start + length - 1`` (wrapping
-    around the end) replaced by the first ``length`` entries of ``chunk`` (pure; it compiles
-    once for a chunk's shape: the position and the length are arrays).
-
-    Every row of the result is computed anew (a ``where`` over all rows): a pass over the whole
-    replay per call, however few rows change. :meth:`TransitionReplay.flush` writes with
-    :func:`put_ring_rows` instead, whose result is the same; this one is kept as its reference
-    and for ``benchmarks/replay_flush.py``.
-
-    Example:
-        >>> write_rows({"r": jnp.zeros(4)}, {"r": jnp.ones(2)}, jnp.int32(3), jnp.int32(2))
-        {'r': Array([1., 0., 0., 1.], dtype=float32)}
-    """
-    first = next(iter(arrays.values()))
-    xp = ivy.get_framework(first)
-    total = int(first.shape[0])
-    size = int(next(iter(chunk.values())).shape[0])
-    offsets = xp.remainder(xp.arange(total, dtype=start.dtype, device=xp.dev(first)) - start, total)
-    inside = offsets < length
-    picks = xp.clip(offsets, 0, size - 1)
-    out = {}
-    for key, buffer in arrays.items():
-        mask = xp.reshape(inside, (total,) + (1,) * (len(buffer.shape) - 1))
-        out[key] = xp.where(mask, xp.take(chunk[key], picks, axis=0), buffer)
     return out
 
 
