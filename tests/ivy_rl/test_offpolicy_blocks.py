@@ -44,6 +44,19 @@ def _history(seed=3):
     return obs, nxt, rewards, actions, resets, terms
 
 
+def _store(replay, history, t):
+    """Stage step ``t`` of :func:`_history`'s steps."""
+    obs, nxt, rewards, actions, resets, terms = history
+    replay.store(
+        observations=obs[t],
+        actions=actions[t],
+        rewards=rewards[t],
+        next_observations=nxt[t],
+        resets=resets[t].astype(np.float64),
+        terminations=terms[t].astype(np.float64),
+    )
+
+
 def _reference(rewards, nxt, resets, terms, t, w, n, discount, value):
     """The n-step target from absolute step ``t`` of worker ``w``, one step at a time."""
     total = 0.0
@@ -62,14 +75,7 @@ def test_n_step_transitions_match_a_reference(backend, xp, return_steps):
     capacity = 8  # 13 steps in a ring of 8: the oldest 5 are overwritten, the ring wraps
     replay = TransitionReplay(capacity * WORKERS, return_steps=return_steps)
     for t in range(STEPS):
-        replay.store(
-            observations=obs[t],
-            actions=actions[t],
-            rewards=rewards[t],
-            next_observations=nxt[t],
-            resets=resets[t].astype(np.float64),
-            terminations=terms[t].astype(np.float64),
-        )
+        _store(replay, (obs, nxt, rewards, actions, resets, terms), t)
         if t in (4, 6):  # flushed in pieces, the last one wrapping around the ring
             replay.flush(xp, device="cpu")
     replay.flush(xp, device="cpu")
@@ -114,14 +120,7 @@ def test_the_ring_holds_the_last_steps_whatever_the_flushes(backend, xp, flushes
     replay = TransitionReplay(capacity * WORKERS)
     before = None
     for t in range(STEPS):
-        replay.store(
-            observations=obs[t],
-            actions=actions[t],
-            rewards=rewards[t],
-            next_observations=nxt[t],
-            resets=resets[t].astype(np.float64),
-            terminations=terms[t].astype(np.float64),
-        )
+        _store(replay, (obs, nxt, rewards, actions, resets, terms), t)
         if t in flushes:
             replay.flush(xp, device="cpu")
             before = before or dict(replay.arrays)
@@ -144,14 +143,7 @@ def test_replay_checkpoint_round_trip_and_errors(backend, xp):
     with pytest.raises(RuntimeError, match="window"):
         replay.windows(np.random.default_rng(0), 1, 4)
     for t in range(7):
-        replay.store(
-            observations=obs[t],
-            actions=actions[t],
-            rewards=rewards[t],
-            next_observations=nxt[t],
-            resets=resets[t].astype(float),
-            terminations=terms[t].astype(float),
-        )
+        _store(replay, (obs, nxt, rewards, actions, resets, terms), t)
         if t == 4:
             replay.flush(xp)
     state = replay.state_dict()  # two steps still staged
@@ -230,14 +222,7 @@ def test_flush_compiled_with_the_arrays_donated_holds_what_eager_flushes_do(grap
 
     for t in range(STEPS):
         for replay in (compiled, eager):
-            replay.store(
-                observations=obs[t],
-                actions=actions[t],
-                rewards=rewards[t],
-                next_observations=nxt[t],
-                resets=resets[t].astype(np.float64),
-                terminations=terms[t].astype(np.float64),
-            )
+            _store(replay, (obs, nxt, rewards, actions, resets, terms), t)
         if t in (3, 4, 11, 12):  # pieces of 2 steps, padded; the ring wraps around
             before = dict(compiled.arrays or {})
             compiled.flush(xp, chunk_steps=2, compile=donating)
