@@ -355,6 +355,59 @@ class InvertedDoublePendulum(Env):
         )
         return height - velocity - effort - barrier
 
+    def swing_up_residuals(self, trajectory, hold: int = 20, *, f: Framework = None) -> Array:
+        """Least-squares residuals of a swing-up that ends held upright, for
+        :func:`ivy_gym.optimise_actions_least_squares`: per initial state, over the last
+        ``hold`` states of ``trajectory`` (the poles upright, still, the cart centred)
+
+            slider, sin(phi1), 1 - cos(phi1), sin(phi2), 1 - cos(phi2), 0.2 * qvel
+
+        with ``phi1 = hinge`` and ``phi2 = hinge + hinge2`` the poles' absolute angles from
+        upright (zero at any whole turn), then, over every state, the slider barrier's square
+        root ``sqrt(slider_barrier_weight) / (1 - b) * (relu(x - b) + relu(-x - b))`` (``b =
+        slider_barrier_start``), so that the cart stays where the dynamics are faithful.
+
+        Args:
+            trajectory: a :class:`ivy_gym.Trajectory` of ``T >= hold`` steps, ``states``
+                ``(T, *B, 6)``.
+            hold: how many of the last states to hold upright.
+            f: framework; by default that of the states.
+
+        Returns:
+            ``(*B, 8 * hold + T)``.
+
+        Example:
+            >>> env = ivy_gym.InvertedDoublePendulum(swing_up=True)
+            >>> r = ivy_gym.optimise_actions_least_squares(
+            ...     env, 60, 100, env.swing_up_residuals, batch_shape=(32,), f="jax")
+        """
+        states = trajectory.states
+        xp = ivy.get_framework(states, f=f)
+        steps = int(states.shape[0])
+        if not 1 <= int(hold) <= steps:
+            raise ValueError(
+                f"swing_up_residuals: hold must be in [1, {steps}] (the trajectory's steps), "
+                f"got {hold!r}."
+            )
+        nb = len(states.shape) - 2
+        last = states[steps - int(hold) :]
+        x, hinge, hinge2 = last[..., 0], last[..., 1], last[..., 2]
+        phi2 = hinge + hinge2
+        upright = xp.stack(
+            [x, xp.sin(hinge), 1.0 - xp.cos(hinge), xp.sin(phi2), 1.0 - xp.cos(phi2)], axis=-1
+        )
+        upright = xp.concat([upright, 0.2 * last[..., 3:]], axis=-1)  # (hold, *B, 8)
+        p = self.params
+        b = float(p.slider_barrier_start)
+        slider = states[..., 0]
+        barrier = (math.sqrt(p.slider_barrier_weight) / (1.0 - b)) * (
+            xp.relu(slider - b) + xp.relu(-slider - b)
+        )  # (T, *B)
+        batch_first = (*range(1, nb + 1), 0)
+        upright = xp.permute_dims(upright, (*range(1, nb + 1), 0, nb + 1))
+        upright = xp.reshape(upright, (*states.shape[1:-1], 8 * int(hold)))
+        return xp.concat([upright, xp.permute_dims(barrier, batch_first)], axis=-1)
+
     # ------------------------------------------------------------------------------------------
     # Rendering
     # ------------------------------------------------------------------------------------------

@@ -2,6 +2,10 @@
 
 - :func:`optimise_actions`: an open-loop action sequence (``tanh`` of logits, scaled to the
   action space) optimised with Adam for the return of one rollout (or of a batch of rollouts).
+- :func:`optimise_actions_least_squares`: an open-loop action sequence optimised for a
+  least-squares objective of its rollout (e.g. reach and hold a target state) with
+  Levenberg-Marquardt steps, each from the Jacobian of the residuals; it solves what Adam's
+  first-order steps do not where the dynamics are chaotic (the double pendulum's swing-up).
 - :func:`optimise_policy`: the parameters of a policy (e.g. ``ivy.MLP``) optimised with Adam for
   the mean return of rollouts from a fresh batch of initial states at every iteration.
 - :func:`gradient_norms`: the norm of the gradient of the return against the horizon, the
@@ -34,12 +38,13 @@ import ivy
 from ivy.errors import UnsupportedError
 from ivy.typing import Array, Dtype, Framework, Nest
 from ivy_gym.base import Env, check_state
-from ivy_gym.rollouts import discounted_return, rollout
+from ivy_gym.rollouts import Trajectory, discounted_return, rollout
 
 __all__ = [
     "OptimisationResult",
     "squash_actions",
     "optimise_actions",
+    "optimise_actions_least_squares",
     "optimise_policy",
     "mean_return",
     "gradient_norms",
@@ -62,6 +67,8 @@ class OptimisationResult:
             all of them where the compiler keeps loops (jax, tensorflow).
         actions: the optimised actions ``(T, *B, action_dim)`` (:func:`optimise_actions`).
         initial_state: the initial states of the action sequence (:func:`optimise_actions`).
+        costs: ``(*B,)`` numpy: each initial state's final least-squares objective
+            (:func:`optimise_actions_least_squares`).
     """
 
     variables: Nest
@@ -72,6 +79,7 @@ class OptimisationResult:
     first_seconds: float
     actions: Array | None = None
     initial_state: Array | None = None
+    costs: np.ndarray | None = None
 
 
 def squash_actions(logits: Array, env: Env, *, f: Framework = None) -> Array:
@@ -276,6 +284,158 @@ def optimise_actions(
     final_return = float(ivy.to_numpy(xp.mean(xp.sum(final.rewards, axis=0))))
     return OptimisationResult(
         logits, returns, norms, final_return, seconds, first, actions, initial_state
+    )
+
+
+def optimise_actions_least_squares(
+    env: Env,
+    horizon: int,
+    iterations: int,
+    residuals: Callable[[Trajectory], Array],
+    *,
+    initial_state: Array | None = None,
+    batch_shape: Sequence[int] = (),
+    logit_cost: float = 1e-4,
+    damping: float = 1.0,
+    init_scale: float = 0.5,
+    initial_logits: Array | None = None,
+    seed: int | None = None,
+    dtype: Dtype = "float32",
+    compile: bool | None = None,
+    callback: Callable[[int, Array], bool | None] | None = None,
+    device: str | None = None,
+    f: Framework = None,
+) -> OptimisationResult:
+    """Optimise an open-loop action sequence for a least-squares objective of its rollout,
+    with Levenberg-Marquardt steps (damped Gauss-Newton).
+
+    Each initial state of the batch has its own actions ``squash_actions(logits)`` and its own
+    objective ``|residuals(traj)|^2 + logit_cost |logits|^2``; every iteration computes the
+    Jacobian ``J`` of its residuals with respect to its logits through the rollout and tries
+    ``logits - (J^T J + (logit_cost + mu) I)^-1 (J^T r + logit_cost logits)``, kept where it
+    lowers that initial state's objective (then ``mu *= 0.3``), else discarded (``mu *= 4``).
+    Where a chaotic rollout (the double pendulum's swing-up) makes the return's gradient
+    useless to Adam (:func:`optimise_actions`), these steps reach and hold a target state:
+    the residuals are the distances to it over the last steps.
+
+    The cost of an iteration grows with the residuals' count ``R``: the Jacobian takes ``R``
+    backward passes (tensorflow and jax vectorise them; torch runs them in turn).
+
+    Args:
+        env: the environment.
+        horizon: number of steps ``T``.
+        iterations: number of Levenberg-Marquardt iterations.
+        residuals: ``residuals(traj) -> (*B, R)`` of the :class:`~ivy_gym.Trajectory` of the
+            rollout, each initial state's residuals depending on its own rollout alone (e.g.
+            :meth:`ivy_gym.InvertedDoublePendulum.swing_up_residuals`).
+        initial_state: ``(*B, state_dim)``; by default ``env.reset(batch_shape)``.
+        batch_shape: the batch of initial states (restarts) when ``initial_state`` is None.
+        logit_cost: weight of ``|logits|^2`` in the objective (keeps the actions off the
+            saturated ends of ``tanh``, where their gradient vanishes).
+        damping: the initial ``mu`` of every initial state.
+        init_scale: initial logits are uniform in ``[-init_scale, init_scale]``.
+        initial_logits: the initial logits ``(T, *B, action_dim)`` instead.
+        seed: ``ivy.seed`` for the backend first (None: leave the generator as it is).
+        dtype: dtype of the states and actions.
+        compile: run each iteration compiled; by default where the compiler keeps loops
+            (jax, tensorflow).
+        callback: ``callback(iteration, actions)`` after each iteration; True stops.
+        device: where to create the states and logits.
+        f: framework (torch, jax or tensorflow); by default the global framework or that of
+            ``initial_state``.
+
+    Returns:
+        An :class:`OptimisationResult`: ``actions`` ``(T, *B, action_dim)``, ``returns`` the
+        mean return of the rollouts before each iteration, ``grad_norms`` the norm of the
+        objective's gradient, ``costs`` each initial state's final objective.
+
+    Example:
+        >>> env = ivy_gym.InvertedDoublePendulum(swing_up=True)
+        >>> r = ivy_gym.optimise_actions_least_squares(
+        ...     env, 60, 100, env.swing_up_residuals, batch_shape=(32,), f="jax")
+        >>> best = int(np.argmin(r.costs))
+    """
+    if initial_state is not None and f is None:
+        f = ivy.get_framework(initial_state)
+    xp = _differentiable(f, "optimise_actions_least_squares")
+    if seed is not None:
+        xp.seed(seed)
+    if initial_state is None:
+        initial_state = env.reset(tuple(batch_shape), dtype=dtype, device=device, f=xp)
+    check_state(env, initial_state, "optimise_actions_least_squares", argument="initial_state")
+    if logit_cost < 0.0 or damping <= 0.0:
+        raise ValueError(
+            "optimise_actions_least_squares: logit_cost must be >= 0 and damping > 0, got "
+            f"logit_cost={logit_cost!r}, damping={damping!r}."
+        )
+    device = xp.dev(initial_state) if device is None else device
+    dtype = initial_state.dtype
+    batch = tuple(initial_state.shape[:-1])
+    nb, a = len(batch), env.action_dim
+    shape = (horizon, *batch, a)
+    if initial_logits is None:
+        logits = xp.random_uniform(-init_scale, init_scale, shape, dtype=dtype, device=device)
+    else:
+        logits = xp.asarray(ivy.to_numpy(initial_logits), dtype=dtype, device=device)
+        if tuple(logits.shape) != shape:
+            raise ValueError(
+                f"optimise_actions_least_squares: initial_logits must have shape {shape}, got "
+                f"{tuple(logits.shape)}."
+            )
+    # the variables batch first, one row of T * action_dim per initial state
+    to_rows = (*range(1, nb + 1), 0, nb + 1)
+    to_time = (nb, *range(nb), nb + 1)
+    u = xp.reshape(xp.permute_dims(logits, to_rows), (*batch, horizon * a))
+
+    def actions_of(u):
+        return squash_actions(
+            xp.permute_dims(xp.reshape(u, (*batch, horizon, a)), to_time), env, f=xp
+        )
+
+    def residuals_of(u):
+        r = residuals(rollout(env, initial_state, actions_of(u), f=xp))
+        if tuple(r.shape[:-1]) != batch or len(r.shape) != nb + 1:
+            raise ValueError(
+                "optimise_actions_least_squares: residuals(traj) must have shape (*B, R) with "
+                f"B = {batch}, got {tuple(r.shape)}."
+            )
+        return r
+
+    def objective(u, r):
+        return xp.sum(r * r, axis=-1) + logit_cost * xp.sum(u * u, axis=-1)
+
+    def mean_ret(u):
+        traj = rollout(env, initial_state, actions_of(u), f=xp)
+        return xp.mean(xp.sum(traj.rewards, axis=0))
+
+    eye = xp.eye(horizon * a, dtype=dtype, device=device)
+
+    def step(u, mu, cost):
+        r, jac = xp.execute_with_jacobian(residuals_of, u, batch_dims=nb)
+        jt = xp.matrix_transpose(jac)
+        grad = xp.matmul(jt, r[..., None])[..., 0] + logit_cost * u
+        hess = xp.matmul(jt, jac) + (logit_cost + mu)[..., None, None] * eye
+        trial = u - xp.linalg.solve(hess, grad[..., None])[..., 0]
+        trial_cost = objective(trial, residuals_of(trial))
+        better = trial_cost < cost
+        ret = mean_ret(u)
+        u = xp.where(better[..., None], trial, u)
+        mu = xp.clip(xp.where(better, 0.3 * mu, 4.0 * mu), 1e-6, 1e8)
+        return ret, _global_norm(xp, [grad]), u, mu, xp.where(better, trial_cost, cost)
+
+    if compile is None:
+        compile = _compile_by_default(xp)
+    mu = xp.full(batch, damping, dtype=dtype, device=device)
+    carry = (u, mu, objective(u, residuals_of(u)))
+    (u, _, cost), returns, norms, seconds, first = _run(
+        xp, step, carry, iterations, compile, callback, actions_of
+    )
+    actions = actions_of(u)
+    logits = xp.permute_dims(xp.reshape(u, (*batch, horizon, a)), to_time)
+    final_return = float(ivy.to_numpy(mean_ret(u)))
+    costs = np.asarray(ivy.to_numpy(cost), np.float64)
+    return OptimisationResult(
+        logits, returns, norms, final_return, seconds, first, actions, initial_state, costs
     )
 
 

@@ -248,6 +248,35 @@ def test_swing_up_reward_and_no_termination(backend):
         np.testing.assert_allclose(numpy_of(new)[b], np.concatenate([qpos, qvel]), atol=1e-10)
 
 
+def test_swing_up_residuals(backend):
+    """Upright, still and centred over the last ``hold`` states, the barrier's square root
+    over all of them, batch first; in numpy float64 here."""
+    env = ivy_gym.InvertedDoublePendulum(swing_up=True)
+    states = np.random.default_rng(3).normal(size=(5, 2, 3, 6)) * [0.8, 3, 3, 1, 1, 1]
+    states[0, 0, 0, 0] = 1.3  # beyond the barrier's start, before the held states
+    traj = ivy_gym.Trajectory(*(None,) * 5, native(states, backend), None)
+    x, a1, phi2 = states[..., 0], states[..., 1], states[..., 1] + states[..., 2]
+    upright = np.stack(
+        [x, np.sin(a1), 1 - np.cos(a1), np.sin(phi2), 1 - np.cos(phi2)], axis=-1
+    )
+    upright = np.concatenate([upright, 0.2 * states[..., 3:]], axis=-1)[-2:]  # (2, 2, 3, 8)
+    barrier = np.sqrt(10.0) / 0.2 * (np.maximum(x - 0.8, 0) + np.maximum(-x - 0.8, 0))
+    expected = np.concatenate(
+        [upright.transpose(1, 2, 0, 3).reshape(2, 3, 16), barrier.transpose(1, 2, 0)], axis=-1
+    )
+    assert expected[0, 0, 16] > 5  # the first state's barrier
+    np.testing.assert_allclose(
+        numpy_of(env.swing_up_residuals(traj, hold=2)), expected, rtol=1e-12, atol=1e-12
+    )
+    # upright at any whole turn of either pole, with the second pole's angle relative
+    turned = np.zeros((1, 1, 6))
+    turned[..., 1:3] = [2 * np.pi, -4 * np.pi]
+    traj = ivy_gym.Trajectory(*(None,) * 5, native(turned, backend), None)
+    np.testing.assert_allclose(numpy_of(env.swing_up_residuals(traj, hold=1)), 0, atol=1e-12)
+    with pytest.raises(ValueError, match=r"hold must be in \[1, 1\]"):
+        env.swing_up_residuals(traj, hold=2)
+
+
 # ----------------------------------------------------------------------------------------------
 # Gradients: analytic on the differentiable backends, central differences on numpy
 # ----------------------------------------------------------------------------------------------

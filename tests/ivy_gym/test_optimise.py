@@ -200,3 +200,118 @@ def test_a_globally_set_framework_gives_the_same_numbers(diff_backend):
     expected = run()
     with ivy.set_framework(diff_backend):
         np.testing.assert_allclose(run(), expected, rtol=1e-6)
+
+
+# ----------------------------------------------------------------------------------------------
+# Levenberg-Marquardt shooting (optimise_actions_least_squares)
+# ----------------------------------------------------------------------------------------------
+
+
+def _reach_residuals(traj):
+    """Reach the pendulum's upright, still state over the last 2 of the rollout's states:
+    ``(B, 2 * 2)`` residuals (angle from upright and velocity at each)."""
+    last = ivy.permute_dims(traj.states[-2:], (1, 0, 2))  # (B, 2, 2)
+    return ivy.reshape(last, (last.shape[0], 4))
+
+
+def _numpy_levenberg_marquardt(env, state, logits, iterations, logit_cost, mu0, eps=1e-6):
+    """The reference: each initial state on its own, the rollout on numpy float64, the
+    Jacobian by central differences, the damped Gauss-Newton step and its acceptance written
+    out; returns the final logits ``(T, B, 1)``, the costs and how many steps were rejected."""
+    horizon, batch, _ = logits.shape
+    out, costs, rejected = np.empty_like(logits), np.empty(batch), 0
+
+    def residual(i, u):
+        actions = 2.0 * np.tanh(u)[:, None, None]  # the Pendulum's torque box [-2, 2]
+        traj = ivy_gym.rollout(env, state[i : i + 1], actions, f="numpy")
+        return np.asarray(_reach_residuals(traj))[0]
+
+    def cost(i, u):
+        r = residual(i, u)
+        return r @ r + logit_cost * u @ u
+
+    for i in range(batch):
+        u, mu = logits[:, i, 0].copy(), mu0
+        current = cost(i, u)
+        for _ in range(iterations):
+            r = residual(i, u)
+            jac = np.stack(
+                [
+                    (residual(i, u + eps * e) - residual(i, u - eps * e)) / (2 * eps)
+                    for e in np.eye(horizon)
+                ],
+                axis=1,
+            )
+            hess = jac.T @ jac + (logit_cost + mu) * np.eye(horizon)
+            trial = u - np.linalg.solve(hess, jac.T @ r + logit_cost * u)
+            trial_cost = cost(i, trial)
+            if trial_cost < current:
+                u, current, mu = trial, trial_cost, max(0.3 * mu, 1e-6)
+            else:
+                mu, rejected = min(4.0 * mu, 1e8), rejected + 1
+        out[:, i, 0], costs[i] = u, current
+    return out, costs, rejected
+
+
+def test_least_squares_steps_equal_a_numpy_levenberg_marquardt(diff_backend):
+    env = ivy_gym.Pendulum()
+    start = np.array([[2.8, 0.0], [-2.5, 1.0], [0.3, -2.0]])
+    logits = np.random.default_rng(0).uniform(-0.5, 0.5, (8, 3, 1))
+    # a small initial damping: some first steps overshoot and are rejected
+    options = dict(logit_cost=1e-3, damping=1e-3)
+    expected, costs, rejected = _numpy_levenberg_marquardt(env, start, logits, 4, **_lm(options))
+    assert rejected > 0
+    result = ivy_gym.optimise_actions_least_squares(
+        env,
+        8,
+        4,
+        _reach_residuals,
+        initial_state=native(start, diff_backend),
+        initial_logits=logits,
+        **options,
+    )
+    np.testing.assert_allclose(numpy_of(result.variables), expected, rtol=1e-6, atol=1e-7)
+    np.testing.assert_allclose(result.costs, costs, rtol=1e-6)
+    np.testing.assert_allclose(numpy_of(result.actions), 2.0 * np.tanh(expected), rtol=1e-6)
+    assert result.returns.shape == (4,) and result.grad_norms.shape == (4,)
+
+
+def _lm(options):
+    return dict(logit_cost=options["logit_cost"], mu0=options["damping"])
+
+
+def test_least_squares_reaches_the_pendulums_upright_state(request):
+    """From where its torque can hold it (under 0.42 rad), 15 steps of the Pendulum reach
+    upright and still: the objective falls to nearly zero and the replayed actions reach the
+    target."""
+    backend = _quick_backend(request)
+    env = ivy_gym.Pendulum()
+    start = native(np.array([[0.3, 0.0], [-0.25, 0.5]]), backend)
+    result = ivy_gym.optimise_actions_least_squares(
+        env, 15, 25, _reach_residuals, initial_state=start, seed=0, logit_cost=1e-6
+    )
+    assert result.costs.shape == (2,) and np.all(result.costs < 1e-4)
+    final = numpy_of(ivy_gym.rollout(env, start, result.actions).states[-1])
+    np.testing.assert_allclose(final, 0.0, atol=1e-2)
+
+
+def test_least_squares_refuses_bad_input(request):
+    backend = _quick_backend(request)
+    env = ivy_gym.Pendulum()
+    start = native(np.array([[0.6, 0.0]]), backend)
+
+    def run(residuals=_reach_residuals, **options):
+        return ivy_gym.optimise_actions_least_squares(
+            env, 5, 1, residuals, initial_state=start, **options
+        )
+
+    with pytest.raises(ValueError, match=r"residuals\(traj\) must have shape \(\*B, R\)"):
+        run(lambda traj: ivy.sum(traj.rewards, axis=0))
+    with pytest.raises(ValueError, match="initial_logits must have shape"):
+        run(initial_logits=np.zeros((4, 1, 1)))
+    with pytest.raises(ValueError, match="damping > 0"):
+        run(damping=0.0)
+    with pytest.raises(ValueError, match="logit_cost must be >= 0"):
+        run(logit_cost=-1.0)
+    with pytest.raises(UnsupportedError, match="gradients"):
+        ivy_gym.optimise_actions_least_squares(env, 5, 1, _reach_residuals, f="numpy")
