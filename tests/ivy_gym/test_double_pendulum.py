@@ -256,9 +256,7 @@ def test_swing_up_residuals(backend):
     states[0, 0, 0, 0] = 1.3  # beyond the barrier's start, before the held states
     traj = ivy_gym.Trajectory(*(None,) * 5, native(states, backend), None)
     x, a1, phi2 = states[..., 0], states[..., 1], states[..., 1] + states[..., 2]
-    upright = np.stack(
-        [x, np.sin(a1), 1 - np.cos(a1), np.sin(phi2), 1 - np.cos(phi2)], axis=-1
-    )
+    upright = np.stack([x, np.sin(a1), 1 - np.cos(a1), np.sin(phi2), 1 - np.cos(phi2)], axis=-1)
     upright = np.concatenate([upright, 0.2 * states[..., 3:]], axis=-1)[-2:]  # (2, 2, 3, 8)
     barrier = np.sqrt(10.0) / 0.2 * (np.maximum(x - 0.8, 0) + np.maximum(-x - 0.8, 0))
     expected = np.concatenate(
