@@ -185,6 +185,47 @@ def _update(xp, opt, loss_fn, v, opt_state, max_grad_norm):
     return mean_ret, norm, v, opt_state
 
 
+def _action_problem(
+    name,
+    env,
+    horizon,
+    initial_state,
+    batch_shape,
+    init_scale,
+    initial_logits,
+    seed,
+    dtype,
+    device,
+    f,
+):
+    """The backend, the initial states (checked, or drawn with ``env.reset``) and the initial
+    logits ``(T, *B, action_dim)`` (checked, or uniform in ``[-init_scale, init_scale]``) of an
+    open-loop action optimisation."""
+    if initial_state is not None and f is None:
+        f = ivy.get_framework(initial_state)
+    xp = _differentiable(f, name)
+    if seed is not None:
+        xp.seed(seed)
+    if initial_state is None:
+        initial_state = env.reset(tuple(batch_shape), dtype=dtype, device=device, f=xp)
+    check_state(env, initial_state, name, argument="initial_state")
+    device = xp.dev(initial_state) if device is None else device
+    dtype = initial_state.dtype
+    shape = (horizon, *initial_state.shape[:-1], env.action_dim)
+    if initial_logits is None:
+        return (
+            xp,
+            initial_state,
+            xp.random_uniform(-init_scale, init_scale, shape, dtype=dtype, device=device),
+        )
+    logits = xp.asarray(ivy.to_numpy(initial_logits), dtype=dtype, device=device)
+    if tuple(logits.shape) != shape:
+        raise ValueError(
+            f"{name}: initial_logits must have shape {shape}, got {tuple(logits.shape)}."
+        )
+    return xp, initial_state, logits
+
+
 def optimise_actions(
     env: Env,
     horizon: int,
@@ -242,27 +283,19 @@ def optimise_actions(
         >>> frames = ivy_gym.render_trajectory(env, ivy_gym.rollout(env, r.initial_state,
         ...                                                          r.actions).states)
     """
-    if initial_state is not None and f is None:
-        f = ivy.get_framework(initial_state)
-    xp = _differentiable(f, "optimise_actions")
-    if seed is not None:
-        xp.seed(seed)
-    if initial_state is None:
-        initial_state = env.reset(tuple(batch_shape), dtype=dtype, device=device, f=xp)
-    check_state(env, initial_state, "optimise_actions", argument="initial_state")
-    device = xp.dev(initial_state) if device is None else device
-    dtype = initial_state.dtype
-    batch = tuple(initial_state.shape[:-1])
-    shape = (horizon, *batch, env.action_dim)
-    if initial_logits is None:
-        logits = xp.random_uniform(-init_scale, init_scale, shape, dtype=dtype, device=device)
-    else:
-        logits = xp.asarray(ivy.to_numpy(initial_logits), dtype=dtype, device=device)
-        if tuple(logits.shape) != shape:
-            raise ValueError(
-                f"optimise_actions: initial_logits must have shape {shape}, got "
-                f"{tuple(logits.shape)}."
-            )
+    xp, initial_state, logits = _action_problem(
+        "optimise_actions",
+        env,
+        horizon,
+        initial_state,
+        batch_shape,
+        init_scale,
+        initial_logits,
+        seed,
+        dtype,
+        device,
+        f,
+    )
     opt = ivy.Adam(lr, f=xp)
 
     def loss_fn(logits):
@@ -355,33 +388,27 @@ def optimise_actions_least_squares(
         ...     env, 60, 100, env.swing_up_residuals, batch_shape=(32,), f="jax")
         >>> best = int(np.argmin(r.costs))
     """
-    if initial_state is not None and f is None:
-        f = ivy.get_framework(initial_state)
-    xp = _differentiable(f, "optimise_actions_least_squares")
-    if seed is not None:
-        xp.seed(seed)
-    if initial_state is None:
-        initial_state = env.reset(tuple(batch_shape), dtype=dtype, device=device, f=xp)
-    check_state(env, initial_state, "optimise_actions_least_squares", argument="initial_state")
     if logit_cost < 0.0 or damping <= 0.0:
         raise ValueError(
             "optimise_actions_least_squares: logit_cost must be >= 0 and damping > 0, got "
             f"logit_cost={logit_cost!r}, damping={damping!r}."
         )
-    device = xp.dev(initial_state) if device is None else device
-    dtype = initial_state.dtype
+    xp, initial_state, logits = _action_problem(
+        "optimise_actions_least_squares",
+        env,
+        horizon,
+        initial_state,
+        batch_shape,
+        init_scale,
+        initial_logits,
+        seed,
+        dtype,
+        device,
+        f,
+    )
+    device, dtype = xp.dev(logits), logits.dtype
     batch = tuple(initial_state.shape[:-1])
     nb, a = len(batch), env.action_dim
-    shape = (horizon, *batch, a)
-    if initial_logits is None:
-        logits = xp.random_uniform(-init_scale, init_scale, shape, dtype=dtype, device=device)
-    else:
-        logits = xp.asarray(ivy.to_numpy(initial_logits), dtype=dtype, device=device)
-        if tuple(logits.shape) != shape:
-            raise ValueError(
-                f"optimise_actions_least_squares: initial_logits must have shape {shape}, got "
-                f"{tuple(logits.shape)}."
-            )
     # the variables batch first, one row of T * action_dim per initial state
     to_rows = (*range(1, nb + 1), 0, nb + 1)
     to_time = (nb, *range(nb), nb + 1)
