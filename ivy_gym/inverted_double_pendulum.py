@@ -379,7 +379,8 @@ class InvertedDoublePendulum(Env):
         Example:
             >>> env = ivy_gym.InvertedDoublePendulum(swing_up=True)
             >>> r = ivy_gym.optimise_actions_least_squares(
-            ...     env, 60, 100, env.swing_up_residuals, batch_shape=(32,), f="jax")
+            ...     env, 40, 60, lambda traj: env.swing_up_residuals(traj, hold=1),
+            ...     batch_shape=(32,), f="jax")  # reach upright: the first of two stages
         """
         states = trajectory.states
         xp = ivy.get_framework(states, f=f)

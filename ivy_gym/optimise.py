@@ -349,10 +349,12 @@ def optimise_actions_least_squares(
     lowers that initial state's objective (then ``mu *= 0.3``), else discarded (``mu *= 4``).
     Where a chaotic rollout (the double pendulum's swing-up) makes the return's gradient
     useless to Adam (:func:`optimise_actions`), these steps reach and hold a target state:
-    the residuals are the distances to it over the last steps.
+    the residuals are the distances to it over the last steps. For the double pendulum, two
+    stages work where one does not: reach (the last state's residuals), then extend the actions
+    and hold (``benchmarks/double_pendulum_swing_up.py``; ``docs/ivy_gym.md`` has the figures).
 
     The cost of an iteration grows with the residuals' count ``R``: the Jacobian takes ``R``
-    backward passes (tensorflow and jax vectorise them; torch runs them in turn).
+    backward passes, vectorised over the residuals on every backend.
 
     Args:
         env: the environment.
@@ -385,7 +387,8 @@ def optimise_actions_least_squares(
     Example:
         >>> env = ivy_gym.InvertedDoublePendulum(swing_up=True)
         >>> r = ivy_gym.optimise_actions_least_squares(
-        ...     env, 60, 100, env.swing_up_residuals, batch_shape=(32,), f="jax")
+        ...     env, 40, 60, lambda traj: env.swing_up_residuals(traj, hold=1),
+        ...     batch_shape=(32,), f="jax")  # reach upright: the first of two stages
         >>> best = int(np.argmin(r.costs))
     """
     if logit_cost < 0.0 or damping <= 0.0:
