@@ -348,12 +348,14 @@ class InvertedDoublePendulum(Env):
         qvel = state[..., nq:]
         velocity = p.swing_up_velocity_cost * xp.sum(qvel**2, axis=-1)
         effort = p.swing_up_action_cost * ctrl[..., 0] ** 2
+        return height - velocity - effort - self._barrier_root(xp, state[..., 0]) ** 2
+
+    def _barrier_root(self, xp, x):
+        """The slider barrier's square root, ``sqrt(weight) / (1 - b) * (relu(x - b) +
+        relu(-x - b))``: its square is the barrier, since ``b >= 0`` keeps one side zero."""
+        p = self.params
         b = float(p.slider_barrier_start)
-        x = state[..., 0]
-        barrier = (p.slider_barrier_weight / (1.0 - b) ** 2) * (
-            xp.relu(x - b) ** 2 + xp.relu(-x - b) ** 2
-        )
-        return height - velocity - effort - barrier
+        return (math.sqrt(p.slider_barrier_weight) / (1.0 - b)) * (xp.relu(x - b) + xp.relu(-x - b))
 
     def swing_up_residuals(self, trajectory, hold: int = 20, *, f: Framework = None) -> Array:
         """Least-squares residuals of a swing-up that ends held upright, for
@@ -390,23 +392,18 @@ class InvertedDoublePendulum(Env):
                 f"swing_up_residuals: hold must be in [1, {steps}] (the trajectory's steps), "
                 f"got {hold!r}."
             )
-        nb = len(states.shape) - 2
-        last = states[steps - int(hold) :]
+        hold, nb = int(hold), len(states.shape) - 2
+        last = states[steps - hold :]
         x, hinge, hinge2 = last[..., 0], last[..., 1], last[..., 2]
         phi2 = hinge + hinge2
         upright = xp.stack(
             [x, xp.sin(hinge), 1.0 - xp.cos(hinge), xp.sin(phi2), 1.0 - xp.cos(phi2)], axis=-1
         )
         upright = xp.concat([upright, 0.2 * last[..., 3:]], axis=-1)  # (hold, *B, 8)
-        p = self.params
-        b = float(p.slider_barrier_start)
-        slider = states[..., 0]
-        barrier = (math.sqrt(p.slider_barrier_weight) / (1.0 - b)) * (
-            xp.relu(slider - b) + xp.relu(-slider - b)
-        )  # (T, *B)
+        barrier = self._barrier_root(xp, states[..., 0])  # (T, *B)
         batch_first = (*range(1, nb + 1), 0)
         upright = xp.permute_dims(upright, (*range(1, nb + 1), 0, nb + 1))
-        upright = xp.reshape(upright, (*states.shape[1:-1], 8 * int(hold)))
+        upright = xp.reshape(upright, (*states.shape[1:-1], 8 * hold))
         return xp.concat([upright, xp.permute_dims(barrier, batch_first)], axis=-1)
 
     # ------------------------------------------------------------------------------------------
