@@ -335,6 +335,7 @@ def optimise_actions_least_squares(
     seed: int | None = None,
     dtype: Dtype = "float32",
     compile: bool | None = None,
+    jacobian_method: str | None = None,
     callback: Callable[[int, Array], bool | None] | None = None,
     device: str | None = None,
     f: Framework = None,
@@ -354,7 +355,11 @@ def optimise_actions_least_squares(
     and hold (``benchmarks/double_pendulum_swing_up.py``; ``docs/ivy_gym.md`` has the figures).
 
     The cost of an iteration grows with the residuals' count ``R``: the Jacobian takes ``R``
-    backward passes, vectorised over the residuals on every backend.
+    backward passes, vectorised over the residuals on every backend: by the framework on jax and
+    torch, and on tensorflow by one backward pass of the rollout over ``R`` copies of the batch
+    (``ivy.execute_with_jacobian(..., method="replicate")``: pfor through the rollout's
+    ``tf.while_loop`` grows to gigabytes). ``residuals`` must therefore treat every leading axis
+    of the trajectory as batch.
 
     Args:
         env: the environment.
@@ -362,7 +367,8 @@ def optimise_actions_least_squares(
         iterations: number of Levenberg-Marquardt iterations.
         residuals: ``residuals(traj) -> (*B, R)`` of the :class:`~ivy_gym.Trajectory` of the
             rollout, each initial state's residuals depending on its own rollout alone (e.g.
-            :meth:`ivy_gym.InvertedDoublePendulum.swing_up_residuals`).
+            :meth:`ivy_gym.InvertedDoublePendulum.swing_up_residuals`), for a trajectory of any
+            batch shape ``B``.
         initial_state: ``(*B, state_dim)``; by default ``env.reset(batch_shape)``.
         batch_shape: the batch of initial states (restarts) when ``initial_state`` is None.
         logit_cost: weight of ``|logits|^2`` in the objective (keeps the actions off the
@@ -374,6 +380,8 @@ def optimise_actions_least_squares(
         dtype: dtype of the states and actions.
         compile: run each iteration compiled; by default where the compiler keeps loops
             (jax, tensorflow).
+        jacobian_method: ``"native"`` or ``"replicate"`` (:func:`ivy.execute_with_jacobian`);
+            by default ``"replicate"`` on tensorflow, ``"native"`` elsewhere (the faster).
         callback: ``callback(iteration, actions)`` after each iteration; True stops.
         device: where to create the states and logits.
         f: framework (torch, jax or tensorflow); by default the global framework or that of
@@ -417,17 +425,22 @@ def optimise_actions_least_squares(
     to_time = (nb, *range(nb), nb + 1)
     u = xp.reshape(xp.permute_dims(logits, to_rows), (*batch, horizon * a))
 
-    def actions_of(u):
-        return squash_actions(
-            xp.permute_dims(xp.reshape(u, (*batch, horizon, a)), to_time), env, f=xp
-        )
+    def actions_of(u):  # u: (*lead, T * a), lead the batch or (copies, *batch)
+        lead = tuple(u.shape[:-1])
+        n = len(lead)
+        logits = xp.permute_dims(xp.reshape(u, (*lead, horizon, a)), (n, *range(n), n + 1))
+        return squash_actions(logits, env, f=xp)
 
     def residuals_of(u):
-        r = residuals(rollout(env, initial_state, actions_of(u), f=xp))
-        if tuple(r.shape[:-1]) != batch or len(r.shape) != nb + 1:
+        lead = tuple(u.shape[:-1])
+        state = initial_state
+        if lead != batch:  # the replicated Jacobian's copies of the batch
+            state = xp.broadcast_to(state, (*lead, env.state_dim))
+        r = residuals(rollout(env, state, actions_of(u), f=xp))
+        if tuple(r.shape[:-1]) != lead or len(r.shape) != len(lead) + 1:
             raise ValueError(
-                "optimise_actions_least_squares: residuals(traj) must have shape (*B, R) with "
-                f"B = {batch}, got {tuple(r.shape)}."
+                "optimise_actions_least_squares: residuals(traj) must have shape (*B, R) for "
+                f"a trajectory of batch B = {lead}, got {tuple(r.shape)}."
             )
         return r
 
@@ -439,9 +452,11 @@ def optimise_actions_least_squares(
         return xp.mean(xp.sum(traj.rewards, axis=0))
 
     eye = xp.eye(horizon * a, dtype=dtype, device=device)
+    if jacobian_method is None:
+        jacobian_method = "replicate" if xp.backend == "tensorflow" else "native"
 
     def step(u, mu, cost):
-        r, jac = xp.execute_with_jacobian(residuals_of, u, batch_dims=nb)
+        r, jac = xp.execute_with_jacobian(residuals_of, u, batch_dims=nb, method=jacobian_method)
         jt = xp.matrix_transpose(jac)
         grad = xp.matmul(jt, r[..., None])[..., 0] + logit_cost * u
         hess = xp.matmul(jt, jac) + (logit_cost + mu)[..., None, None] * eye

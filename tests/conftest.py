@@ -43,16 +43,36 @@ BACKENDS = {
         fast_graph=False,
         mutable=True,
         float16=True,
+        forward_vmap=False,
         opt_in=False,
     ),
     "torch": dict(
-        autodiff=True, compilation=True, fast_graph=False, mutable=True, float16=True, opt_in=False
+        autodiff=True,
+        compilation=True,
+        fast_graph=False,
+        mutable=True,
+        float16=True,
+        forward_vmap=True,
+        opt_in=False,
     ),
     "jax": dict(
-        autodiff=True, compilation=True, fast_graph=True, mutable=False, float16=True, opt_in=False
+        autodiff=True,
+        compilation=True,
+        fast_graph=True,
+        mutable=False,
+        float16=True,
+        forward_vmap=True,
+        opt_in=False,
     ),
+    # no vmap of forward-mode transformations (ForwardAccumulator is not vectorised)
     "tensorflow": dict(
-        autodiff=True, compilation=True, fast_graph=True, mutable=False, float16=True, opt_in=False
+        autodiff=True,
+        compilation=True,
+        fast_graph=True,
+        mutable=False,
+        float16=True,
+        forward_vmap=False,
+        opt_in=False,
     ),
     # the standard has no float16: array_api_strict refuses it
     "array_api_strict": dict(
@@ -61,6 +81,7 @@ BACKENDS = {
         fast_graph=False,
         mutable=False,
         float16=False,
+        forward_vmap=False,
         opt_in=True,
     ),
 }

@@ -22,6 +22,7 @@ their call arguments (or from ``f`` / the global framework).
 from __future__ import annotations
 
 import functools
+import math
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -167,6 +168,7 @@ def execute_with_jacobian(
     x: Array,
     *,
     batch_dims: int | None = None,
+    method: str = "native",
     retain_grads: bool = False,
     f: Framework = None,
 ) -> tuple[Array, Array]:
@@ -175,12 +177,24 @@ def execute_with_jacobian(
     ``x`` has shape ``(*batch, *in_shape)`` and ``func(x)`` shape ``(*batch, *out_shape)``, where
     ``batch`` is the first ``batch_dims`` axes; ``func`` must treat batch elements independently.
 
+    Two methods give the same Jacobian:
+
+    - ``"native"``: the framework's own (``jax.jacrev``; on torch one backward pass vectorised
+      over the output components; tensorflow's ``GradientTape.jacobian``, vectorised by pfor);
+    - ``"replicate"``, for a ``func`` that accepts any leading batch shape (as ivy's functions
+      and :func:`ivy_gym.rollout` do): ``x`` is stacked once per output component ``m`` along a
+      new leading axis, and one backward pass of ``func`` over that ``m`` times bigger batch
+      gives every row. No operation is vectorised by the framework (tensorflow's pfor, torch's
+      vmap), which is what a long ``tf.while_loop`` needs: there pfor grows to gigabytes. Its
+      memory grows with ``m``; ``func`` is also evaluated once on ``x`` for ``y``.
+
     Args:
         func: the function of one array.
         x: the input array.
         batch_dims: number of leading batch axes; by default all but the last axis of ``x``
             (so a vector function ``(..., n) -> (..., m)`` gives ``(..., m, n)``). ``0`` gives
             the full Jacobian.
+        method: ``"native"`` or ``"replicate"`` (above).
         retain_grads: keep the results differentiable.
         f: framework name or namespace; by default inferred from ``x``.
 
@@ -210,10 +224,48 @@ def execute_with_jacobian(
         # per-element Jacobians.
         return (xp.sum(y, axis=batch_axes) if nb else y), y
 
+    if method == "replicate":
+        return _replicated_jacobian(xp, func, x, nb, retain_grads)
+    if method != "native":
+        raise ValueError(
+            f"execute_with_jacobian: method must be 'native' or 'replicate', got {method!r}."
+        )
     jac, y = xp.jacobian_native(summed, x, retain_grads=retain_grads)
     n_out = len(y.shape) - nb  # jac: (*out_shape, *batch, *in_shape) -> batch first
     perm = (*range(n_out, n_out + nb), *range(n_out), *range(n_out + nb, n_out + rank))
     return y, (xp.permute_dims(jac, perm) if perm != tuple(range(n_out + rank)) else jac)
+
+
+def _replicated_jacobian(xp, func, x, nb, retain_grads):
+    """:func:`execute_with_jacobian`'s ``"replicate"`` method: copy ``i`` of ``x`` (a new
+    leading axis) carries the gradient of output component ``i`` alone."""
+    batch, in_shape = tuple(x.shape[:nb]), tuple(x.shape[nb:])
+    y = xp.stop_gradient(func(x)) if not retain_grads else func(x)
+    if tuple(y.shape[:nb]) != batch:
+        raise ValueError(
+            f"execute_with_jacobian: with {nb} batch dims the output's leading shape "
+            f"{tuple(y.shape[:nb])} must equal the input's {batch}."
+        )
+    out_shape = tuple(y.shape[nb:])
+    m = math.prod(out_shape)
+    # selects output component i of copy i: (m, *batch ones, m)
+    pick = xp.reshape(xp.eye(m, dtype=y.dtype, device=xp.dev(y)), (m, *(1,) * nb, m))
+
+    def picked(leaves):
+        ys = func(leaves[0])
+        if tuple(ys.shape) != (m, *batch, *out_shape):
+            raise ValueError(
+                "execute_with_jacobian: method='replicate' needs a func that accepts a new "
+                f"leading batch axis: x of shape {(m, *batch, *in_shape)} gave "
+                f"{tuple(ys.shape)}, not {(m, *batch, *out_shape)}. Use method='native'."
+            )
+        return xp.sum(xp.reshape(ys, (m, *batch, m)) * pick), ()
+
+    copies = xp.broadcast_to(x, (m, *batch, *in_shape))
+    _, _, (rows,) = xp.value_and_grad_native(picked, [copies], retain_grads=retain_grads)
+    # rows: (m, *batch, *in_shape) -> (*batch, *out_shape, *in_shape)
+    rows = xp.permute_dims(rows, (*range(1, nb + 1), 0, *range(nb + 1, nb + 1 + len(in_shape))))
+    return y, xp.reshape(rows, (*batch, *out_shape, *in_shape))
 
 
 @dispatch
@@ -298,6 +350,7 @@ def jacobian(
     /,
     *,
     batch_dims: int | None = None,
+    method: str = "native",
     retain_grads: bool = False,
     f: Framework = None,
 ) -> Callable[[Array], Array]:
@@ -306,6 +359,7 @@ def jacobian(
     Args:
         func: a function of one array, treating its ``batch_dims`` leading axes as batch.
         batch_dims: leading batch axes; by default all but the last axis of ``x``.
+        method: ``"native"`` or ``"replicate"``, as for :func:`execute_with_jacobian`.
         retain_grads: keep the Jacobian differentiable.
         f: framework; by default resolved from the arguments of each call.
 
@@ -319,8 +373,8 @@ def jacobian(
     @functools.wraps(func)
     def jacobian_fn(x):
         xp = _fh.get_framework(x, f=f)
-        return xp.execute_with_jacobian(func, x, batch_dims=batch_dims, retain_grads=retain_grads)[
-            1
-        ]
+        return xp.execute_with_jacobian(
+            func, x, batch_dims=batch_dims, method=method, retain_grads=retain_grads
+        )[1]
 
     return jacobian_fn

@@ -12,6 +12,7 @@ import pytest
 
 import ivy
 import ivy_gym
+from tests.conftest import require
 from tests.helpers import check_gradients, native, numpy_of
 
 pytestmark = pytest.mark.filterwarnings("ignore:`torch.jit.script_method`:DeprecationWarning")
@@ -97,6 +98,42 @@ def _value_and_grads(backend, fn, arrays):
         value_and_grads = ivy.compile_fn(value_and_grads)
     loss, grads = value_and_grads([native(a, backend) for a in arrays])
     return float(numpy_of(loss)), [numpy_of(g) for g in grads]
+
+
+def _forward_mode(backend):
+    """The framework's own forward-mode transformations: ``jvp(fn, x, t) -> (fn(x), dfn(x) t)``
+    and the vectorising map."""
+    if backend == "jax":
+        import jax
+
+        return lambda fn, x, t: jax.jvp(fn, (x,), (t,)), jax.vmap
+    import torch.func
+
+    return lambda fn, x, t: torch.func.jvp(fn, (x,), (t,)), torch.func.vmap
+
+
+def test_forward_mode_and_vmap_through_a_rollout(diff_backend):
+    """jax.jvp and torch.func.jvp of the rewards along a direction of the actions, vectorised
+    over directions, equal central finite differences (a traced action is converted without a
+    device placement: jax cannot place a vmap tracer)."""
+    require(diff_backend, "forward_vmap")
+    jvp, vmap = _forward_mode(diff_backend)
+    env = ivy_gym.Pendulum()
+    actions, state = _inputs(env, 0.5, steps=8)
+    directions = np.random.default_rng(3).standard_normal((2, *actions.shape))
+    s0 = native(state, diff_backend)
+
+    def rewards(a):
+        return ivy_gym.rollout(env, s0, a).rewards
+
+    tangents = vmap(lambda t: jvp(rewards, native(actions, diff_backend), t)[1])(
+        native(directions, diff_backend)
+    )
+    h = 1e-6
+    for t, got in zip(directions, numpy_of(tangents)):
+        plus = numpy_of(rewards(native(actions + h * t, diff_backend)))
+        minus = numpy_of(rewards(native(actions - h * t, diff_backend)))
+        np.testing.assert_allclose(got, (plus - minus) / (2 * h), rtol=1e-6, atol=1e-8)
 
 
 def test_windows_cut_gradients_every_window_steps(diff_backend):

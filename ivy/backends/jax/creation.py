@@ -33,6 +33,10 @@ def asarray(obj, /, *, dtype=None, device=None, copy=None):
         hasattr(obj, "__dlpack__") or hasattr(obj, "__array__")
     ):
         obj = _from_other_framework(obj)
+    if isinstance(obj, jax.core.Tracer):
+        # a traced value is placed by its computation; jax 0.10 cannot place a vmap or jvp
+        # tracer ("'SingleDeviceSharding' object has no attribute 'spec'")
+        device = None
     if dtype is not None or has_own_dtype(obj):
         if dtype is None:
             check_x64_of(obj)

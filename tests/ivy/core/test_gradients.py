@@ -362,32 +362,74 @@ def jacobian_fd(fn, x, batch_dims, h=1e-6):
     return y, jac
 
 
+JACOBIAN_METHODS = ("native", "replicate")
+
+
+@pytest.mark.parametrize("method", JACOBIAN_METHODS)
 @pytest.mark.parametrize("batch_shape", [(), (4,), (2, 3)])
-def test_jacobian_of_batched_kinematics(diff_backend, batch_shape):
+def test_jacobian_of_batched_kinematics(diff_backend, batch_shape, method):
     xp = getattr(ivy, diff_backend)
     q = np.random.default_rng(1).uniform(-2, 2, size=(*batch_shape, 3))
-    y, jac = ivy.execute_with_jacobian(lambda q: planar_arm(q, xp), native(q, diff_backend))
+    y, jac = ivy.execute_with_jacobian(
+        lambda q: planar_arm(q, xp), native(q, diff_backend), method=method
+    )
     y_ref, jac_ref = jacobian_fd(lambda q: planar_arm(q, NP), q, len(batch_shape))
     assert numpy_of(jac).shape == (*batch_shape, 3, 3)
     np.testing.assert_allclose(numpy_of(y), y_ref, **F64)
     np.testing.assert_allclose(numpy_of(jac), jac_ref, **FD)
-    jac2 = ivy.jacobian(lambda q: planar_arm(q, xp))(native(q, diff_backend))
+    jac2 = ivy.jacobian(lambda q: planar_arm(q, xp), method=method)(native(q, diff_backend))
     np.testing.assert_allclose(numpy_of(jac2), numpy_of(jac), **F64)
 
 
-def test_jacobian_with_matrix_outputs_and_full_jacobian(diff_backend):
+@pytest.mark.parametrize("method", JACOBIAN_METHODS)
+def test_jacobian_with_matrix_outputs_and_full_jacobian(diff_backend, method):
     xp = getattr(ivy, diff_backend)
     theta = np.array([[0.3], [-1.2], [2.0]])
-    jac = ivy.jacobian(lambda t: rotation(t, xp))(native(theta, diff_backend))
+    jac = ivy.jacobian(lambda t: rotation(t, xp), method=method)(native(theta, diff_backend))
     assert numpy_of(jac).shape == (3, 2, 2, 1)
     np.testing.assert_allclose(
         numpy_of(jac), jacobian_fd(lambda t: rotation(t, NP), theta, 1)[1], **FD
     )
     # batch_dims=0: the full Jacobian, also across batch elements
     m = np.array([[1.0, 2.0], [3.0, 4.0]])
-    full = ivy.jacobian(lambda a: xp.matmul(a, a), batch_dims=0)(native(m, diff_backend))
+    full = ivy.jacobian(lambda a: xp.matmul(a, a), batch_dims=0, method=method)(
+        native(m, diff_backend)
+    )
     assert numpy_of(full).shape == (2, 2, 2, 2)
     np.testing.assert_allclose(numpy_of(full), jacobian_fd(lambda a: a @ a, m, 0)[1], **FD)
+
+
+def test_replicated_jacobian_is_differentiable(diff_backend):
+    """retain_grads=True: the Jacobian's own gradient (second order) equals the native
+    method's."""
+    xp = getattr(ivy, diff_backend)
+    q = native(np.random.default_rng(2).uniform(-2, 2, size=(4, 3)), diff_backend)
+
+    def jac_sum(method):
+        def loss(q):
+            jac = ivy.jacobian(lambda q: planar_arm(q, xp), method=method, retain_grads=True)(q)
+            return xp.sum(jac * jac)
+
+        return loss
+
+    grads = [numpy_of(ivy.grad(jac_sum(m))(q)) for m in JACOBIAN_METHODS]
+    np.testing.assert_allclose(grads[1], grads[0], **F64)
+
+
+def test_replicated_jacobian_compiles(graph_backend):
+    xp = getattr(ivy, graph_backend)
+    q = native(np.random.default_rng(2).uniform(-2, 2, size=(4, 3)), graph_backend)
+    jac = ivy.jacobian(lambda q: planar_arm(q, xp), method="replicate")
+    np.testing.assert_allclose(numpy_of(ivy.compile_fn(jac)(q)), numpy_of(jac(q)), **F64)
+
+
+def test_replicated_jacobian_needs_a_func_of_any_batch(diff_backend):
+    xp = getattr(ivy, diff_backend)
+    x = native(np.ones((4, 3)), diff_backend)
+    with pytest.raises(ValueError, match="new leading batch axis.*method='native'"):
+        ivy.jacobian(lambda q: 2.0 * xp.reshape(q, (-1, 3))[-4:], method="replicate")(x)
+    with pytest.raises(ValueError, match="'native' or 'replicate'"):
+        ivy.jacobian(lambda q: q, method="forward")(x)
 
 
 def test_jacobian_rejects_outputs_that_lose_the_batch(diff_backend):
@@ -403,6 +445,7 @@ def test_numpy_raises_a_clear_error():
         lambda: ivy.value_and_grad(lambda v: np.sum(v["w"]))(v),
         lambda: ivy.grad(lambda v: np.sum(v["w"]))(v),
         lambda: ivy.jacobian(lambda x: x)(np.ones(2)),
+        lambda: ivy.jacobian(lambda x: x, method="replicate")(np.ones(2)),
     ):
         with pytest.raises(ivy.UnsupportedError, match="differentiable backend"):
             call()
