@@ -355,11 +355,12 @@ def optimise_actions_least_squares(
     and hold (``benchmarks/double_pendulum_swing_up.py``; ``docs/ivy_gym.md`` has the figures).
 
     The cost of an iteration grows with the residuals' count ``R``: the Jacobian takes ``R``
-    backward passes, vectorised over the residuals on every backend: by the framework on jax and
-    torch, and on tensorflow by one backward pass of the rollout over ``R`` copies of the batch
-    (``ivy.execute_with_jacobian(..., method="replicate")``: pfor through the rollout's
-    ``tf.while_loop`` grows to gigabytes). ``residuals`` must therefore treat every leading axis
-    of the trajectory as batch.
+    backward passes, vectorised over the residuals on every backend: by ``jax.jacrev`` on jax,
+    and on torch and tensorflow by one backward pass of the rollout over ``R`` copies of the
+    batch (``ivy.execute_with_jacobian(..., method="replicate")``: 0.6 times torch's vectorised
+    backward pass on the swing-up, and pfor through tensorflow's ``tf.while_loop`` grows to
+    gigabytes). ``residuals`` must therefore treat every leading axis of the trajectory as
+    batch.
 
     Args:
         env: the environment.
@@ -381,7 +382,8 @@ def optimise_actions_least_squares(
         compile: run each iteration compiled; by default where the compiler keeps loops
             (jax, tensorflow).
         jacobian_method: ``"native"`` or ``"replicate"`` (:func:`ivy.execute_with_jacobian`);
-            by default ``"replicate"`` on tensorflow, ``"native"`` elsewhere (the faster).
+            by default ``"native"`` on jax, ``"replicate"`` on torch and tensorflow (the
+            faster).
         callback: ``callback(iteration, actions)`` after each iteration; True stops.
         device: where to create the states and logits.
         f: framework (torch, jax or tensorflow); by default the global framework or that of
@@ -453,7 +455,8 @@ def optimise_actions_least_squares(
 
     eye = xp.eye(horizon * a, dtype=dtype, device=device)
     if jacobian_method is None:
-        jacobian_method = "replicate" if xp.backend == "tensorflow" else "native"
+        # the faster, measured on the swing-up (benchmarks/jacobian_methods.py)
+        jacobian_method = "native" if xp.backend == "jax" else "replicate"
 
     def step(u, mu, cost):
         r, jac = xp.execute_with_jacobian(residuals_of, u, batch_dims=nb, method=jacobian_method)
