@@ -66,6 +66,12 @@ class Capabilities:
             depends on values cannot compile), or where there is no compiler. Code that compiles
             whole loops (a rollout, the epochs of an update) can choose from it where to put the
             compiled boundary.
+        vectorised_jacobian: the native Jacobian (``ivy.execute_with_jacobian``'s
+            ``method="native"``) vectorises over the output components as fast as one backward
+            pass of a batch as many times bigger (jax's ``vmap``). False where it does not:
+            tensorflow's pfor through a ``tf.while_loop`` (gigabytes), torch's batched backward
+            pass (1.7x slower than replicated, on the double pendulum's swing-up); code that takes
+            Jacobians of batched functions then uses ``method="replicate"``.
 
     Example:
         >>> ivy.framework_handler.capabilities("jax").compiled_loops
@@ -78,6 +84,7 @@ class Capabilities:
     devices: tuple[str, ...] = ("cpu",)
     float64: bool = True
     compiled_loops: bool = False
+    vectorised_jacobian: bool = False
 
 
 @dataclass(frozen=True)
@@ -110,7 +117,11 @@ _BACKENDS: dict[str, _BackendSpec] = {
         "jax",
         "jax",
         Capabilities(
-            autodiff=True, compilation=True, devices=("cpu", "gpu", "tpu"), compiled_loops=True
+            autodiff=True,
+            compilation=True,
+            devices=("cpu", "gpu", "tpu"),
+            compiled_loops=True,
+            vectorised_jacobian=True,
         ),
     ),
     "tensorflow": _BackendSpec(

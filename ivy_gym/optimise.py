@@ -456,7 +456,7 @@ def optimise_actions_least_squares(
     eye = xp.eye(horizon * a, dtype=dtype, device=device)
     if jacobian_method is None:
         # the faster, measured on the swing-up (benchmarks/jacobian_methods.py)
-        jacobian_method = "native" if xp.backend == "jax" else "replicate"
+        jacobian_method = "native" if xp.capabilities.vectorised_jacobian else "replicate"
 
     def step(u, mu, cost):
         r, jac = xp.execute_with_jacobian(residuals_of, u, batch_dims=nb, method=jacobian_method)

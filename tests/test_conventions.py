@@ -302,7 +302,7 @@ def test_applied_packages_compare_no_framework_names(package):
     found = _offences(package, framework_name_comparisons)
     assert not found, (
         "ask the backend's capabilities (xp.capabilities.autodiff, .compilation, "
-        ".compiled_loops, .float64) or the core (ivy.compiled_scan, ivy.enable_float64, "
+        ".compiled_loops, .vectorised_jacobian, .float64) or the core (ivy.compiled_scan, ivy.enable_float64, "
         "ivy.dtype_name) instead of a framework's name:\n" + "\n".join(found)
     )
 
