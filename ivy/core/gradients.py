@@ -215,11 +215,7 @@ def execute_with_jacobian(
 
     def summed(x):
         y = func(x)
-        if tuple(y.shape[:nb]) != tuple(x.shape[:nb]):
-            raise ValueError(
-                f"execute_with_jacobian: with {nb} batch dims the output's leading shape "
-                f"{tuple(y.shape[:nb])} must equal the input's {tuple(x.shape[:nb])}."
-            )
+        _check_batch(y, x, nb)
         # Batch elements are independent: the Jacobian of the sum over the batch holds the
         # per-element Jacobians.
         return (xp.sum(y, axis=batch_axes) if nb else y), y
@@ -236,16 +232,20 @@ def execute_with_jacobian(
     return y, (xp.permute_dims(jac, perm) if perm != tuple(range(n_out + rank)) else jac)
 
 
+def _check_batch(y, x, nb):
+    if tuple(y.shape[:nb]) != tuple(x.shape[:nb]):
+        raise ValueError(
+            f"execute_with_jacobian: with {nb} batch dims the output's leading shape "
+            f"{tuple(y.shape[:nb])} must equal the input's {tuple(x.shape[:nb])}."
+        )
+
+
 def _replicated_jacobian(xp, func, x, nb, retain_grads):
     """:func:`execute_with_jacobian`'s ``"replicate"`` method: copy ``i`` of ``x`` (a new
     leading axis) carries the gradient of output component ``i`` alone."""
     batch, in_shape = tuple(x.shape[:nb]), tuple(x.shape[nb:])
     y = xp.stop_gradient(func(x)) if not retain_grads else func(x)
-    if tuple(y.shape[:nb]) != batch:
-        raise ValueError(
-            f"execute_with_jacobian: with {nb} batch dims the output's leading shape "
-            f"{tuple(y.shape[:nb])} must equal the input's {batch}."
-        )
+    _check_batch(y, x, nb)
     out_shape = tuple(y.shape[nb:])
     m = math.prod(out_shape)
     # selects output component i of copy i: (m, *batch ones, m)
