@@ -12,10 +12,11 @@ search, turns one swing-up into a policy:
 2. expert: along each solved swing-up, a time-varying LQR (the step's Jacobians with
    ``ivy.jacobian`` through ``env.step`` in float64, then a Riccati recursion on the host)
    that hands over to the upright LQR at its end; the swing-up whose expert holds the most of
-   128 fresh starts is kept;
+   128 fresh starts under the action noise of step 3 is kept;
 3. imitation (DAgger): an MLP 64-64 (tanh) fitted with Adam to the expert's actions at the
    states of the expert's rollouts under action noise, then, for ``--rounds`` rounds, also at
-   the states the policy itself visits (labelled with the expert's action for that step);
+   the states the policy itself visits (labelled with the expert's action for that step), each
+   rollout's states labelled only up to its first exit from a tube about the nominal;
 4. refinement: ``ivy_gym.optimise_policy`` on the swing-up's reward, ``--refine`` iterations
    (windows of 25 steps, clipping at 1, lr 1e-4); 0 skips it;
 5. evaluation: 256 fresh starts, ``--horizon`` steps; solved: both poles within 18 degrees of
@@ -89,6 +90,14 @@ class Expert:
             u = wrapped @ self.upright_gain.T
         return np.clip(u, -1.0, 1.0)
 
+    def deviation(self, state, t):
+        """The largest deviation ``(B,)`` of the cart's position and the hinges' angles from the
+        nominal at step ``t`` (from upright, angles wrapped, after its end)."""
+        if t < len(self.actions):
+            return np.abs(state[..., :3] - self.states[t][:3]).max(axis=-1)
+        angles = np.arctan2(np.sin(state[..., 1:3]), np.cos(state[..., 1:3]))
+        return np.maximum(np.abs(state[..., 0]), np.abs(angles).max(axis=-1))
+
     def rollout(self, step, initial, horizon, noise=0.0, rng=None):
         """The states before each step ``(T, B, 6)``, the expert's actions there, and the states
         after, float64; ``noise`` (Gaussian, clipped to the box) perturbs the applied actions."""
@@ -117,6 +126,14 @@ def host_step(env, xp, backend):
         return np.asarray(ivy.to_numpy(state), np.float64)
 
     return step
+
+
+def in_tube(expert, states, tube):
+    """``(T, B)``: the states of each rollout ``(T, B, 6)`` up to its first exit from a tube of
+    radius ``tube`` about the nominal. Only those are labelled: far from the nominal the
+    expert's linear feedback saturates, and its actions there spoil the fit."""
+    inside = np.stack([expert.deviation(s, t) < tube for t, s in enumerate(states)])
+    return np.cumprod(inside, axis=0).astype(bool)
 
 
 def solved(states, hold):
@@ -207,9 +224,10 @@ def main():
     parser.add_argument("--restarts", type=int, default=32)
     parser.add_argument("--nominal", default=None)
     parser.add_argument("--save-nominal", default=None)
-    parser.add_argument("--rounds", type=int, default=5)
+    parser.add_argument("--rounds", type=int, default=4)
     parser.add_argument("--fit-iterations", type=int, default=3000)
     parser.add_argument("--noise", type=float, default=0.2)
+    parser.add_argument("--tube", type=float, default=0.3)
     parser.add_argument("--refine", type=int, default=100)
     parser.add_argument("--horizon", type=int, default=200)
     parser.add_argument("--hold", type=int, default=150)
@@ -248,6 +266,8 @@ def main():
     states, labels, _ = expert.rollout(
         step, env.draw_initial(rng, 256), args.horizon // 2, args.noise, rng
     )
+    inside = in_tube(expert, states, args.tube)
+    states, labels = states[inside], labels[inside]
     v, loss = imitation.fit(policy.v, env, states, labels, args.fit_iterations)
     report(f"imitation of the expert's noisy rollouts (loss {loss:.3g})", v)
     for r in range(args.rounds):
@@ -258,11 +278,12 @@ def main():
         )  # fmt: skip
         after = np.asarray(ivy.to_numpy(traj.states), np.float64)
         visited = np.concatenate([initial[None], after[:-1]])
+        inside = in_tube(expert, visited, args.tube)
         new_labels = np.stack([expert(s, t) for t, s in enumerate(visited)])
-        states = np.concatenate([states, visited])
-        labels = np.concatenate([labels, new_labels])
+        states = np.concatenate([states, visited[inside]])
+        labels = np.concatenate([labels, new_labels[inside]])
         v, loss = imitation.fit(v, env, states, labels, args.fit_iterations)
-        report(f"DAgger round {r + 1} ({len(states) * 256} states, loss {loss:.3g})", v)
+        report(f"DAgger round {r + 1} ({len(states)} states, loss {loss:.3g})", v)
     if args.refine:
         result = ivy_gym.optimise_policy(
             env, policy, args.horizon // 2, args.refine, v=v, lr=1e-4, window=25,
