@@ -48,7 +48,11 @@ def step_jacobians(env, xp, backend):
     ``(T, 6, 1)`` at ``states[t]``, ``actions[t]`` (float64 numpy), through the backend's
     autodiff (compiled on jax and tensorflow)."""
     n = env.state_dim
-    jac = ivy.jacobian(lambda z: env.step(z[..., :n], z[..., n:], f=xp)[0], batch_dims=1)
+    # tensorflow's vectorised Jacobian (pfor) does not get through the step's loops
+    method = "native" if xp.capabilities.vectorised_jacobian else "replicate"
+    jac = ivy.jacobian(
+        lambda z: env.step(z[..., :n], z[..., n:], f=xp)[0], batch_dims=1, method=method
+    )
     jac = jac if backend == "torch" else ivy.compile_fn(jac, f=xp)
 
     def jacobians(states, actions):
