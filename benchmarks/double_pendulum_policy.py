@@ -218,24 +218,33 @@ class Imitation:
         return v, float(ivy.to_numpy(loss))
 
 
-def evaluation(env, xp, policy, backend, horizon, hold, seed=123):
-    """``evaluate(v) -> (share, median return)``: the share of 256 fresh starts (the same ones
-    at every call) the policy solves, and the median of their returns; the rollouts compiled
-    on jax and tensorflow (eager, jax's took 3 minutes against 6 s compiled)."""
-    xp.seed(seed)
-    initial = env.reset((256,), f=xp)
+def policy_rollouts(env, xp, policy, backend, horizon):
+    """``run(v, initial) -> (states, rewards)``: the policy's rollouts from ``initial`` as
+    float64 and float32 numpy arrays, compiled on jax and tensorflow (eager, an evaluation
+    took jax 3 minutes against 6 s compiled)."""
 
-    def run(v):
+    def rollout(v, initial):
         traj = ivy_gym.rollout(env, initial, policy=policy, v=v, horizon=horizon, f=xp)
         return traj.states, traj.rewards
 
-    run = run if backend == "torch" else ivy.compile_fn(run, f=xp)
+    rollout = rollout if backend == "torch" else ivy.compile_fn(rollout, f=xp)
+
+    def run(v, initial):
+        states, rewards = rollout(v, xp.asarray(initial, dtype="float32"))
+        return np.asarray(ivy.to_numpy(states), np.float64), ivy.to_numpy(rewards)
+
+    return run
+
+
+def evaluation(env, xp, run, hold, seed=123):
+    """``evaluate(v) -> (share, median return)``: the share of 256 fresh starts (the same ones
+    at every call) that ``run``'s rollouts solve, and the median of their returns."""
+    xp.seed(seed)
+    initial = env.reset((256,), f=xp)
 
     def evaluate(v):
-        states, rewards = run(v)
-        states = np.asarray(ivy.to_numpy(states), np.float64)
-        ret = float(np.median(ivy.to_numpy(rewards).sum(axis=0)))
-        return float(solved(states, hold).mean()), ret
+        states, rewards = run(v, initial)
+        return float(solved(states, hold).mean()), float(np.median(rewards.sum(axis=0)))
 
     return evaluate
 
@@ -288,7 +297,10 @@ def main():
         output_activation="tanh", dtype="float32", f=xp,
     )  # fmt: skip
     imitation = Imitation(policy, xp, args.backend)
-    evaluate = evaluation(env, xp, policy, args.backend, args.horizon, args.hold)
+    evaluate = evaluation(
+        env, xp, policy_rollouts(env, xp, policy, args.backend, args.horizon), args.hold
+    )
+    visit = policy_rollouts(env, xp, policy, args.backend, args.horizon // 2)
     rng = np.random.default_rng(1)
     states, labels, _ = expert.rollout(
         step, env.draw_initial(rng, 256), args.horizon // 2, args.noise, rng
@@ -299,11 +311,7 @@ def main():
     report(f"imitation of the expert's noisy rollouts (loss {loss:.3g})", v)
     for r in range(args.rounds):
         initial = env.draw_initial(rng, 256)
-        traj = ivy_gym.rollout(
-            env, xp.asarray(initial, dtype="float32"), policy=policy, v=v,
-            horizon=args.horizon // 2, f=xp,
-        )  # fmt: skip
-        after = np.asarray(ivy.to_numpy(traj.states), np.float64)
+        after = visit(v, initial)[0]
         visited = np.concatenate([initial[None], after[:-1]])
         inside = in_tube(expert, visited, args.tube)
         new_labels = np.stack([expert(s, t) for t, s in enumerate(visited)])
