@@ -46,17 +46,27 @@ STATE_COST = np.diag([1.0, 10.0, 10.0, 0.1, 0.1, 0.1])
 ACTION_COST = np.array([[1.0]])
 
 
-def step_jacobians(env, xp, backend):
+def compiled(fn, xp):
+    """``fn`` compiled where the backend's compiler keeps loops (jax, tensorflow; the rule of
+    ``ivy_gym``'s ``compile=None``); eager elsewhere: torch.compile unrolls the rollouts' loops
+    and takes longer than the eager work."""
+    caps = xp.capabilities
+    return ivy.compile_fn(fn, f=xp) if caps.compilation and caps.compiled_loops else fn
+
+
+def step_jacobians(env, xp):
     """``jacobians(states, actions) -> (A, B)``: the step's Jacobians ``(T, 6, 6)`` and
     ``(T, 6, 1)`` at ``states[t]``, ``actions[t]`` (float64 numpy), through the backend's
     autodiff (compiled on jax and tensorflow)."""
     n = env.state_dim
     # tensorflow's vectorised Jacobian (pfor) does not get through the step's loops
     method = "native" if xp.capabilities.vectorised_jacobian else "replicate"
-    jac = ivy.jacobian(
-        lambda z: env.step(z[..., :n], z[..., n:], f=xp)[0], batch_dims=1, method=method
+    jac = compiled(
+        ivy.jacobian(
+            lambda z: env.step(z[..., :n], z[..., n:], f=xp)[0], batch_dims=1, method=method
+        ),
+        xp,
     )
-    jac = jac if backend == "torch" else ivy.compile_fn(jac, f=xp)
 
     def jacobians(states, actions):
         z = xp.asarray(np.concatenate([states, actions], axis=-1), dtype="float64")
@@ -119,14 +129,14 @@ class Expert:
         return np.stack(before), np.stack(labels), np.stack(after)
 
 
-def host_step(env, xp, backend):
+def host_step(env, xp):
     """``step(state, action)`` on float64 numpy arrays, through the backend (compiled where
     the backend's compiler keeps loops: jax and tensorflow)."""
 
     def kernel(state, action):
         return env.step(state, action, f=xp)[0]
 
-    kernel = kernel if backend == "torch" else ivy.compile_fn(kernel, f=xp)
+    kernel = compiled(kernel, xp)
 
     def step(state, action):
         state = kernel(xp.asarray(state, dtype="float64"), xp.asarray(action, dtype="float64"))
@@ -191,7 +201,7 @@ class Imitation:
     """Adam on the mean squared error between the policy's and the expert's actions, on
     minibatches of ``batch_size`` states drawn at random from all the states so far."""
 
-    def __init__(self, policy, xp, backend, lr=1e-3, batch_size=16384):
+    def __init__(self, policy, xp, lr=1e-3, batch_size=16384):
         self.policy, self.xp, self.opt = policy, xp, ivy.Adam(lr, f=xp)
         self.batch_size, self.rng = batch_size, np.random.default_rng(2)
 
@@ -203,8 +213,7 @@ class Imitation:
             v, opt_state = self.opt.step(v, grads, opt_state)
             return v, opt_state, loss
 
-        # torch.compile takes longer than the whole eager fit
-        self.update = update if backend == "torch" else ivy.compile_fn(update, f=xp)
+        self.update = compiled(update, xp)
 
     def fit(self, v, env, states, actions, iterations):
         obs = ivy.to_numpy(env.observe(self.xp.asarray(states.reshape(-1, 6)), f=self.xp))
@@ -218,7 +227,7 @@ class Imitation:
         return v, float(ivy.to_numpy(loss))
 
 
-def policy_rollouts(env, xp, policy, backend, horizon):
+def policy_rollouts(env, xp, policy, horizon):
     """``run(v, initial) -> (states, rewards)``: the policy's rollouts from ``initial`` as
     float64 and float32 numpy arrays, compiled on jax and tensorflow (eager, an evaluation
     took jax 3 minutes against 6 s compiled)."""
@@ -227,7 +236,7 @@ def policy_rollouts(env, xp, policy, backend, horizon):
         traj = ivy_gym.rollout(env, initial, policy=policy, v=v, horizon=horizon, f=xp)
         return traj.states, traj.rewards
 
-    rollout = rollout if backend == "torch" else ivy.compile_fn(rollout, f=xp)
+    rollout = compiled(rollout, xp)
 
     def run(v, initial):
         states, rewards = rollout(v, xp.asarray(initial, dtype="float32"))
@@ -281,8 +290,8 @@ def main():
             np.savez(args.save_policy, *[np.asarray(ivy.to_numpy(x)) for x in leaves])
 
     nominal = nominal_swing_ups(env, args)
-    step = host_step(env, xp, args.backend)
-    jacobians = step_jacobians(env, xp, args.backend)
+    step = host_step(env, xp)
+    jacobians = step_jacobians(env, xp)
     expert, share = choose_expert(
         env, jacobians, step, nominal, args.horizon, args.hold, args.noise
     )
@@ -296,11 +305,9 @@ def main():
         env.observation_dim, (64, 64), env.action_dim, activation="tanh",
         output_activation="tanh", dtype="float32", f=xp,
     )  # fmt: skip
-    imitation = Imitation(policy, xp, args.backend)
-    evaluate = evaluation(
-        env, xp, policy_rollouts(env, xp, policy, args.backend, args.horizon), args.hold
-    )
-    visit = policy_rollouts(env, xp, policy, args.backend, args.horizon // 2)
+    imitation = Imitation(policy, xp)
+    evaluate = evaluation(env, xp, policy_rollouts(env, xp, policy, args.horizon), args.hold)
+    visit = policy_rollouts(env, xp, policy, args.horizon // 2)
     rng = np.random.default_rng(1)
     states, labels, _ = expert.rollout(
         step, env.draw_initial(rng, 256), args.horizon // 2, args.noise, rng
