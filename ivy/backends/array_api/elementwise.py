@@ -8,7 +8,9 @@ nothing here converts integer inputs.
 
 from __future__ import annotations
 
+from ivy.backends import _signed_zeros
 from ivy.backends._clip_args import clip_bounds
+from ivy.backends._reals import scalar_operands
 from ivy.backends.array_api._unbound import backend_ns, xp
 
 NATIVE = {
@@ -28,7 +30,7 @@ NATIVE = {
 SCALAR_OPERANDS = {
     name: name
     for name in (
-        "add subtract multiply floor_divide remainder pow maximum minimum "
+        "add subtract multiply floor_divide remainder pow "
         "bitwise_and bitwise_or bitwise_xor bitwise_left_shift bitwise_right_shift "
         "equal not_equal less less_equal greater greater_equal"
     ).split()
@@ -83,3 +85,28 @@ def nan_to_num(x, /, *, nan=0.0, posinf=None, neginf=None):
     return xp.where(
         x == -xp.inf, xp.asarray(info.min if neginf is None else neginf, dtype=x.dtype), x
     )
+
+
+def _zero_ties(native_name: str, lower: bool):
+    """The native ``minimum`` or ``maximum`` with IEEE's signed zeros at a tie of zeros
+    (``ivy/backends/_signed_zeros.py``; numpy's, which array libraries on numpy share, returns
+    the second operand), Python scalars promoted as ivy's rules say."""
+    native = getattr(xp, native_name)
+
+    def arrays(x1, x2):
+        out = native(x1, x2)
+        if not xp.isdtype(out.dtype, "real floating"):
+            return out
+        return _signed_zeros.zero_ties(xp.where, x1, x2, out, lower)
+
+    return scalar_operands(arrays, native_name)
+
+
+def maximum(x1, x2, /):
+    """The larger of each pair; ``+0`` above ``-0``."""
+    return _zero_ties("maximum", False)(x1, x2)
+
+
+def minimum(x1, x2, /):
+    """The smaller of each pair; ``-0`` below ``+0``."""
+    return _zero_ties("minimum", True)(x1, x2)

@@ -12,7 +12,9 @@ from __future__ import annotations
 import jax
 import jax.numpy as jnp
 
+from ivy import framework_handler as _fh
 from ivy.backends import _complex_special, _reals
+from ivy.backends._clip_args import clip_bounds
 
 _XP = _complex_special.namespace(jnp, complex=jax.lax.complex)
 
@@ -78,3 +80,28 @@ def abs(x, /):  # noqa: A001 - the Array API name
         infinite = jnp.isinf(jnp.real(x)) | jnp.isinf(jnp.imag(x))
         return jnp.where(infinite, jnp.asarray(jnp.inf, out.dtype), out)
     return out
+
+
+def clip(x, /, min=None, max=None):  # noqa: A002 - the Array API names
+    """``jnp.clip``'s values with torch's and tensorflow's gradient: 1 where ``x`` equals a bound
+    (``jnp.clip`` is ``minimum(maximum(x, min), max)``, whose gradient is 1/2 there, so that a
+    bilinear sample clamped to the image's edge got half the gradient of the other backends).
+    The result has ``x``'s dtype whatever the bounds' (``ivy/backends/_clip_args.py``)."""
+    x = jnp.asarray(x)
+    if min is None and max is None:
+        return jnp.array(x, copy=True)
+    low, high = clip_bounds(_fh.load_backend("jax"), x, min, max)
+    if x.dtype == jnp.bool_:
+        if low is not None:
+            x = jnp.logical_or(x, low)
+        return x if high is None else jnp.logical_and(x, high)
+    if low is not None:
+        x = jnp.where(x < low, jnp.asarray(low, dtype=x.dtype), x)
+    if high is not None:
+        x = jnp.where(x > high, jnp.asarray(high, dtype=x.dtype), x)
+    return x
+
+
+# jax's own minimum and maximum order -0 below +0 already (``ivy/backends/_signed_zeros.py``)
+maximum = _reals.scalar_operands(jnp.maximum, "maximum")
+minimum = _reals.scalar_operands(jnp.minimum, "minimum")

@@ -3,9 +3,27 @@
 
 from __future__ import annotations
 
+import jax
 import jax.numpy as jnp
 
+from ivy.backends import _signed_zeros
 from ivy.backends.jax._helpers import as_inexact
+
+
+def det(x, /):
+    """A singular matrix's determinant is ``+0`` (``ivy/backends/_signed_zeros.py``)."""
+    out = jnp.linalg.det(as_inexact(x))
+    if jnp.iscomplexobj(out):
+        return out
+    return _signed_zeros.positive_zero(jnp.where, jax.lax.stop_gradient, out)
+
+
+def slogdet(x, /):
+    """The sign of a singular matrix's determinant is ``0``, not ``-0``."""
+    out = jnp.linalg.slogdet(as_inexact(x))
+    if jnp.iscomplexobj(out.sign):
+        return out
+    return out._replace(sign=jnp.where(out.sign == 0, jnp.zeros_like(out.sign), out.sign))
 
 
 def matrix_rank(x, /, *, rtol=None):

@@ -12,7 +12,16 @@ from ivy.backends.jax._helpers import default_int
 from ivy.core._results import TopKResult
 
 argsort = jnp.argsort
-sort = jnp.sort
+
+
+def sort(x, /, *, axis=-1, descending=False, stable=True):
+    """``jnp.sort``; descending, the reverse of the ascending sort of the reversed array, so that
+    equal elements (``-0`` and ``+0`` among them) keep their order as numpy's stable sort and the
+    other backends keep it (``jnp.sort(descending=True)`` reverses the ascending sort, which
+    reverses them)."""
+    if not descending:
+        return jnp.sort(x, axis=axis, stable=stable)
+    return jnp.flip(jnp.sort(jnp.flip(x, axis), axis=axis, stable=stable), axis)
 
 
 _BITS = {

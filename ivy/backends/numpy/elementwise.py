@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ivy.backends import _complex_special, _reals
+from ivy.backends import _complex_special, _reals, _signed_zeros
 
 
 def _complex(re, im):
@@ -33,3 +33,25 @@ def _fixed(name: str):
 expm1 = _fixed("expm1")
 sign = _fixed("sign")
 tanh = _fixed("tanh")
+
+
+def _with_zero_ties(native, lower: bool):
+    """numpy's ``minimum`` or ``maximum`` with IEEE's signed zeros at a tie of zeros (numpy
+    returns the second operand; ``ivy/backends/_signed_zeros.py``)."""
+
+    def fn(x1, x2, /):
+        out = native(x1, x2)
+        if getattr(out, "dtype", None) is None or out.dtype.kind != "f":
+            return out
+        both = np.logical_and(np.equal(x1, 0), np.equal(x2, 0))
+        if not both.any():  # (numpy is eager: a test is cheaper than the fix)
+            return out
+        fixed = _signed_zeros.zero_ties(np.where, x1, x2, out, lower).astype(out.dtype)
+        return fixed if np.ndim(out) else fixed[()]
+
+    fn.__name__ = fn.__qualname__ = native.__name__
+    return fn
+
+
+maximum = _reals.scalar_operands(_with_zero_ties(np.maximum, lower=False), "maximum")
+minimum = _reals.scalar_operands(_with_zero_ties(np.minimum, lower=True), "minimum")

@@ -16,12 +16,26 @@ def prod(x, /, *, axis=None, dtype=None, keepdims=False):
     return np.prod(x, axis=axis, dtype=native_dtype(dtype), keepdims=keepdims)
 
 
+def _signed_zero(x, out, axis, keepdims, lower: bool):
+    """``out``, numpy's ``min`` or ``max`` of ``x``, with IEEE's sign of a zero result (numpy's
+    depends on the array's length; ``ivy/backends/_signed_zeros.py``)."""
+    if out.dtype.kind != "f" or not np.any(out == 0):  # (eager: a test is cheaper than the fix)
+        return out
+    x = np.asarray(x)
+    zeros = np.equal(x, 0)
+    signed = np.signbit(x) if lower else np.logical_not(np.signbit(x))
+    found = np.any(np.logical_and(zeros, signed), axis=axis, keepdims=keepdims)
+    negative = found if lower else np.logical_not(found)
+    fixed = np.where(out == 0, np.where(negative, -0.0, 0.0).astype(out.dtype), out)
+    return fixed if np.ndim(out) else fixed[()]
+
+
 def min(x, /, *, axis=None, keepdims=False):
-    return np.min(x, axis=axis, keepdims=keepdims)
+    return _signed_zero(x, np.min(x, axis=axis, keepdims=keepdims), axis, keepdims, True)
 
 
 def max(x, /, *, axis=None, keepdims=False):
-    return np.max(x, axis=axis, keepdims=keepdims)
+    return _signed_zero(x, np.max(x, axis=axis, keepdims=keepdims), axis, keepdims, False)
 
 
 def cumulative_sum(x, /, *, axis=None, dtype=None, include_initial=False):

@@ -15,7 +15,13 @@ from ivy.backends.tensorflow._helpers import as_inexact
 _SQRT_HALF = math.sqrt(0.5)
 _SQRT_2_OVER_PI = math.sqrt(2 / math.pi)
 
-relu = tf.nn.relu
+
+def relu(x, /):
+    """``max(0, x)``, with ``relu(-0) = +0`` as on every backend (``tf.nn.relu`` keeps ``-0``;
+    ``ivy/backends/_signed_zeros.py``): tf's maximum returns its first operand at a tie, and
+    its gradient at 0 is relu's, 0."""
+    x = tf.convert_to_tensor(x)
+    return tf.math.maximum(tf.zeros((), x.dtype), x)
 
 
 def sigmoid(x, /):

@@ -21,7 +21,7 @@ import math
 import tensorflow as tf
 
 from ivy import framework_handler as _fh
-from ivy.backends import _int_scalars
+from ivy.backends import _int_scalars, _signed_zeros
 from ivy.backends._clip_args import clip_bounds
 from ivy.backends._complex_special import namespace, wrap
 from ivy.backends.tensorflow._helpers import (
@@ -207,8 +207,24 @@ greater = _binary(tf.math.greater, "greater", bools=True)
 greater_equal = _binary(tf.math.greater_equal, "greater_equal", bools=True)
 less = _binary(tf.math.less, "less", bools=True)
 less_equal = _binary(tf.math.less_equal, "less_equal", bools=True)
-maximum = _binary(tf.math.maximum, "maximum", bools=True)
-minimum = _binary(tf.math.minimum, "minimum", bools=True)
+
+
+def _zero_ties(native, lower: bool):
+    """tf's ``minimum`` or ``maximum`` with IEEE's signed zeros at a tie of zeros (tf returns the
+    first operand; ``ivy/backends/_signed_zeros.py``)."""
+
+    def fn(x1, x2):
+        out = native(x1, x2)
+        if not out.dtype.is_floating:
+            return out
+        return _signed_zeros.zero_ties(tf.where, x1, x2, out, lower)
+
+    fn.__name__ = native.__name__
+    return fn
+
+
+maximum = _binary(_zero_ties(tf.math.maximum, False), "maximum", bools=True)
+minimum = _binary(_zero_ties(tf.math.minimum, True), "minimum", bools=True)
 multiply = _binary(tf.math.multiply, "multiply", bools=True)
 not_equal = _binary(tf.math.not_equal, "not_equal")
 
@@ -280,10 +296,12 @@ def clip(x, /, min=None, max=None):
         if min is not None:
             x = tf.math.logical_or(x, tensor_of(min, tf.bool))
         return x if max is None else tf.math.logical_and(x, tensor_of(max, tf.bool))
+    # tf's own maximum and minimum: their gradient passes to x at a bound (ivy's split it at
+    # a tie of zeros), as torch's clamp and ivy.jax.clip
     if min is not None:
-        x = maximum(x, tensor_of(min, x.dtype))
+        x = tf.math.maximum(x, tensor_of(min, x.dtype))
     if max is not None:
-        x = minimum(x, tensor_of(max, x.dtype))
+        x = tf.math.minimum(x, tensor_of(max, x.dtype))
     return x
 
 

@@ -12,6 +12,7 @@ import math
 import numpy as np
 import tensorflow as tf
 
+from ivy.backends import _signed_zeros
 from ivy.backends.tensorflow._helpers import (
     FAST_TYPES,
     REFUSED,
@@ -106,7 +107,11 @@ def cross(x1, x2, /, *, axis=-1):
 
 
 def det(x, /):
-    return tf.linalg.det(floating(x))
+    """A singular matrix's determinant is ``+0`` (``ivy/backends/_signed_zeros.py``)."""
+    out = tf.linalg.det(floating(x))
+    if out.dtype.is_complex:
+        return out
+    return _signed_zeros.positive_zero(tf.where, tf.stop_gradient, out)
 
 
 def diagonal(x, /, *, offset=0):
@@ -220,6 +225,8 @@ def slogdet(x, /):
     sign, logabsdet = tf.linalg.slogdet(floating(x))
     if logabsdet.dtype.is_complex:
         logabsdet = tf.math.real(logabsdet)
+    else:  # a singular matrix's sign is 0, not -0
+        sign = _signed_zeros.positive_zero(tf.where, tf.stop_gradient, sign)
     return SlogdetResult(sign, logabsdet)
 
 

@@ -7,6 +7,7 @@ import math
 import tensorflow as tf
 
 from ivy._args.axes import cumulative_axis
+from ivy.backends import _signed_zeros
 from ivy.backends.tensorflow._helpers import (
     floating,
     native_dtype,
@@ -39,7 +40,15 @@ def _extremum(native, name: str):
                 )
         if x.dtype is tf.bool:
             return tf.cast(native(tf.cast(x, tf.uint8), axis=axis, keepdims=keepdims), tf.bool)
-        return native(x, axis=axis, keepdims=keepdims)
+        out = native(x, axis=axis, keepdims=keepdims)
+        if not x.dtype.is_floating:
+            return out
+        # IEEE's sign of a zero result (``ivy/backends/_signed_zeros.py``): 1 / -0 is -inf
+        lower = name == "min"
+        signed = tf.math.reciprocal(x) < 0 if lower else tf.math.reciprocal(x) > 0
+        found = tf.reduce_any(tf.logical_and(x == 0, signed), axis=axis, keepdims=keepdims)
+        negative = found if lower else tf.logical_not(found)
+        return _signed_zeros.reduced_zero(tf.where, tf.stop_gradient, out, negative)
 
     fn.__name__ = fn.__qualname__ = name
     return fn

@@ -7,7 +7,13 @@ import torch.nn.functional as F
 
 from ivy.backends.torch._helpers import as_inexact
 
-relu = torch.relu
+
+def relu(x, /):
+    """``max(x, 0)``, with ``relu(-0) = +0`` as on every backend (``torch.relu`` keeps ``-0``;
+    ``ivy/backends/_signed_zeros.py``): torch's ``threshold``, one kernel as well."""
+    return torch.threshold(x, 0, 0)
+
+
 sigmoid = torch.sigmoid
 
 

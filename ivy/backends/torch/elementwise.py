@@ -15,7 +15,7 @@ import numpy as np
 import torch
 
 from ivy import framework_handler as _fh
-from ivy.backends import _int_scalars
+from ivy.backends import _int_scalars, _signed_zeros
 from ivy.backends._clip_args import clip_bounds
 from ivy.backends._complex_special import namespace, wrap
 from ivy.backends.torch._helpers import (
@@ -238,10 +238,26 @@ logical_or = _logical(torch.logical_or, "logical_or")
 logical_xor = _logical(torch.logical_xor, "logical_xor")
 
 
+def _zero_ties(native, lower: bool):
+    """torch's ``minimum`` or ``maximum`` with IEEE's signed zeros at a tie of zeros (torch
+    returns the first operand; ``ivy/backends/_signed_zeros.py``)."""
+
+    def fn(x1, x2):
+        out = native(x1, x2)
+        if not out.is_floating_point():
+            return out
+        return _signed_zeros.zero_ties(torch.where, x1, x2, out, lower)
+
+    fn.__name__ = native.__name__
+    return fn
+
+
 def _extremum(native, bound: str, name: str):
     """maximum or minimum: torch's own for tensors (promoted as ivy's rules say), ``clamp`` with
-    a Python scalar (faster than making the scalar a tensor; NaN propagates)."""
-    tensors = _binary(native, name, "order")
+    a Python scalar (faster than making the scalar a tensor; NaN propagates); IEEE's signed
+    zeros at a tie of zeros."""
+    lower = bound == "max"
+    tensors = _binary(_zero_ties(native, lower), name, "order")
     clamped = unsigned_safe(torch.clamp, name, "order", (0, 1, 2))
 
     def fn(x1, x2, /):
@@ -254,9 +270,10 @@ def _extremum(native, bound: str, name: str):
             return tensors(*with_tensor_operands(x1, x2))
         if isinstance(scalar, float) and not (x.is_floating_point()):
             return tensors(*with_tensor_operands(x1, x2))  # int and float: a float result
-        if bound == "min":
-            return clamped(x, scalar, None)
-        return clamped(x, None, scalar)
+        out = clamped(x, scalar, None) if bound == "min" else clamped(x, None, scalar)
+        if scalar == 0 and out.is_floating_point():  # a tie of zeros is possible
+            return _signed_zeros.zero_ties(torch.where, x, scalar, out, lower)
+        return out
 
     fn.__name__ = fn.__qualname__ = name
     return fn

@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import torch
 
+from ivy.backends import _signed_zeros
 from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
 from ivy.backends.torch._unsigned import promoted, unsigned_safe, work_dtype
+from ivy.core.linalg import SlogdetResult
 from ivy.errors import ShapeError
 
 diagonal = torch.linalg.diagonal  # (x, *, offset=0) over the last two axes
@@ -66,10 +68,12 @@ def cross(x1, x2, /, *, axis=-1):
 
 
 def det(x, /):
+    """A singular matrix's determinant is ``+0`` (``ivy/backends/_signed_zeros.py``)."""
     x = as_inexact(x)
-    if x.requires_grad and not x.is_complex():
-        return _Det.apply(x)
-    return torch.linalg.det(x)
+    if x.is_complex():
+        return torch.linalg.det(x)
+    out = _Det.apply(x) if x.requires_grad else torch.linalg.det(x)
+    return _signed_zeros.positive_zero(torch.where, torch.Tensor.detach, out)
 
 
 class _Det(torch.autograd.Function):
@@ -140,7 +144,11 @@ def qr(x, /, *, mode="reduced"):
 
 
 def slogdet(x, /):
-    return torch.linalg.slogdet(as_inexact(x))
+    """The sign of a singular matrix's determinant is ``0``, not ``-0``."""
+    sign, logabsdet = torch.linalg.slogdet(as_inexact(x))
+    if not sign.is_complex():
+        sign = _signed_zeros.positive_zero(torch.where, torch.Tensor.detach, sign)
+    return SlogdetResult(sign, logabsdet)
 
 
 def solve(x1, x2, /):

@@ -7,6 +7,7 @@ import math
 import torch
 
 from ivy._args.axes import cumulative_axis, too_few_for_correction
+from ivy.backends import _signed_zeros
 from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
 from ivy.backends.torch._unsigned import WIDE_UNSIGNED, unsigned_safe, work_dtype
 
@@ -61,14 +62,28 @@ _amin = unsigned_safe(torch.amin, "min", "order", (0,))
 _amax = unsigned_safe(torch.amax, "max", "order", (0,))
 
 
+def _signed_zero(x, out, dim, keepdim, lower: bool):
+    """``out``, torch's ``amin`` or ``amax`` of ``x``, with IEEE's sign of a zero result
+    (``ivy/backends/_signed_zeros.py``)."""
+    if not out.is_floating_point():
+        return out
+    signed = torch.signbit(x) if lower else torch.logical_not(torch.signbit(x))
+    hits = torch.logical_and(x == 0, signed)
+    found = torch.any(hits) if dim is None else torch.any(hits, dim=dim, keepdim=keepdim)
+    if dim is None and keepdim:
+        found = found.reshape((1,) * x.ndim)
+    negative = found if lower else torch.logical_not(found)
+    return _signed_zeros.reduced_zero(torch.where, torch.Tensor.detach, out, negative)
+
+
 def min(x, /, *, axis=None, keepdims=False):
     x, dim, keepdim = reduction_args(x, axis, keepdims)
-    return _amin(x, dim=dim, keepdim=keepdim)
+    return _signed_zero(x, _amin(x, dim=dim, keepdim=keepdim), dim, keepdim, True)
 
 
 def max(x, /, *, axis=None, keepdims=False):
     x, dim, keepdim = reduction_args(x, axis, keepdims)
-    return _amax(x, dim=dim, keepdim=keepdim)
+    return _signed_zero(x, _amax(x, dim=dim, keepdim=keepdim), dim, keepdim, False)
 
 
 def var(x, /, *, axis=None, correction=0.0, keepdims=False):
