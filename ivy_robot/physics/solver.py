@@ -1,0 +1,670 @@
+"""The constraint solver: MuJoCo's ``mj_fwdConstraint`` (warm start, Newton, PGS) for every backend.
+
+Input is what MuJoCo holds after ``mj_makeConstraint`` and ``mj_fwdAcceleration``, as a
+:class:`ConstraintProblem` of arrays with any leading batch shape, plus the static kind of each
+constraint row (:data:`ROW_EQUALITY`, :data:`ROW_FRICTION`, :data:`ROW_ONE_SIDED`; see
+:func:`row_kinds`). Rows that do not exist in a batch element are masked by ``active``: they may
+sit anywhere among the others and change nothing. Output is a :class:`ConstraintSolution`.
+
+Both solvers minimise MuJoCo's convex cost of the accelerations ``qacc``::
+
+    0.5 (qacc - qacc_smooth)' M (qacc - qacc_smooth) + sum_i s_i(J_i qacc - aref_i)
+
+with ``s_i`` quadratic (``0.5 D jar^2``) on equality rows and on one-sided rows with ``jar < 0``,
+zero on one-sided rows with ``jar >= 0``, and Huber-like on friction-loss rows (linear beyond
+``|jar| >= R frictionloss``); the row forces are ``efc_force = -ds_i/djar``.
+
+- ``"newton"``: Newton's method on ``qacc`` with the Hessian ``M + J' diag(D) J`` of the rows
+  in their quadratic zone and an *exact* line search: the cost along the search direction is a
+  piecewise quadratic whose breakpoints are known, so the minimiser is found by sorting them and
+  accumulating the slopes, without iteration. It stops once a step leaves every row in its zone,
+  which makes that step the exact minimiser (the cost is strictly convex), so the result is
+  MuJoCo's to rounding whatever path either takes. Batch elements that are done stop changing;
+  the loop ends when all are done (``while_loop``: a compiled loop on jax and tensorflow, a
+  Python loop on numpy and torch).
+- ``"pgs"``: MuJoCo's projected Gauss-Seidel on the dual, iterate for iterate: its Nesterov
+  momentum with gradient restarts, its row order (a Fisher-Yates shuffle of the rows at every
+  sweep, drawn from its PCG32 generator with its fixed seed), its rejection of updates that
+  raise the cost by more than ``1e-10``, and its stopping rule (scaled improvement below the
+  tolerance). The shuffles depend only on the number of active rows; they are tabulated once
+  per ``(rows, iterations)`` in numpy.
+
+Gradients: the iterations run under ``stop_gradient``; the outputs are differentiated
+implicitly, by one Newton step taken with gradients from the solution, with the rows' zones held
+fixed (value unchanged; the derivative of the exact solution while no row changes zone). For PGS
+that is the derivative of the exact dual solution in the zones of the returned forces, not of the
+truncated iteration.
+"""
+
+from __future__ import annotations
+
+import functools
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from ivy.typing import Array
+
+__all__ = [
+    "ROW_EQUALITY",
+    "ROW_FRICTION",
+    "ROW_ONE_SIDED",
+    "ConstraintProblem",
+    "ConstraintSolution",
+    "SolverOptions",
+    "row_kinds",
+    "solve",
+]
+
+ROW_EQUALITY = 0  # unbounded force, always quadratic
+ROW_FRICTION = 1  # friction loss: force in [-frictionloss, frictionloss]
+ROW_ONE_SIDED = 2  # joint and tendon limits, pyramidal and frictionless contact rows: force >= 0
+
+# MuJoCo's mjtConstraint -> row kind (mjCNSTR_CONTACT_ELLIPTIC, 7, has no kind here)
+_KIND_OF_MUJOCO_TYPE = {0: ROW_EQUALITY, 1: ROW_FRICTION, 2: ROW_FRICTION}
+_KIND_OF_MUJOCO_TYPE.update({t: ROW_ONE_SIDED for t in (3, 4, 5, 6)})
+_COST_INCREASE_REJECTED = 1e-10  # PGS undoes a row update that raises the cost by more
+
+
+class ConstraintProblem(NamedTuple):
+    """One constraint problem per batch element, as MuJoCo holds it after ``mj_makeConstraint``
+    and ``mj_fwdAcceleration`` (leading batch shape ``[...]`` shared by every field)."""
+
+    M: Array  # [..., nv, nv] joint-space inertia with armature (mj_fullM)
+    qfrc_smooth: Array  # [..., nv]
+    qacc_smooth: Array  # [..., nv]
+    J: Array  # [..., nefc, nv] efc_J, dense
+    D: Array  # [..., nefc] efc_D
+    R: Array  # [..., nefc] efc_R
+    aref: Array  # [..., nefc] efc_aref
+    frictionloss: Array  # [..., nefc] efc_frictionloss (> 0 on friction-loss rows)
+    active: Array  # [..., nefc] bool: the rows that exist
+
+
+class ConstraintSolution(NamedTuple):
+    """The solver's output; keep ``qacc`` as the next call's ``qacc_warmstart`` (MuJoCo saves
+    ``qacc`` of a step as ``qacc_warmstart``)."""
+
+    qacc: Array  # [..., nv]
+    efc_force: Array  # [..., nefc], 0 on inactive rows
+    qfrc_constraint: Array  # [..., nv] = J' efc_force
+    iterations: Array  # [...] int: iterations each batch element took
+
+
+class SolverOptions(NamedTuple):
+    """The solver's settings, as in ``mjModel.opt`` (and ``mjModel.stat.meaninertia``).
+
+    ``ls_iterations`` and ``ls_tolerance`` are accepted for completeness: the Newton line search
+    here is exact and has no iterations. ``warmstart=False`` is MuJoCo's ``mjDSBL_WARMSTART``.
+    """
+
+    solver: str = "newton"  # "newton" or "pgs"
+    iterations: int = 100
+    tolerance: float = 1e-8
+    ls_iterations: int = 50
+    ls_tolerance: float = 0.01
+    meaninertia: float = 1.0
+    warmstart: bool = True
+
+    @classmethod
+    def from_mujoco(cls, model: Any) -> SolverOptions:
+        """The options of a compiled ``mujoco.MjModel``; what this solver does not do is refused.
+
+        Example:
+            >>> options = SolverOptions.from_mujoco(mujoco.MjModel.from_xml_path("humanoid.xml"))
+            >>> options.solver, options.iterations
+            ('pgs', 50)
+        """
+        opt = model.opt
+        names = {0: "pgs", 2: "newton"}
+        if int(opt.solver) not in names:
+            raise NotImplementedError(
+                "constraint solver: MuJoCo's CG solver is not implemented; use Newton or PGS "
+                "(model.opt.solver)"
+            )
+        if int(opt.noslip_iterations) > 0:
+            raise NotImplementedError("constraint solver: the noslip solver is not implemented")
+        if int(opt.cone) != 0:
+            raise NotImplementedError(
+                "constraint solver: elliptic friction cones are not implemented (pyramidal only)"
+            )
+        return cls(
+            solver=names[int(opt.solver)],
+            iterations=int(opt.iterations),
+            tolerance=float(opt.tolerance),
+            ls_iterations=int(opt.ls_iterations),
+            ls_tolerance=float(opt.ls_tolerance),
+            meaninertia=float(model.stat.meaninertia),
+            warmstart=not (int(opt.disableflags) & (1 << 9)),  # mjDSBL_WARMSTART
+        )
+
+
+def row_kinds(efc_type: Any) -> np.ndarray:
+    """Row kinds of MuJoCo's constraint types (``mjData.efc_type``, ``mjtConstraint`` codes).
+
+    Args:
+        efc_type: integer array of ``mjtConstraint`` codes.
+
+    Returns:
+        An int array of :data:`ROW_EQUALITY`, :data:`ROW_FRICTION` and :data:`ROW_ONE_SIDED`.
+
+    Example:
+        >>> row_kinds([0, 1, 3, 6, 6, 5])
+        array([0, 1, 2, 2, 2, 2])
+    """
+    codes = np.asarray(efc_type, dtype=np.int64).reshape(-1)
+    unknown = sorted({int(c) for c in codes} - set(_KIND_OF_MUJOCO_TYPE))
+    if unknown:
+        raise NotImplementedError(
+            f"constraint solver: constraint types {unknown} are not implemented (elliptic "
+            f"contact cones are mjCNSTR_CONTACT_ELLIPTIC = 7)"
+        )
+    return np.array([_KIND_OF_MUJOCO_TYPE[int(c)] for c in codes], dtype=np.int64)
+
+
+def solve(
+    xp: Any,
+    problem: ConstraintProblem,
+    kinds: Any,
+    qacc_warmstart: Array | None = None,
+    options: SolverOptions = SolverOptions(),
+) -> ConstraintSolution:
+    """Solve the constraint problem: MuJoCo's ``mj_fwdConstraint`` for any batch shape.
+
+    Args:
+        xp: the backend namespace (``ivy.jax``, ``ivy.torch``, ...).
+        problem: the :class:`ConstraintProblem`, float32 or float64.
+        kinds: numpy int array *[nefc]* of row kinds, static (:func:`row_kinds`).
+        qacc_warmstart: *[..., nv]* the previous accelerations (MuJoCo's ``qacc_warmstart``),
+            or None for a cold start, as ``options.warmstart=False`` gives.
+        options: :class:`SolverOptions` (:meth:`SolverOptions.from_mujoco`).
+
+    Returns:
+        The :class:`ConstraintSolution`.
+
+    Example:
+        >>> kinds = row_kinds(d.efc_type)
+        >>> sol = solve(ivy.jax, problem, kinds, qacc_warmstart, SolverOptions.from_mujoco(m))
+        >>> sol.qacc, sol.efc_force, sol.qfrc_constraint      # d.qacc, d.efc_force, ...
+    """
+    if options.solver not in ("newton", "pgs"):
+        raise ValueError(
+            f"constraint solver: solver must be 'newton' or 'pgs', got {options.solver!r}"
+        )
+    kinds = np.asarray(kinds, dtype=np.int64).reshape(-1)
+    nv, nefc = int(problem.M.shape[-1]), int(problem.J.shape[-2])
+    if kinds.shape != (nefc,):
+        raise ValueError(f"constraint solver: kinds has shape {kinds.shape}, expected ({nefc},)")
+    batch = _batch_shape(problem, qacc_warmstart)
+    flat = _flatten(xp, problem, batch, nv, nefc)
+    start = None
+    if qacc_warmstart is not None and options.warmstart:
+        start = xp.reshape(xp.broadcast_to(qacc_warmstart, (*batch, nv)), (-1, nv))
+
+    still = _rows(xp, _stopped(xp, flat), kinds)
+    if options.solver == "newton":
+        qacc, jar, iterations = _newton(xp, still, start, options)
+        zone = _zone(xp, still, jar)
+        force = _update(xp, still, jar)[0]
+        gauss = flat.qfrc_smooth
+    else:
+        force, iterations = _pgs(xp, still, start, options)
+        qacc = still.qacc_smooth + _solve_M(xp, still.M, _matvec_T(xp, still.J, force))
+        zone = _zone_of_forces(xp, still, force)
+        gauss = xp.matvec(flat.M, flat.qacc_smooth)
+    rows = still
+    if xp.capabilities.autodiff:
+        rows = _rows(xp, flat, kinds)
+        qacc, force = _implicit(xp, rows, qacc, force, zone, gauss)
+    qfrc = _matvec_T(xp, rows.J, force)
+    unflat = functools.partial(_unflatten, xp, batch)
+    return ConstraintSolution(
+        unflat(qacc), unflat(force), unflat(qfrc), xp.reshape(iterations, batch)
+    )
+
+
+# ----------------------------------------------------------------------------------------------
+# Rows: the problem flattened to one batch axis, inactive rows neutralised, zones' bounds
+# ----------------------------------------------------------------------------------------------
+
+
+class _Rows(NamedTuple):
+    M: Array  # [B, nv, nv]
+    qfrc_smooth: Array  # [B, nv]
+    qacc_smooth: Array  # [B, nv]
+    J: Array  # [B, n, nv], zero on inactive rows
+    D: Array  # [B, n], zero on inactive rows
+    R: Array  # [B, n], one on inactive rows
+    aref: Array  # [B, n]
+    floss: Array  # [B, n], frictionloss on friction rows, else 0
+    low: Array  # [B, n] jar at or below it: linear zone, force +floss (-inf: none)
+    high: Array  # [B, n] jar at or above it: force -floss (0 on one-sided rows; inf: none)
+    active: Array  # [B, n] bool
+    friction: Array  # [B, n] bool: active friction rows
+    one_sided: Array  # [B, n] bool: active one-sided rows
+
+
+def _batch_shape(problem: ConstraintProblem, qacc_warmstart) -> tuple:
+    shapes = [tuple(problem.M.shape[:-2]), tuple(problem.J.shape[:-2])]
+    shapes += [tuple(a.shape[:-1]) for a in problem[1:3] + problem[4:]]
+    if qacc_warmstart is not None:
+        shapes.append(tuple(qacc_warmstart.shape[:-1]))
+    return tuple(np.broadcast_shapes(*shapes))
+
+
+def _flatten(xp, problem: ConstraintProblem, batch, nv, nefc) -> ConstraintProblem:
+    def flat(a, tail):
+        return xp.reshape(xp.broadcast_to(a, (*batch, *tail)), (-1, *tail))
+
+    return ConstraintProblem(
+        flat(problem.M, (nv, nv)),
+        flat(problem.qfrc_smooth, (nv,)),
+        flat(problem.qacc_smooth, (nv,)),
+        flat(problem.J, (nefc, nv)),
+        *[flat(a, (nefc,)) for a in problem[4:]],
+    )
+
+
+def _unflatten(xp, batch, a):
+    return xp.reshape(a, (*batch, *a.shape[1:]))
+
+
+def _stopped(xp, problem: ConstraintProblem) -> ConstraintProblem:
+    return ConstraintProblem(*[xp.stop_gradient(a) for a in problem[:-1]], problem.active)
+
+
+def _rows(xp, p: ConstraintProblem, kinds: np.ndarray) -> _Rows:
+    like = p.D
+    active = xp.astype(p.active, xp.bool)
+    friction = xp.logical_and(active, xp.constant(kinds == ROW_FRICTION, device=xp.dev(like)))
+    one_sided = xp.logical_and(active, xp.constant(kinds == ROW_ONE_SIDED, device=xp.dev(like)))
+    zero, one = xp.zeros_like(like), xp.ones_like(like)
+    inf = xp.full_like(like, float("inf"))
+    R = xp.where(active, p.R, one)
+    floss = xp.where(friction, p.frictionloss, zero)
+    return _Rows(
+        M=p.M,
+        qfrc_smooth=p.qfrc_smooth,
+        qacc_smooth=p.qacc_smooth,
+        J=xp.where(active[..., None], p.J, xp.zeros_like(p.J)),
+        D=xp.where(active, p.D, zero),
+        R=R,
+        aref=xp.where(active, p.aref, zero),
+        floss=floss,
+        low=xp.where(friction, -R * floss, -inf),
+        high=xp.where(friction, R * floss, xp.where(one_sided, zero, inf)),
+        active=active,
+        friction=friction,
+        one_sided=one_sided,
+    )
+
+
+def _matvec_T(xp, J, f):
+    """``J' f`` for ``J`` *[B, n, nv]*, ``f`` *[B, n]*."""
+    return xp.matvec(xp.matrix_transpose(J), f)
+
+
+def _solve_M(xp, M, rhs):
+    return xp.linalg.solve(M, rhs[..., None])[..., 0]
+
+
+def _update(xp, rows: _Rows, jar):
+    """Forces, costs and zones of the rows at ``jar = J qacc - aref`` (MuJoCo's constraint
+    update): zone 0 linear at ``+floss``, 1 quadratic, 2 linear at ``-floss`` (satisfied
+    one-sided rows: force 0)."""
+    below = jar <= rows.low
+    above = xp.logical_and(jar >= rows.high, xp.logical_not(below))
+    quadratic = xp.logical_not(xp.logical_or(below, above))
+    fl = rows.floss
+    force = xp.where(quadratic, -rows.D * jar, xp.where(below, fl, xp.zeros_like(fl) - fl))
+    linear_cost = -0.5 * rows.R * fl * fl + xp.where(below, -fl, fl) * jar
+    cost = xp.where(quadratic, 0.5 * rows.D * jar * jar, linear_cost)
+    return force, cost, quadratic, below, above
+
+
+def _zone(xp, rows: _Rows, jar):
+    """Zone codes (0, 1, 2) of the rows at ``jar``."""
+    _, _, _, below, above = _update(xp, rows, jar)
+    return xp.where(below, 0, xp.where(above, 2, 1))
+
+
+def _zone_of_forces(xp, rows: _Rows, force):
+    """Zones of dual forces: quadratic where the force is strictly inside its bounds."""
+    at_high = xp.logical_and(rows.friction, force >= rows.floss)
+    at_low = xp.logical_or(
+        xp.logical_and(rows.friction, force <= -rows.floss),
+        xp.logical_and(rows.one_sided, force <= 0),
+    )
+    return xp.where(at_high, 0, xp.where(at_low, 2, 1))
+
+
+def _total_cost(xp, rows: _Rows, qacc):
+    """MuJoCo's cost of ``qacc`` (constraint cost plus the Gauss term), per batch element."""
+    jar = xp.matvec(rows.J, qacc) - rows.aref
+    cost = xp.sum(_update(xp, rows, jar)[1], axis=-1)
+    Ma = xp.matvec(rows.M, qacc)
+    return cost + 0.5 * xp.sum((Ma - rows.qfrc_smooth) * (qacc - rows.qacc_smooth), axis=-1)
+
+
+# ----------------------------------------------------------------------------------------------
+# Newton
+# ----------------------------------------------------------------------------------------------
+
+
+def _newton(xp, rows: _Rows, start, options: SolverOptions):
+    """Newton's method with exact line searches from the warm start; returns ``qacc``, its
+    ``jar`` and the iterations per batch element."""
+    qacc = rows.qacc_smooth
+    if start is not None:  # the cheaper of qacc_warmstart and qacc_smooth
+        smooth_cost = xp.sum(_update(xp, rows, xp.matvec(rows.J, qacc) - rows.aref)[1], axis=-1)
+        worse = _total_cost(xp, rows, start) > smooth_cost
+        qacc = xp.where(worse[:, None], qacc, start)
+    jar = xp.matvec(rows.J, qacc) - rows.aref
+    batch = qacc.shape[0]
+    done = xp.zeros((batch,), dtype=xp.bool, device=xp.dev(qacc))
+    count = xp.zeros((batch,), dtype=xp.int32, device=xp.dev(qacc))
+    step = xp.zeros((), dtype=xp.int32, device=xp.dev(qacc))
+
+    def keep_going(carry):
+        _, _, done, _, step = carry
+        return xp.logical_and(step < options.iterations, xp.any(xp.logical_not(done)))
+
+    def iterate(carry):
+        qacc, jar, done, count, step = carry
+        new_qacc, new_jar, settled = _newton_step(xp, rows, qacc, jar)
+        qacc = xp.where(done[:, None], qacc, new_qacc)
+        jar = xp.where(done[:, None], jar, new_jar)
+        count = count + xp.astype(xp.logical_not(done), xp.int32)
+        return qacc, jar, xp.logical_or(done, settled), count, step + 1
+
+    qacc, jar, _, count, _ = xp.while_loop(keep_going, iterate, (qacc, jar, done, count, step))
+    # rows that exist in no batch element: MuJoCo's shortcut qacc = qacc_smooth
+    qacc = xp.where(xp.any(rows.active, axis=-1)[:, None], qacc, rows.qacc_smooth)
+    jar = xp.matvec(rows.J, qacc) - rows.aref
+    return qacc, jar, count
+
+
+def _newton_step(xp, rows: _Rows, qacc, jar):
+    """One Newton step with an exact line search; also whether it left every row's zone as it
+    was (then the new point is the exact minimiser)."""
+    force, _, quadratic, _, _ = _update(xp, rows, jar)
+    Ma = xp.matvec(rows.M, qacc)
+    gauss = Ma - rows.qfrc_smooth
+    grad = gauss - _matvec_T(xp, rows.J, force)
+    DJ = xp.where(quadratic, rows.D, xp.zeros_like(rows.D))[..., None] * rows.J
+    H = rows.M + xp.matmul(xp.matrix_transpose(rows.J), DJ)
+    search = -xp.linalg.solve(H, grad[..., None])[..., 0]
+    Jv = xp.matvec(rows.J, search)
+    slope0 = xp.sum(gauss * search, axis=-1)
+    curvature = xp.sum(search * xp.matvec(rows.M, search), axis=-1)
+    alpha = _line_search(xp, rows, jar, Jv, slope0, curvature)
+    new_qacc = qacc + alpha[:, None] * search
+    new_jar = jar + alpha[:, None] * Jv
+    settled = xp.all(_zone(xp, rows, new_jar) == _zone(xp, rows, jar), axis=-1)
+    return new_qacc, new_jar, settled
+
+
+def _slopes(xp, rows: _Rows, jar, Jv, below, above):
+    """Each row's term ``I + alpha S`` of the directional derivative in the given zones."""
+    quad_I, quad_S, lin_I = rows.D * jar * Jv, rows.D * Jv * Jv, rows.floss * Jv
+    quadratic = xp.logical_not(xp.logical_or(below, above))
+    zero = xp.zeros_like(jar)
+    I = xp.where(quadratic, quad_I, xp.where(below, -lin_I, lin_I))
+    return I, xp.where(quadratic, quad_S, zero)
+
+
+def _line_search(xp, rows: _Rows, jar, Jv, slope0, curvature):
+    """The exact minimiser ``alpha >= 0`` of the cost along ``qacc + alpha search``.
+
+    The derivative along the line is continuous, piecewise linear and increasing, with a kink
+    where a row crosses a zone boundary. The boundaries crossed are sorted, the slopes summed
+    along them to find the segment where the derivative vanishes, and the root is solved in
+    that segment from the rows' zones there, summed afresh (no accumulated rounding)."""
+    zero, inf = xp.zeros_like(jar), xp.full_like(jar, float("inf"))
+    moving = Jv != 0
+    safe_Jv = xp.where(moving, Jv, xp.ones_like(Jv))
+    sign = xp.where(Jv > 0, xp.ones_like(Jv), -xp.ones_like(Jv))
+
+    def crossing(level):
+        alpha = (level - jar) / safe_Jv
+        valid = xp.logical_and(xp.logical_and(moving, xp.isfinite(level)), alpha > 0)
+        return xp.where(valid, alpha, inf), valid
+
+    at_low, low_valid = crossing(rows.low)
+    at_high, high_valid = crossing(rows.high)
+    quad_I, quad_S, lin_I = rows.D * jar * Jv, rows.D * Jv * Jv, rows.floss * Jv
+    # change of (I, S) on crossing: low (linear +floss <-> quadratic), high (quadratic <-> -floss)
+    dI = xp.concat([sign * (quad_I + lin_I), sign * (lin_I - quad_I)], axis=-1)
+    dS = xp.concat([sign * quad_S, -sign * quad_S], axis=-1)
+    valid = xp.concat([low_valid, high_valid], axis=-1)
+    dI, dS = xp.where(valid, dI, xp.zeros_like(dI)), xp.where(valid, dS, xp.zeros_like(dS))
+    crossings = xp.concat([at_low, at_high], axis=-1)
+
+    # zones just after alpha = 0
+    below = xp.logical_or(jar < rows.low, xp.logical_and(jar == rows.low, xp.logical_not(Jv > 0)))
+    above = xp.logical_or(jar > rows.high, xp.logical_and(jar == rows.high, xp.logical_not(Jv < 0)))
+    above = xp.logical_and(above, xp.logical_not(below))
+    I_rows, S_rows = _slopes(xp, rows, jar, Jv, below, above)
+    I0 = slope0 + xp.sum(I_rows, axis=-1)
+    S0 = curvature + xp.sum(S_rows, axis=-1)
+
+    order = xp.argsort(crossings, axis=-1)
+    ends = xp.take_along_axis(crossings, order, axis=-1)
+    I = xp.concat(
+        [I0[:, None], I0[:, None] + xp.cumsum(xp.take_along_axis(dI, order, axis=-1), axis=-1)],
+        axis=-1,
+    )
+    S = xp.concat(
+        [S0[:, None], S0[:, None] + xp.cumsum(xp.take_along_axis(dS, order, axis=-1), axis=-1)],
+        axis=-1,
+    )
+    upper = xp.concat([ends, inf[:, :1]], axis=-1)
+    lower = xp.concat([zero[:, :1], ends], axis=-1)
+    unbounded = xp.isinf(upper)
+    finite_upper = xp.where(unbounded, xp.zeros_like(upper), upper)
+    reached = xp.logical_or(unbounded, I + finite_upper * S >= 0)
+    segment = xp.argmax(xp.astype(reached, xp.int32), axis=-1)[:, None]
+    lo = xp.take_along_axis(lower, segment, axis=-1)[:, 0]
+    hi = xp.take_along_axis(upper, segment, axis=-1)[:, 0]
+
+    # the zones inside the segment, and the root of the derivative there
+    inside = xp.where(xp.isinf(hi), 2.0 * lo + 1.0, 0.5 * (lo + hi))
+    at = jar + inside[:, None] * Jv
+    below = at <= rows.low
+    above = xp.logical_and(at >= rows.high, xp.logical_not(below))
+    I_rows, S_rows = _slopes(xp, rows, jar, Jv, below, above)
+    I_seg = slope0 + xp.sum(I_rows, axis=-1)
+    S_seg = curvature + xp.sum(S_rows, axis=-1)
+    positive = S_seg > 0
+    alpha = xp.where(positive, -I_seg / xp.where(positive, S_seg, xp.ones_like(S_seg)), lo)
+    return xp.minimum(xp.maximum(alpha, lo), hi)
+
+
+# ----------------------------------------------------------------------------------------------
+# PGS
+# ----------------------------------------------------------------------------------------------
+
+_PCG_MULTIPLIER = 6364136223846793005
+_MASK64 = (1 << 64) - 1
+
+
+def _pcg32_stream(count: int) -> list[int]:
+    """The first ``count`` outputs of MuJoCo's PGS generator (PCG32, state 0, increment 1,
+    advanced once after seeding)."""
+    state, increment = 0, 1
+    out = []
+    for i in range(count + 1):
+        old = state
+        state = (old * _PCG_MULTIPLIER + increment) & _MASK64
+        shifted = (((old >> 18) ^ old) >> 27) & 0xFFFFFFFF
+        rotation = old >> 59
+        value = ((shifted >> rotation) | (shifted << ((-rotation) & 31))) & 0xFFFFFFFF
+        if i:  # the first output is drawn at seeding
+            out.append(value)
+    return out
+
+
+@functools.lru_cache(maxsize=16)
+def _shuffle_table(rows: int, iterations: int) -> np.ndarray:
+    """``table[n, k]``: the order in which PGS visits ``n`` active rows at iteration ``k``
+    (positions among the active rows; positions ``>= n`` hold themselves). Int32
+    *[rows + 1, iterations, rows]*."""
+    stream = np.array(_pcg32_stream(max(iterations * max(rows - 1, 0), 1)), dtype=np.uint64)
+    table = np.zeros((rows + 1, iterations, rows), dtype=np.int32)
+    order = np.tile(np.arange(rows, dtype=np.int32), (rows + 1, 1))
+    counts = np.arange(rows + 1)
+    lanes = np.arange(rows + 1)
+    for k in range(iterations):
+        for t in range(rows - 1):  # swap i = n-1-t with a draw j <= i, for every n at once
+            i = counts - 1 - t
+            live = i >= 1
+            draw = stream[np.minimum(k * np.maximum(counts - 1, 0) + t, len(stream) - 1)]
+            j = (draw % np.maximum(i + 1, 1).astype(np.uint64)).astype(np.int64)
+            i, j, lane = i[live], j[live], lanes[live]
+            order[lane, i], order[lane, j] = order[lane, j], order[lane, i].copy()
+        table[:, k] = order
+    return table
+
+
+def _pgs(xp, rows: _Rows, start, options: SolverOptions):
+    """MuJoCo's PGS iterations from the warm start; returns the forces and iterations."""
+    like = rows.D
+    batch, n = like.shape
+    MinvJT = xp.linalg.solve(rows.M, xp.matrix_transpose(rows.J))
+    AR = xp.matmul(rows.J, MinvJT) + _diag(xp, rows.R)
+    b = xp.matvec(rows.J, rows.qacc_smooth) - rows.aref
+    force = xp.zeros_like(like)
+    if start is not None:  # warm forces unless their dual cost is positive
+        warm = _update(xp, rows, xp.matvec(rows.J, start) - rows.aref)[0]
+        dual = xp.sum(warm * b, axis=-1) + 0.5 * xp.sum(warm * xp.matvec(AR, warm), axis=-1)
+        force = xp.where((dual > 0)[:, None], force, warm)
+
+    ARinv = 1.0 / _diagonal(xp, AR)
+    inf = xp.full_like(like, float("inf"))
+    lowest = xp.where(
+        rows.friction, -rows.floss, xp.where(rows.one_sided, xp.zeros_like(like), -inf)
+    )
+    highest = xp.where(rows.friction, rows.floss, inf)
+    # per row: b, 1/AR_ii, MuJoCo's AR_ii = 1/(1/AR_ii), the force's bounds
+    params = xp.stack([b, ARinv, 1.0 / ARinv, lowest, highest], axis=1)  # [B, 5, n]
+    count = xp.sum(xp.astype(rows.active, xp.int32), axis=-1)
+    active_first = xp.argsort(
+        xp.astype(xp.logical_not(rows.active), xp.int32), axis=-1, stable=True
+    )
+    table = xp.constant(_shuffle_table(n, options.iterations), device=xp.dev(like))
+    positions = xp.arange(n, device=xp.dev(like))
+    scale = 1.0 / (options.meaninertia * max(1, rows.M.shape[-1]))
+    most = xp.max(count)
+
+    def sweep(force, step):
+        """One Gauss-Seidel sweep in this iteration's order, on the problem permuted into that
+        order (so that each visit slices rather than gathers)."""
+        visits = xp.take(table[:, step], count, axis=0)  # positions among the active rows
+        order = xp.take_along_axis(active_first, visits, axis=-1)  # rows, in visiting order
+        AR_o = xp.take_along_axis(AR, xp.broadcast_to(order[:, :, None], (batch, n, n)), axis=1)
+        AR_o = xp.take_along_axis(AR_o, xp.broadcast_to(order[:, None, :], (batch, n, n)), axis=2)
+        params_o = xp.take_along_axis(
+            params, xp.broadcast_to(order[:, None, :], (batch, 5, n)), axis=2
+        )
+
+        def keep_going(carry):
+            return carry[0] < most
+
+        def visit(carry):
+            c, force, improvement = carry
+            p = params_o[:, :, c]
+            res = p[:, 0] + xp.sum(AR_o[:, c, :] * force, axis=-1)
+            old = force[:, c]
+            new = xp.minimum(xp.maximum(old - res * p[:, 1], p[:, 3]), p[:, 4])
+            delta = new - old
+            change = 0.5 * delta * delta * p[:, 2] + delta * res
+            kept = xp.logical_and(c < count, change <= _COST_INCREASE_REJECTED)
+            here = xp.logical_and(positions[None, :] == c, kept[:, None])
+            force = xp.where(here, new[:, None], force)
+            improvement = improvement - xp.where(kept, change, xp.zeros_like(change))
+            return c + 1, force, improvement
+
+        start = (
+            xp.zeros((), dtype=count.dtype, device=xp.dev(like)),
+            xp.take_along_axis(force, order, axis=-1),
+            xp.zeros_like(b[:, 0]),
+        )
+        _, force, improvement = xp.while_loop(keep_going, visit, start)
+        return xp.take_along_axis(force, xp.argsort(order, axis=-1), axis=-1), improvement
+
+    def keep_going(carry):
+        return xp.logical_and(carry[-1] < options.iterations, xp.any(xp.logical_not(carry[3])))
+
+    def iterate(carry):
+        force, previous, restarts, done, iterations, step = carry
+        k = xp.astype(restarts, like.dtype)
+        beta = xp.where(step > 0, (k - 1.0) / (k + 2.0), xp.zeros_like(k))
+        momentum = beta > 0
+        pushed = _project(xp, rows, force + beta[:, None] * (force - previous))
+        extrapolated = xp.where(momentum[:, None], pushed, force)
+        swept, improvement = sweep(extrapolated, step)
+        correction = xp.sum((swept - extrapolated) * (extrapolated - force), axis=-1)
+        restart = xp.logical_and(step > 0, correction < 0)
+        new_restarts = xp.where(restart, xp.zeros_like(restarts), restarts + 1)
+        finished = improvement * scale < options.tolerance
+        keep = done[:, None]
+        return (
+            xp.where(keep, force, swept),
+            xp.where(keep, previous, force),
+            xp.where(done, restarts, new_restarts),
+            xp.logical_or(done, finished),
+            iterations + xp.astype(xp.logical_not(done), xp.int32),
+            step + 1,
+        )
+
+    zeros_int = xp.zeros((batch,), dtype=xp.int32, device=xp.dev(like))
+    step0 = xp.zeros((), dtype=xp.int32, device=xp.dev(like))
+    done = xp.zeros((batch,), dtype=xp.bool, device=xp.dev(like))
+    carry = (force, force, zeros_int, done, zeros_int, step0)
+    force, _, _, _, iterations, _ = xp.while_loop(keep_going, iterate, carry)
+    return force, iterations
+
+
+def _project(xp, rows: _Rows, force):
+    """Forces clipped to their bounds (friction boxes, one-sided rows non-negative)."""
+    boxed = xp.minimum(xp.maximum(force, -rows.floss), rows.floss)
+    force = xp.where(rows.friction, boxed, force)
+    return xp.where(rows.one_sided, xp.maximum(force, xp.zeros_like(force)), force)
+
+
+def _diag(xp, v):
+    """Diagonal matrices *[B, n, n]* of vectors *[B, n]*."""
+    n = v.shape[-1]
+    eye = xp.eye(n, dtype=v.dtype, device=xp.dev(v))
+    return v[..., None] * eye
+
+
+def _diagonal(xp, A):
+    return xp.linalg.diagonal(A)
+
+
+# ----------------------------------------------------------------------------------------------
+# Implicit differentiation
+# ----------------------------------------------------------------------------------------------
+
+
+def _implicit(xp, rows: _Rows, qacc, force, zone, gauss):
+    """``qacc`` and ``force`` unchanged in value, with the derivatives of the exact solution in
+    the given zones: one Newton step from the (stopped) solution, taken with gradients."""
+    qacc, force = xp.stop_gradient(qacc), xp.stop_gradient(force)
+    quadratic = zone == 1
+    fl = rows.floss
+    linear = xp.where(zone == 0, fl, xp.where(zone == 2, xp.zeros_like(fl) - fl, xp.zeros_like(fl)))
+    D = xp.where(quadratic, rows.D, xp.zeros_like(rows.D))
+    jar = xp.matvec(rows.J, qacc) - rows.aref
+    grad = (
+        xp.matvec(rows.M, qacc)
+        - gauss
+        - _matvec_T(xp, rows.J, xp.where(quadratic, -D * jar, linear))
+    )
+    H = rows.M + xp.matmul(xp.matrix_transpose(rows.J), D[..., None] * rows.J)
+    stepped = qacc - xp.linalg.solve(H, grad[..., None])[..., 0]
+    stepped_force = xp.where(quadratic, -D * (xp.matvec(rows.J, stepped) - rows.aref), linear)
+    qacc = qacc + (stepped - xp.stop_gradient(stepped))
+    force = force + (stepped_force - xp.stop_gradient(stepped_force))
+    return qacc, force
