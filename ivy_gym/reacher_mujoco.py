@@ -159,10 +159,9 @@ class ReacherMuJoCo(Env):
         return centre - half, centre + half
 
     def action_bounds(self):
-        ranges = [actuator[2] for actuator in self.tree.dynamics_model.actuators]
-        if any(r is None for r in ranges):
+        ranges = np.array(self.tree.physics.actuator_ctrlrange, dtype=np.float64)
+        if not np.isfinite(ranges).all():
             raise ValueError("ReacherMuJoCo: every motor of the model needs a ctrlrange.")
-        ranges = np.array(ranges, dtype=np.float64)
         return ranges[:, 0], ranges[:, 1]
 
     def _reset_scales(self):

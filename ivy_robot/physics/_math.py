@@ -1,34 +1,116 @@
-"""Small dense algebra for the pipeline's kernels (private): 3x3 products written as
-element-wise products and sums, which XLA and inductor fuse into the surrounding loops over the
-batch (a ``matmul`` of 3x3 blocks would be one small library call each), and gathers by
-constant indices. Every helper takes the backend namespace ``xp`` first.
+"""Small dense algebra for the pipeline's kernels (private). Every helper takes the backend
+namespace ``xp`` first.
+
+Products over small, static dimensions (3x3 blocks, 6-vectors, the tree's masks) are written as
+sums of broadcast products, one term per index of the contracted dimension: element-wise code
+that XLA and inductor fuse into one loop over the batch. Measured on the CPU at batch 1,000
+(float64), a 3x3 product of ``[1000, 14, 3, 3]`` blocks took 78 us (jax) and 99 us (torch) this
+way, against 162 us and 785 us as ``matmul`` and 855 us and 107 us as a broadcast product reduced
+by ``sum``; a constant ``[14, 14]`` matrix times ``[1000, 14, 10]`` took 150 us and 221 us against
+482 us and 499 us as ``matmul``.
 """
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
-from ivy_robot.physics.model import const, index
+from ivy_robot.physics.model import const
+
+
+class Gather(NamedTuple):
+    """Constant integer indices along an axis, made once when a model is read: a slice where
+    they are contiguous (``start``, ``stop``), else a gather of ``indices``."""
+
+    indices: np.ndarray  # int64
+    start: int  # -1 when not contiguous
+    stop: int
+    whole: bool  # all of an axis of length ``size``, in order
+
+
+def gather(indices, size: int) -> Gather:
+    """A :class:`Gather` of ``indices`` along an axis of length ``size``."""
+    values = [int(i) for i in np.asarray(indices, dtype=np.int64).reshape(-1)]
+    contiguous = bool(values) and values == list(range(values[0], values[0] + len(values)))
+    return Gather(
+        indices=np.asarray(values, dtype=np.int64),
+        start=values[0] if contiguous else -1,
+        stop=values[-1] + 1 if contiguous else -1,
+        whole=contiguous and values[0] == 0 and len(values) == size,
+    )
+
+
+def contract(xp, a, b):
+    """``a @ b`` for ``a`` *[..., m, K]* and ``b`` *[..., K, n]* with a small static ``K``:
+    the sum over ``k`` of the outer products of ``a``'s columns and ``b``'s rows."""
+    total = a[..., :, 0:1] * b[..., 0:1, :]
+    for k in range(1, a.shape[-1]):
+        total = total + a[..., :, k : k + 1] * b[..., k : k + 1, :]
+    return total
 
 
 def mm(xp, a, b):
     """``a @ b`` for ``[..., 3, 3]`` blocks (broadcasting)."""
-    return xp.sum(a[..., :, :, None] * b[..., None, :, :], axis=-2)
+    return contract(xp, a, b)
 
 
 def mv(xp, a, v):
     """``a @ v`` for ``[..., 3, 3]`` and ``[..., 3]``."""
-    return xp.sum(a * v[..., None, :], axis=-1)
+    return a[..., :, 0] * v[..., 0:1] + a[..., :, 1] * v[..., 1:2] + a[..., :, 2] * v[..., 2:3]
 
 
 def mtv(xp, a, v):
     """``a^T @ v`` for ``[..., 3, 3]`` and ``[..., 3]``."""
-    return xp.sum(a * v[..., :, None], axis=-2)
+    return a[..., 0, :] * v[..., 0:1] + a[..., 1, :] * v[..., 1:2] + a[..., 2, :] * v[..., 2:3]
 
 
 def dot(xp, a, b):
-    """``sum(a * b)`` over the last axis."""
-    return xp.sum(a * b, axis=-1)
+    """``sum(a * b)`` over a last axis of static size."""
+    return sum_last(xp, a * b)
+
+
+def sum_last(xp, x):
+    """The sum over a last axis of static size, as a sum of slices."""
+    total = x[..., 0]
+    for k in range(1, x.shape[-1]):
+        total = total + x[..., k]
+    return total
+
+
+class ConstMatrix(NamedTuple):
+    """A constant matrix *[m, K]* to multiply arrays *[..., K, n]* with (:func:`cmatmul`), made
+    once: its non-zero columns as *[m, 1]* numpy arrays."""
+
+    rows: int
+    columns: tuple  # (k, column [m, 1]) for every non-zero column
+
+
+def const_matrix(matrix) -> ConstMatrix:
+    matrix = np.asarray(matrix, dtype=np.float64)
+    return ConstMatrix(
+        rows=matrix.shape[0],
+        columns=tuple(
+            (k, matrix[:, k : k + 1].copy()) for k in range(matrix.shape[1]) if matrix[:, k].any()
+        ),
+    )
+
+
+def cmatmul(xp, matrix: ConstMatrix, x):
+    """``matrix @ x`` for a :class:`ConstMatrix` *[m, K]* and ``x`` *[..., K, n]*: one term
+    per non-zero column."""
+    if not matrix.columns:
+        return _zeros_rows(xp, x, matrix.rows)
+    total = None
+    for k, column in matrix.columns:
+        term = const(xp, column, x) * x[..., k : k + 1, :]
+        total = term if total is None else total + term
+    return total
+
+
+def _zeros_rows(xp, x, rows: int):
+    zero = x[..., :1, :] * 0.0
+    return xp.concat([zero] * rows, axis=-2) if rows else x[..., :0, :]
 
 
 def cross(xp, a, b):
@@ -38,26 +120,23 @@ def cross(xp, a, b):
     return xp.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
 
 
-def take(xp, x, indices, axis: int):
-    """``x`` at the constant integer ``indices`` (numpy) along ``axis``: a slice where they are
-    contiguous, else a gather."""
-    indices = np.asarray(indices, dtype=np.int64)
-    n = x.shape[axis]
-    if len(indices) and np.array_equal(indices, np.arange(indices[0], indices[0] + len(indices))):
-        if indices[0] == 0 and len(indices) == n:
-            return x
-        key = [slice(None)] * (len(x.shape))
-        key[axis] = slice(int(indices[0]), int(indices[0]) + len(indices))
-        return x[tuple(key)]
-    return xp.take(x, index(xp, indices, x), axis=axis)
+def take(xp, x, where: Gather, axis: int):
+    """``x`` at the constant indices ``where`` (:func:`gather`) along ``axis`` (negative)."""
+    if where.whole:
+        return x
+    if where.start >= 0:
+        key = (Ellipsis, slice(where.start, where.stop)) + (slice(None),) * (-axis - 1)
+        return x[key]
+    indices = xp.constant(where.indices, dtype="int64", device=xp.dev(x))
+    return xp.take(x, indices, axis=axis)
 
 
 def quat_to_mat(xp, quat):
     """Rotation matrices ``[..., 3, 3]`` of quaternions ``[w, x, y, z]`` (normalised first;
     a zero quaternion is the identity, as MuJoCo's ``mju_normalize4``)."""
     norm = xp.safe_norm(quat, axis=-1, keepdims=True)
-    unit = xp.constant(np.array([1.0, 0.0, 0.0, 0.0]), dtype=quat.dtype, device=xp.dev(quat))
-    q = xp.where(norm < 1e-15, unit, quat / xp.where(norm < 1e-15, 1.0, norm))
+    tiny = norm < 1e-15
+    q = xp.where(tiny, const(xp, _UNIT_QUATERNION, quat), quat / xp.where(tiny, 1.0, norm))
     w, x, y, z = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
     rows = [
         [w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)],
@@ -67,8 +146,12 @@ def quat_to_mat(xp, quat):
     return xp.stack([xp.stack(row, axis=-1) for row in rows], axis=-2)
 
 
+_UNIT_QUATERNION = np.array([1.0, 0.0, 0.0, 0.0])
+EYE3 = np.eye(3)
+
+
 def eye3(xp, like):
-    return const(xp, np.eye(3), like)
+    return const(xp, EYE3, like)
 
 
 def cross_motion(xp, v, u):

@@ -1,7 +1,7 @@
 """Constraint rows and their impedance (MuJoCo's ``mj_makeConstraint``, ``mj_makeImpedance``
 and ``mj_referenceConstraint``), written once.
 
-The rows are laid out once per model, for every candidate (:func:`layout`), in MuJoCo's order:
+The rows are laid out once per model, for every candidate (:func:`plan`), in MuJoCo's order:
 
 - friction loss: one row per dof with ``frictionloss`` (``J = e_dof``, a box on its force);
 - joint limits: two rows per limited hinge or slide, lower then upper (``J = -+e_dof``), active
@@ -18,7 +18,6 @@ the reference acceleration ``aref = -B vel - K imp (pos - margin)`` from ``solre
 
 from __future__ import annotations
 
-import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -41,35 +40,50 @@ from ivy_robot.physics.model import (
 
 @dataclass(frozen=True, eq=False)
 class Layout:
-    """The candidate constraint rows of a model (numpy constants; see the module docstring)."""
+    """The candidate constraint rows of a model (numpy constants, Python flags; see the module
+    docstring)."""
 
     nefc: int
     kind: np.ndarray  # [nefc] ROW_FRICTION, ROW_LIMIT, ROW_CONTACT_*
     frictionloss: np.ndarray  # [nefc]
     margin: np.ndarray  # [nefc]
     diag_approx: np.ndarray  # [nefc]
-    solimp: np.ndarray  # [nefc, 5], clamped as MuJoCo
+    scale: np.ndarray  # [nefc]: 2 mu^2 / impratio on pyramid rows, 1 elsewhere
     stiffness: np.ndarray  # [nefc] K
     damping: np.ndarray  # [nefc] B
+    solimp: tuple  # (d0, dwidth, width, midpoint, power), each [nefc], clamped as MuJoCo
+    safe_width: np.ndarray  # [nefc] width, 1 where zero
+    has_flat: bool
+    flat: np.ndarray  # [nefc] 1.0 where the impedance is constant
+    empty: np.ndarray  # [0]
+    empty_jacobian: np.ndarray  # [0, nv]
     # friction loss
+    nf: int
     friction_dofs: np.ndarray  # [nf]
+    friction_jacobian: np.ndarray  # [nf, nv]
+    friction_zero: np.ndarray  # [nf]
     # limits: per limited joint, lower and upper rows
-    limit_qadr: np.ndarray  # [nl]
+    nl: int
+    limit_qpos: mt.Gather
     limit_dof: np.ndarray  # [nl]
     limit_side: np.ndarray  # [nl] -1 lower, +1 upper
     limit_bound: np.ndarray  # [nl] the range's end
+    limit_margin: np.ndarray  # [nl]
+    limit_jacobian: np.ndarray  # [nl, nv]
     # contacts
     ncon: int
     contact_rows: np.ndarray  # [ncon] rows per contact (1 or 4)
     contact_first_row: np.ndarray  # [ncon] index of its first row in the efc layout
-    contact_chain: np.ndarray  # [ncon, 2, nv] dof chains of the two bodies
     contact_body: np.ndarray  # [ncon, 2]
+    contact_side: tuple  # per side: (body Gather over nbody, chain [ncon, nv, 1])
     contact_friction: np.ndarray  # [ncon, 5]
-    pyramid_scale: np.ndarray  # [ncon]: R of the cone's rows / R of its normal (2 mu^2 / impratio)
-    contact_order: np.ndarray  # [sum rows] permutation from (pyramids, frictionless) to efc order
     pyramids: np.ndarray  # contacts with condim 3
+    pyramid_gather: mt.Gather
+    pyramid_mu: np.ndarray  # [npyramid, 2, 1]
     frictionless: np.ndarray  # contacts with condim 1
-    row_contact: np.ndarray  # [sum rows] the contact of each contact row (efc order)
+    frictionless_gather: mt.Gather
+    contact_order: mt.Gather  # from (pyramid edges in blocks, frictionless) to efc order
+    row_contact: mt.Gather  # the contact of each contact row, in efc order
 
 
 def _solimp(values):
@@ -103,19 +117,19 @@ def _reference(model: Model, solref, solimp, frictional: bool):
     return stiffness, damping
 
 
-@functools.cache
-def layout(model: Model) -> Layout:
-    """The constraint rows of ``model``, made once (see :class:`Layout`)."""
-    kind, floss, margin, diag, solimp, stiff, damp = [], [], [], [], [], [], []
+def plan(model: Model) -> Layout:
+    """The constraint rows of ``model``, laid out once (see :class:`Layout`)."""
+    nv = model.nv
+    kind, floss, margin, diag, scale, solimp, stiff, damp = ([] for _ in range(8))
 
-    def row(k, f, mg, d, imp, ref, frictional=False):
+    def row(k, f, mg, d, imp, ref, frictional=False, factor=1.0):
         imp = _solimp(imp)
         kk, bb = _reference(model, ref, imp, frictional)
         kind.append(k), floss.append(f), margin.append(mg), diag.append(d), solimp.append(imp)
-        stiff.append(kk), damp.append(bb)
+        stiff.append(kk), damp.append(bb), scale.append(factor)
 
     constrained = "constraint" not in model.disabled
-    friction_dofs = np.flatnonzero(model.dof_frictionloss > 0) if constrained else np.zeros(0)
+    friction_dofs = np.flatnonzero(model.dof_frictionloss > 0) if constrained else []
     for d in friction_dofs:
         row(ROW_FRICTION, model.dof_frictionloss[d], 0.0, model.dof_invweight0[d],
             model.dof_solimp[d], model.dof_solref[d], frictional=True)  # fmt: skip
@@ -130,21 +144,37 @@ def layout(model: Model) -> Layout:
                 bounds.append(model.jnt_range[j, (side + 1) // 2])
                 row(ROW_LIMIT, 0.0, model.jnt_margin[j], model.dof_invweight0[dof],
                     model.jnt_solimp[j], model.jnt_solref[j])  # fmt: skip
-    contacts = _contact_rows(model, row, len(kind))
+    nf, nl = len(friction_dofs), len(dofs)
+    contacts = _contact_rows(model, row, nf + nl)
+    solimp = np.array(solimp, dtype=np.float64).reshape(-1, 5)
+    limit_jacobian = np.zeros((nl, nv))
+    limit_jacobian[np.arange(nl), np.asarray(dofs, np.int64)] = -np.asarray(sides, np.float64)
     return Layout(
         nefc=len(kind),
         kind=np.array(kind, dtype=np.int64),
         frictionloss=np.array(floss, dtype=np.float64),
         margin=np.array(margin, dtype=np.float64),
         diag_approx=np.array(diag, dtype=np.float64),
-        solimp=np.array(solimp, dtype=np.float64).reshape(-1, 5),
+        scale=np.array(scale, dtype=np.float64),
         stiffness=np.array(stiff, dtype=np.float64),
         damping=np.array(damp, dtype=np.float64),
+        solimp=tuple(solimp[:, k].copy() for k in range(5)),
+        safe_width=np.where(solimp[:, 2] > MIN_VALUE, solimp[:, 2], 1.0),
+        has_flat=bool(np.any((solimp[:, 0] == solimp[:, 1]) | (solimp[:, 2] <= MIN_VALUE))),
+        flat=((solimp[:, 0] == solimp[:, 1]) | (solimp[:, 2] <= MIN_VALUE)).astype(np.float64),
+        empty=np.zeros(0),
+        empty_jacobian=np.zeros((0, nv)),
+        nf=nf,
         friction_dofs=np.asarray(friction_dofs, dtype=np.int64),
-        limit_qadr=np.array(qadr, dtype=np.int64),
+        friction_jacobian=np.eye(nv)[np.asarray(friction_dofs, dtype=np.int64)],
+        friction_zero=np.zeros(nf),
+        nl=nl,
+        limit_qpos=mt.gather(qadr, model.nq),
         limit_dof=np.array(dofs, dtype=np.int64),
         limit_side=np.array(sides, dtype=np.float64),
         limit_bound=np.array(bounds, dtype=np.float64),
+        limit_margin=np.array(margin[nf : nf + nl], dtype=np.float64),
+        limit_jacobian=limit_jacobian,
         **contacts,
     )
 
@@ -152,47 +182,30 @@ def layout(model: Model) -> Layout:
 def _contact_rows(model: Model, row, first: int) -> dict:
     table = model.contacts
     ncon = 0 if table is None else int(table.ncon)
-    out = dict(
-        ncon=ncon,
-        contact_rows=np.zeros(ncon, np.int64),
-        contact_first_row=np.zeros(ncon, np.int64),
-        contact_chain=np.zeros((ncon, 2, model.nv)),
-        contact_body=np.zeros((ncon, 2), np.int64),
-        contact_friction=np.zeros((ncon, 5)),
-        pyramid_scale=np.zeros(ncon),
-        contact_order=np.zeros(0, np.int64),
-        pyramids=np.zeros(0, np.int64),
-        frictionless=np.zeros(0, np.int64),
-        row_contact=np.zeros(0, np.int64),
-    )
-    if ncon == 0:
-        return out
-    bodies = model.geom_body[np.asarray(table.geom)]
-    out["contact_body"] = bodies
-    out["contact_chain"] = model.body_chain[bodies]
-    out["contact_friction"] = np.asarray(table.friction, dtype=np.float64)
-    dims = np.asarray(table.dim)
+    if ncon:
+        bodies = np.stack([np.asarray(table.body1), np.asarray(table.body2)], axis=-1)
+        friction = np.asarray(table.friction, dtype=np.float64)
+        dims = np.asarray(table.condim)
+    else:
+        bodies, friction, dims = np.zeros((0, 2), np.int64), np.zeros((0, 5)), np.zeros(0)
     pyramids = [c for c in range(ncon) if dims[c] == 3]
     plain = [c for c in range(ncon) if dims[c] == 1]
-    cursor = first
-    position = {}
+    rows_of, first_row = np.zeros(ncon, np.int64), np.zeros(ncon, np.int64)
+    cursor, position = first, {}
     for c in range(ncon):
         invweight = model.body_invweight0[bodies[c]]
         translation = invweight[0, 0] + invweight[1, 0]
-        mu = out["contact_friction"][c]
+        mu = friction[c]
         solref, solimp = table.solref[c], table.solimp[c]
         if dims[c] == 1:
-            rows = [(ROW_CONTACT_FRICTIONLESS, translation)]
+            edges = [(ROW_CONTACT_FRICTIONLESS, translation, 1.0)]
         else:
-            first_row = translation * (1.0 + mu[0] ** 2)
-            rows = [(ROW_CONTACT_PYRAMIDAL, first_row)] * 4
-            out["pyramid_scale"][c] = 2.0 * mu[0] ** 2 / max(MIN_VALUE, model.impratio)
-        out["contact_rows"][c] = len(rows)
-        out["contact_first_row"][c] = cursor
-        position[c] = cursor - first
-        for kind, diag in rows:
-            row(kind, 0.0, table.includemargin[c], diag, solimp, solref)
-        cursor += len(rows)
+            pyramid_scale = 2.0 * mu[0] ** 2 / max(MIN_VALUE, model.impratio)
+            edges = [(ROW_CONTACT_PYRAMIDAL, translation * (1.0 + mu[0] ** 2), pyramid_scale)] * 4
+        rows_of[c], first_row[c], position[c] = len(edges), cursor, cursor - first
+        for kind, diag, factor in edges:
+            row(kind, 0.0, table.includemargin[c], diag, solimp, solref, factor=factor)
+        cursor += len(edges)
     # rows are computed in blocks: the four edges of every pyramid (edge by edge: all first
     # edges, then all second...), then the frictionless rows; order maps them to efc's
     order = np.zeros(cursor - first, np.int64)
@@ -203,19 +216,33 @@ def _contact_rows(model: Model, row, first: int) -> dict:
     for q, c in enumerate(plain):
         order[position[c]] = 4 * len(pyramids) + q
         row_contact[position[c]] = c
-    out["contact_order"] = order
-    out["row_contact"] = row_contact
-    out["pyramids"] = np.array(pyramids, np.int64)
-    out["frictionless"] = np.array(plain, np.int64)
-    return out
+    sides = tuple(
+        (mt.gather(bodies[:, s], model.nbody), model.body_chain[bodies[:, s]][..., None].copy())
+        for s in range(2)
+    )
+    return dict(
+        ncon=ncon,
+        contact_rows=rows_of,
+        contact_first_row=first_row,
+        contact_body=bodies,
+        contact_side=sides,
+        contact_friction=friction,
+        pyramids=np.array(pyramids, np.int64),
+        pyramid_gather=mt.gather(pyramids, ncon),
+        pyramid_mu=friction[pyramids][:, :2, None].copy() if pyramids else np.zeros((0, 2, 1)),
+        frictionless=np.array(plain, np.int64),
+        frictionless_gather=mt.gather(plain, ncon),
+        contact_order=mt.gather(order, len(order)),
+        row_contact=mt.gather(row_contact, ncon),
+    )
 
 
 # ----------------------------------------------------------------------------------------------
-# Arrays
+# Kernels
 # ----------------------------------------------------------------------------------------------
 
 
-def point_jacobians(xp, model: Model, cdof, origin, bodies, points):
+def point_jacobians(xp, model: Model, cdof, origin, bodies, chain, points):
     """Jacobians of points fixed to bodies (MuJoCo's ``mj_jac``), transposed: the linear and
     angular velocity of each point per unit velocity of each dof.
 
@@ -224,13 +251,14 @@ def point_jacobians(xp, model: Model, cdof, origin, bodies, points):
         model: the model.
         cdof: *[..., nv, 6]* (``com_pos``).
         origin: each body's tree origin *[..., nbody, 3]* (``com_pos``).
-        bodies: the body of each point (numpy ints) *[P]*.
+        bodies: the body of each point (a :class:`~ivy_robot.physics._math.Gather`).
+        chain: their dof chains, numpy *[P, nv, 1]* (``model.body_chain[bodies][..., None]``).
         points: world positions *[..., P, 3]*.
 
     Returns:
         ``(jacp, jacr)``, each *[..., P, nv, 3]*.
     """
-    chain = const(xp, model.body_chain[np.asarray(bodies)][..., None], points)  # [P, nv, 1]
+    chain = const(xp, chain, points)
     offset = points - mt.take(xp, origin, bodies, axis=-2)  # [..., P, 3]
     angular = cdof[..., None, :, :3]  # [..., 1, nv, 3]
     linear = cdof[..., None, :, 3:] + mt.cross(xp, angular, offset[..., :, None, :])
@@ -252,48 +280,39 @@ def make_constraints(xp, model: Model, qpos, cdof, origin, contacts):
         ``{"efc_J": [..., nefc, nv], "efc_pos", "efc_active", "efc_imp", "efc_R", "efc_D":
         [..., nefc]}``.
     """
-    rows = layout(model)
+    rows = model.rows
     like = qpos
-    jacobians, positions, actives = [], [], []
     batch_zero = qpos[..., :1] * 0.0
-    if len(rows.friction_dofs):
-        eye = np.eye(model.nv)[rows.friction_dofs]
-        jacobians.append(const(xp, eye, like) + batch_zero[..., None])
-        positions.append(xp.zeros_like(batch_zero) + const(xp, np.zeros(len(eye)), like))
-        actives.append(positions[-1] == 0.0)
-    if len(rows.limit_dof):
-        side = rows.limit_side
-        dist = const(xp, side, like) * (
-            const(xp, rows.limit_bound, like) - mt.take(xp, qpos, rows.limit_qadr, axis=-1)
-        )
-        jac = np.zeros((len(side), model.nv))
-        jac[np.arange(len(side)), rows.limit_dof] = -side
-        jacobians.append(const(xp, jac, like) + batch_zero[..., None])
-        positions.append(dist)
-        nf = len(rows.friction_dofs)
-        actives.append(dist < const(xp, rows.margin[nf : nf + len(side)], like))
-    if rows.ncon:
-        jac, dist, active = _contact_jacobians(xp, model, rows, cdof, origin, contacts)
-        jacobians.append(jac)
-        positions.append(dist)
-        actives.append(active)
-    if not jacobians:
-        empty = qpos[..., :0] * 0.0
+    if rows.nefc == 0:
+        empty = batch_zero[..., :0] + const(xp, rows.empty, like)
         return {
-            "efc_J": empty[..., None] * const(xp, np.zeros(model.nv), like),
+            "efc_J": empty[..., None] + const(xp, rows.empty_jacobian, like),
             "efc_pos": empty,
             "efc_active": empty > 0.0,
             "efc_imp": empty,
             "efc_R": empty,
             "efc_D": empty,
         }
+    jacobians, positions, actives = [], [], []
+    if rows.nf:
+        jacobians.append(const(xp, rows.friction_jacobian, like) + batch_zero[..., None])
+        positions.append(batch_zero + const(xp, rows.friction_zero, like))
+        actives.append(positions[-1] == 0.0)
+    if rows.nl:
+        limit = mt.take(xp, qpos, rows.limit_qpos, axis=-1)
+        dist = const(xp, rows.limit_side, like) * (const(xp, rows.limit_bound, like) - limit)
+        jacobians.append(const(xp, rows.limit_jacobian, like) + batch_zero[..., None])
+        positions.append(dist)
+        actives.append(dist < const(xp, rows.limit_margin, like))
+    if rows.ncon:
+        jac, dist, active = _contact_jacobians(xp, model, rows, cdof, origin, contacts)
+        jacobians.append(jac)
+        positions.append(dist)
+        actives.append(active)
     pos = xp.concat(positions, axis=-1)
     imp = impedance(xp, rows, pos, like)
-    scale = np.ones(rows.nefc)
-    contact_rows = rows.kind == ROW_CONTACT_PYRAMIDAL
-    scale[contact_rows] = rows.pyramid_scale[_contact_of_rows(rows)[contact_rows]]
     diag = const(xp, rows.diag_approx, like)
-    regulariser = xp.maximum((1.0 - imp) * diag / imp, MIN_VALUE) * const(xp, scale, like)
+    regulariser = xp.maximum((1.0 - imp) * diag / imp, MIN_VALUE) * const(xp, rows.scale, like)
     return {
         "efc_J": xp.concat(jacobians, axis=-2),
         "efc_pos": pos,
@@ -304,32 +323,25 @@ def make_constraints(xp, model: Model, qpos, cdof, origin, contacts):
     }
 
 
-def _contact_of_rows(rows: Layout) -> np.ndarray:
-    """The contact of each efc row (-1 for rows that are not contacts)."""
-    out = np.full(rows.nefc, -1, np.int64)
-    if rows.ncon:
-        out[rows.nefc - len(rows.row_contact) :] = rows.row_contact
-    return out
-
-
 def _contact_jacobians(xp, model, rows: Layout, cdof, origin, contacts):
     """Rows of the contacts: the Jacobian of the contact point on the second geom's body minus
     on the first's, in the contact frame; pyramid edges ``J_n +- mu_k J_tk``."""
     pos, frame = contacts.pos, contacts.frame
-    jac1, _ = point_jacobians(xp, model, cdof, origin, rows.contact_body[:, 0], pos)
-    jac2, _ = point_jacobians(xp, model, cdof, origin, rows.contact_body[:, 1], pos)
+    (bodies1, chain1), (bodies2, chain2) = rows.contact_side
+    jac1, _ = point_jacobians(xp, model, cdof, origin, bodies1, chain1, pos)
+    jac2, _ = point_jacobians(xp, model, cdof, origin, bodies2, chain2, pos)
     diff = jac2 - jac1  # [..., ncon, nv, 3]
-    in_frame = xp.sum(frame[..., :, None, :, :] * diff[..., None, :, :], axis=-1)  # [.,C,3,nv]
+    in_frame = mt.contract(xp, frame, xp.matrix_transpose(diff))  # [..., C, 3, nv]
     blocks = []
     if len(rows.pyramids):
-        p = mt.take(xp, in_frame, rows.pyramids, axis=-3)
-        mu = const(xp, rows.contact_friction[rows.pyramids][:, :2, None], p)  # [Cp, 2, 1]
+        p = mt.take(xp, in_frame, rows.pyramid_gather, axis=-3)
+        mu = const(xp, rows.pyramid_mu, p)  # [Cp, 2, 1]
         normal = p[..., 0, :]
         for k in (1, 2):
             edge = mu[:, k - 1] * p[..., k, :]
             blocks += [normal + edge, normal - edge]
     if len(rows.frictionless):
-        blocks.append(mt.take(xp, in_frame, rows.frictionless, axis=-3)[..., 0, :])
+        blocks.append(mt.take(xp, in_frame, rows.frictionless_gather, axis=-3)[..., 0, :])
     jac = mt.take(xp, xp.concat(blocks, axis=-2), rows.contact_order, axis=-2)
     dist = mt.take(xp, contacts.dist, rows.row_contact, axis=-1)
     active = mt.take(xp, contacts.active, rows.row_contact, axis=-1)
@@ -340,25 +352,24 @@ def impedance(xp, rows: Layout, pos, like):
     """MuJoCo's impedance ``imp(pos - margin)`` of every row, from its ``solimp``
     ``(d0, dwidth, width, midpoint, power)``: ``d0`` at no violation to ``dwidth`` at ``width``
     and beyond, along two power curves that meet at the midpoint."""
-    s = rows.solimp
-    d0, d1, width, mid, power = (const(xp, s[:, k], like) for k in range(5))
-    flat = (s[:, 0] == s[:, 1]) | (s[:, 2] <= MIN_VALUE)
-    safe_width = const(xp, np.where(s[:, 2] > MIN_VALUE, s[:, 2], 1.0), like)
+    d0, d1, _, mid, power = (const(xp, s, like) for s in rows.solimp)
+    safe_width = const(xp, rows.safe_width, like)
     x = xp.clip(xp.abs(pos - const(xp, rows.margin, like)) / safe_width, 0.0, 1.0)
     low = xp.pow(x, power) / xp.pow(mid, power - 1.0)
     high = 1.0 - xp.pow(1.0 - x, power) / xp.pow(1.0 - mid, power - 1.0)
-    y = xp.where(x <= mid, low, high)
-    imp = d0 + y * (d1 - d0)
-    if flat.any():
-        imp = xp.where(const(xp, flat.astype(np.float64), like) > 0.5, 0.5 * (d0 + d1), imp)
+    imp = d0 + xp.where(x <= mid, low, high) * (d1 - d0)
+    if rows.has_flat:
+        imp = xp.where(const(xp, rows.flat, like) > 0.5, 0.5 * (d0 + d1), imp)
     return imp
 
 
 def reference(xp, model: Model, efc, qvel):
     """MuJoCo's ``mj_referenceConstraint``: row velocities ``J qvel`` and reference
     accelerations ``aref = -B vel - K imp (pos - margin)``. Returns ``(efc_vel, efc_aref)``."""
-    rows = layout(model)
-    vel = xp.sum(efc["efc_J"] * qvel[..., None, :], axis=-1)
+    rows = model.rows
+    vel = xp.matmul(efc["efc_J"], qvel[..., :, None])[..., 0]
+    if rows.nefc == 0:
+        return vel, vel
     stiffness = const(xp, rows.stiffness, qvel)
     damping = const(xp, rows.damping, qvel)
     violation = efc["efc_pos"] - const(xp, rows.margin, qvel)

@@ -36,7 +36,8 @@ class Data(NamedTuple):
     normal, tangents), ``contact_active [..., ncon]`` (bool).
 
     Constraint rows (``nefc`` candidates, in MuJoCo's order: friction loss, limits, contacts):
-    ``efc_J [..., nefc, nv]``, ``efc_pos``, ``efc_vel``, ``efc_D``, ``efc_R``, ``efc_aref``,
+    ``efc_J [..., nefc, nv]``, ``efc_pos``, ``efc_vel``, ``efc_imp`` (the impedance),
+    ``efc_D``, ``efc_R``, ``efc_aref``,
     ``efc_force [..., nefc]``, ``efc_active [..., nefc]`` (bool).
 
     After the constraints (``mj_rnePostConstraint``): ``cacc [..., nbody, 6]``, ``cfrc_int``,
@@ -79,6 +80,7 @@ class Data(NamedTuple):
     efc_J: Any = None
     efc_pos: Any = None
     efc_vel: Any = None
+    efc_imp: Any = None
     efc_D: Any = None
     efc_R: Any = None
     efc_aref: Any = None

@@ -58,42 +58,6 @@ def const(xp, value: np.ndarray, like):
     return xp.constant(value, dtype=like.dtype, device=xp.dev(like))
 
 
-def index(xp, value: np.ndarray, like):
-    """An integer model constant (indices) on ``like``'s device."""
-    return xp.constant(np.asarray(value, dtype=np.int64), dtype="int64", device=xp.dev(like))
-
-
-@dataclass(frozen=True)
-class Level:
-    """The bodies at one depth of the tree, computed together by the kinematics.
-
-    Arrays are over the level's bodies (``n``) and, for joints, over its joint slots: slot ``s``
-    holds every body's ``s``-th joint (``-1`` where a body has fewer)."""
-
-    bodies: tuple  # body ids
-    parent: np.ndarray  # [n] index of each body's parent in the previous level
-    pos: np.ndarray  # [n, 3] offset from the parent (body_pos)
-    rot: np.ndarray  # [n, 3, 3] (body_quat)
-    free: tuple  # per body: the qpos address of its free joint, or -1
-    slots: tuple  # JointSlot per slot
-
-
-@dataclass(frozen=True)
-class JointSlot:
-    """One joint of each body of a level (see :class:`Level`)."""
-
-    joints: tuple  # joint id per body, -1 for none
-    qadr: np.ndarray  # [n] qpos address (0 where none: masked by the kind flags)
-    qpos0: np.ndarray  # [n]
-    axis: np.ndarray  # [n, 3] joint axis in the body frame
-    pos: np.ndarray  # [n, 3] joint anchor in the body frame
-    hinge: np.ndarray  # [n, 1] 1.0 for hinges
-    slide: np.ndarray  # [n, 1] 1.0 for slides
-    cross: np.ndarray  # [n, 3, 3] skew(axis) of hinges, zero elsewhere
-    cross_sq: np.ndarray  # [n, 3, 3] its square
-    ball: tuple  # per body: the qpos address of its ball joint, or -1
-
-
 @dataclass(frozen=True, eq=False)
 class Model:
     """A MuJoCo model as named constants (see the module docstring). Fields follow MuJoCo's
@@ -186,9 +150,6 @@ class Model:
     actuator_bias: np.ndarray  # [nu, 3]: bias = b0 + b1 * length + b2 * velocity
     jnt_actfrcrange: np.ndarray  # [njnt, 2], +-inf where unlimited
     # structure, derived once
-    levels: tuple  # Level per depth >= 1
-    body_order: np.ndarray  # [nbody]: position of each body in the levels' concatenation
-    jnt_order: np.ndarray  # [njnt]: position of each joint in the slots' concatenation
     body_chain: np.ndarray  # [nbody, nv]: 1 where the dof moves the body
     body_subtree: np.ndarray  # [nbody, nbody]: 1 where the column body is in the row's subtree
     com_weights: np.ndarray  # [nbody, nbody]: subtree_com[b] = sum_c w[b, c] xipos[c]
@@ -198,6 +159,11 @@ class Model:
     fluid_bodies: tuple  # bodies under the inertia-box fluid model
     contacts: Any  # the candidate contacts (ivy_robot.physics.collision), or None
     unsupported: tuple  # names of what the dynamics do not model (empty: all modelled)
+    # what each stage precomputes once (index arrays, masks, flags): their modules' plans
+    kin: Any = None  # ivy_robot.physics.kinematics.Plan
+    smooth: Any = None  # ivy_robot.physics.smooth.Plan
+    rows: Any = None  # ivy_robot.physics.constraints.Layout
+    fwd: Any = None  # ivy_robot.physics.forward.Plan
 
     def check_dynamics(self) -> None:
         """Raise ``NotImplementedError`` naming what the model uses and the dynamics do not
@@ -356,7 +322,11 @@ def read_model(m: Any) -> Model:
         unsupported=_unsupported(m, mujoco, disabled, enabled, contacts),
         **structure,
     )
-    return model
+    from ivy_robot.physics import constraints, forward, kinematics, smooth
+
+    model = model.replace(kin=kinematics.plan(m, model), smooth=smooth.plan(model))
+    model = model.replace(rows=constraints.plan(model))
+    return model.replace(fwd=forward.plan(model))
 
 
 def _contacts(m, disabled):
@@ -376,64 +346,9 @@ def _contacts(m, disabled):
 # ----------------------------------------------------------------------------------------------
 
 
-def _skew(axis):
-    x, y, z = axis
-    return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
-
-
 def _structure(m, jnt_type, body_parent) -> dict:
-    """The levels of the tree and the masks that the vectorised kernels use."""
+    """The masks of the tree that the vectorised kernels multiply with."""
     nbody, nv, njnt = int(m.nbody), int(m.nv), int(m.njnt)
-    depth = np.zeros(nbody, dtype=np.int64)
-    for b in range(1, nbody):
-        depth[b] = depth[body_parent[b]] + 1
-    body_rot = mujoco_quaternion_to_rot_mat(np.asarray(m.body_quat))
-    levels, previous = [], [0]
-    body_order = np.zeros(nbody, dtype=np.int64)
-    jnt_order = np.zeros(njnt, dtype=np.int64)
-    cursor, jnt_cursor = 1, 0
-    for level in range(1, int(depth.max(initial=0)) + 1):
-        bodies = [b for b in range(nbody) if depth[b] == level]
-        parent = np.array([previous.index(body_parent[b]) for b in bodies], dtype=np.int64)
-        free = []
-        counts = [int(m.body_jntnum[b]) for b in bodies]
-        for b in bodies:
-            adr, count = int(m.body_jntadr[b]), int(m.body_jntnum[b])
-            is_free = count >= 1 and jnt_type[adr] == FREE
-            free.append(int(m.jnt_qposadr[adr]) if is_free else -1)
-        slots = []
-        for s in range(max(counts, default=0)):
-            joints = []
-            for b, free_adr in zip(bodies, free):
-                j = int(m.body_jntadr[b]) + s
-                real = s < int(m.body_jntnum[b]) and free_adr < 0
-                joints.append(j if real else -1)
-            slots.append(_slot(m, jnt_type, joints))
-            for j in joints:
-                if j >= 0:
-                    jnt_order[j] = jnt_cursor
-                jnt_cursor += 1
-        for k, b in enumerate(bodies):
-            body_order[b] = cursor + k
-        cursor += len(bodies)
-        # free joints: recorded after the slots (one entry per body of a level that has one)
-        if any(adr >= 0 for adr in free):
-            for b, free_adr in zip(bodies, free):
-                if free_adr >= 0:
-                    jnt_order[int(m.body_jntadr[b])] = jnt_cursor
-                jnt_cursor += 1
-        levels.append(
-            Level(
-                bodies=tuple(bodies),
-                parent=parent,
-                pos=np.array(m.body_pos[bodies], dtype=np.float64),
-                rot=body_rot[bodies],
-                free=tuple(free),
-                slots=tuple(slots),
-            )
-        )
-        previous = bodies
-
     # chains and subtrees
     body_chain = np.zeros((nbody, nv))
     for b in range(1, nbody):
@@ -481,53 +396,12 @@ def _structure(m, jnt_type, body_parent) -> dict:
             first_rotation = start + (3 if kind == FREE else 0)
             before[d, first_rotation:d] = 0.0
     return dict(
-        levels=tuple(levels),
-        body_order=body_order,
-        jnt_order=jnt_order,
         body_chain=body_chain,
         body_subtree=body_subtree,
         com_weights=com_weights,
         dof_ancestors=ancestors,
         dof_velocity_before=before,
         dof_rotational=rotational,
-    )
-
-
-def _slot(m, jnt_type, joints) -> JointSlot:
-    n = len(joints)
-    qadr, qpos0 = np.zeros(n, np.int64), np.zeros(n)
-    axis, pos = np.zeros((n, 3)), np.zeros((n, 3))
-    hinge, slide = np.zeros((n, 1)), np.zeros((n, 1))
-    cross, cross_sq = np.zeros((n, 3, 3)), np.zeros((n, 3, 3))
-    ball = []
-    for k, j in enumerate(joints):
-        if j < 0:
-            ball.append(-1)
-            continue
-        kind = int(jnt_type[j])
-        axis[k] = m.jnt_axis[j]
-        pos[k] = m.jnt_pos[j]
-        ball.append(int(m.jnt_qposadr[j]) if kind == BALL else -1)
-        if kind in (HINGE, SLIDE):
-            qadr[k] = int(m.jnt_qposadr[j])
-            qpos0[k] = float(m.qpos0[qadr[k]])
-        if kind == HINGE:
-            hinge[k] = 1.0
-            cross[k] = _skew(axis[k])
-            cross_sq[k] = cross[k] @ cross[k]
-        elif kind == SLIDE:
-            slide[k] = 1.0
-    return JointSlot(
-        joints=tuple(joints),
-        qadr=qadr,
-        qpos0=qpos0,
-        axis=axis,
-        pos=pos,
-        hinge=hinge,
-        slide=slide,
-        cross=cross,
-        cross_sq=cross_sq,
-        ball=tuple(ball),
     )
 
 

@@ -12,11 +12,161 @@ does not grow with the number of bodies.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from ivy_robot.physics import _math as mt
 from ivy_robot.physics.model import FREE, HINGE, MIN_VALUE, SLIDE, Model, const
+
+# ----------------------------------------------------------------------------------------------
+# The plan: made once per model
+# ----------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, eq=False)
+class Factor:
+    """Constants of the dense ``L D L^T`` factorisation of an *n x n* matrix."""
+
+    below: tuple  # per column k: [n] 1.0 below the diagonal
+    unit: tuple  # per k: [n] the k-th unit vector
+
+
+def factor_plan(n: int) -> Factor:
+    below = np.tril(np.ones((n, n)), -1)
+    eye = np.eye(n)
+    return Factor(below=tuple(below[:, k].copy() for k in range(n)), unit=tuple(eye))
+
+
+@dataclass(frozen=True, eq=False)
+class Plan:
+    """What the smooth dynamics index with (numpy constants, Python flags)."""
+
+    factor: Factor
+    dof_body: mt.Gather
+    subtree: mt.ConstMatrix  # body_subtree
+    chain: mt.ConstMatrix  # body_chain
+    velocity_before: mt.ConstMatrix  # dof_velocity_before
+    eye: np.ndarray  # [nv, nv]
+    off_diagonal: np.ndarray  # [nv, nv]
+    cacc_base: np.ndarray  # [6]: the world's acceleration, -gravity
+    has_free: bool
+    not_free_translation: np.ndarray  # [nv, 1]: 0 on free joints' translations
+    negative_damping: np.ndarray  # [nv]
+    # springs of hinges and slides
+    has_springs: bool
+    spring_qpos: mt.Gather
+    spring_ref: np.ndarray
+    spring_scatter: mt.ConstMatrix  # [nv, nspring], -stiffness
+    # the fluid model
+    has_fluid: bool
+    fluid_bodies: mt.Gather
+    fluid_area: np.ndarray  # [nfluid, 3]
+    fluid_spin: np.ndarray  # [nfluid, 3]
+    fluid_diameter: np.ndarray  # [nfluid, 1]
+    fluid_scatter: mt.ConstMatrix  # [nbody, nfluid]
+    has_wind: bool
+    # actuators
+    has_ctrlrange: bool
+    has_forcerange: bool
+    has_joint_range: bool
+    actuator_qpos: mt.Gather
+    actuator_qvel: mt.Gather
+    actuator_scatter: mt.ConstMatrix  # [nv, nu]: gear
+    ctrl_low: np.ndarray
+    ctrl_high: np.ndarray
+    force_low: np.ndarray
+    force_high: np.ndarray
+    dof_low: np.ndarray  # [nv]
+    dof_high: np.ndarray
+    gain: tuple  # (constant, length, velocity) coefficient arrays, None where all zero
+    bias: tuple
+
+
+def plan(model: Model) -> Plan:
+    """The smooth dynamics' plan of ``model``."""
+    nv, nu = model.nv, model.nu
+    free_translation = np.zeros((nv, 1))
+    for j in np.flatnonzero(model.jnt_type == FREE):
+        free_translation[model.jnt_dofadr[j] : model.jnt_dofadr[j] + 3] = 1.0
+    springs = [
+        j
+        for j in range(model.njnt)
+        if model.jnt_stiffness[j] != 0.0 and model.jnt_type[j] in (SLIDE, HINGE)
+    ]
+    spring_scatter = np.zeros((len(springs), nv))
+    for row, j in enumerate(springs):
+        spring_scatter[row, model.jnt_dofadr[j]] = -model.jnt_stiffness[j]
+    spring_qpos = model.jnt_qposadr[springs] if springs else np.zeros(0, np.int64)
+    fluid = _fluid_constants(model)
+    scatter = np.zeros((nu, nv))
+    scatter[np.arange(nu), model.actuator_dof] = model.actuator_gear
+    dof_range = model.jnt_actfrcrange[model.dof_jnt] if nv else np.zeros((0, 2))
+
+    def coefficients(prm):
+        return tuple(prm[:, k].copy() if k == 0 or np.any(prm[:, k]) else None for k in range(3))
+
+    return Plan(
+        factor=factor_plan(nv),
+        dof_body=mt.gather(model.dof_body, model.nbody),
+        subtree=mt.const_matrix(model.body_subtree),
+        chain=mt.const_matrix(model.body_chain),
+        velocity_before=mt.const_matrix(model.dof_velocity_before),
+        eye=np.eye(nv),
+        off_diagonal=1.0 - np.eye(nv),
+        cacc_base=np.concatenate([np.zeros(3), -model.gravity]),
+        has_free=bool(free_translation.any()),
+        not_free_translation=1.0 - free_translation,
+        negative_damping=-model.dof_damping,
+        has_springs=bool(springs),
+        spring_qpos=mt.gather(spring_qpos, model.nq),
+        spring_ref=model.qpos_spring[spring_qpos].copy(),
+        spring_scatter=mt.const_matrix(spring_scatter.T),
+        has_fluid=bool(model.fluid_bodies),
+        fluid_bodies=mt.gather(list(model.fluid_bodies), model.nbody),
+        has_wind=bool(np.any(model.wind)),
+        **fluid,
+        has_ctrlrange=bool(np.isfinite(model.actuator_ctrlrange).any()),
+        has_forcerange=bool(np.isfinite(model.actuator_forcerange).any()),
+        has_joint_range=bool(np.isfinite(dof_range).any()),
+        actuator_qpos=mt.gather(model.actuator_qadr, model.nq),
+        actuator_qvel=mt.gather(model.actuator_dof, nv),
+        actuator_scatter=mt.const_matrix(scatter.T),
+        ctrl_low=model.actuator_ctrlrange[:, 0].copy(),
+        ctrl_high=model.actuator_ctrlrange[:, 1].copy(),
+        force_low=model.actuator_forcerange[:, 0].copy(),
+        force_high=model.actuator_forcerange[:, 1].copy(),
+        dof_low=dof_range[:, 0].copy(),
+        dof_high=dof_range[:, 1].copy(),
+        gain=coefficients(model.actuator_gain),
+        bias=coefficients(model.actuator_bias),
+    )
+
+
+def _fluid_constants(model: Model) -> dict:
+    bodies = list(model.fluid_bodies)
+    inertia, mass = model.body_inertia[bodies], model.body_mass[bodies]
+    i0, i1, i2 = inertia[:, 0], inertia[:, 1], inertia[:, 2]
+    box = np.stack(
+        [
+            np.sqrt(np.maximum(MIN_VALUE, a + c - d) / mass * 6.0)
+            for a, c, d in ((i1, i2, i0), (i0, i2, i1), (i0, i1, i2))
+        ],
+        axis=-1,
+    ).reshape(len(bodies), 3)
+    others = [[n for n in range(3) if n != k] for k in range(3)]
+    scatter = np.zeros((model.nbody, len(bodies)))
+    scatter[bodies, np.arange(len(bodies))] = 1.0
+    return dict(
+        fluid_area=np.stack([box[:, o[0]] * box[:, o[1]] for o in others], axis=-1),
+        fluid_spin=np.stack(
+            [box[:, k] * (box[:, o[0]] ** 4 + box[:, o[1]] ** 4) for k, o in enumerate(others)],
+            axis=-1,
+        ),
+        fluid_diameter=(box.sum(axis=-1) / 3.0)[:, None],
+        fluid_scatter=mt.const_matrix(scatter),
+    )
+
 
 # ----------------------------------------------------------------------------------------------
 # Mass matrix
@@ -26,30 +176,29 @@ from ivy_robot.physics.model import FREE, HINGE, MIN_VALUE, SLIDE, Model, const
 def mass_matrix(xp, model: Model, cinert, cdof):
     """MuJoCo's ``qM`` as a dense *[..., nv, nv]* (``mj_fullM``), with armature: composite
     rigid bodies, ``M[i, j] = cdof_j . (crb[body_i] cdof_i)`` for ``j`` at or above ``i``."""
-    crb = xp.matmul(const(xp, model.body_subtree, cinert), cinert)  # [..., nbody, 10]
-    force = mt.apply_inertia(xp, mt.take(xp, crb, model.dof_body, axis=-2), cdof)  # [..., nv, 6]
-    products = xp.matmul(force, xp.matrix_transpose(cdof))  # [i, j] = cdof_j . force_i
+    p = model.smooth
+    crb = mt.cmatmul(xp, p.subtree, cinert)  # [..., nbody, 10]
+    force = mt.apply_inertia(xp, mt.take(xp, crb, p.dof_body, axis=-2), cdof)  # [..., nv, 6]
+    products = mt.contract(xp, force, xp.matrix_transpose(cdof))  # [i, j] = cdof_j . force_i
     lower = products * const(xp, model.dof_ancestors, cinert)
-    diagonal = const(xp, np.eye(model.nv), cinert)
     return (
         lower
-        + xp.matrix_transpose(lower) * (1.0 - diagonal)
-        + diagonal * const(xp, model.dof_armature, cinert)
+        + xp.matrix_transpose(lower) * const(xp, p.off_diagonal, cinert)
+        + const(xp, p.eye, cinert) * const(xp, model.dof_armature, cinert)
     )
 
 
-def factor(xp, matrix):
+def factor(xp, plan: Factor, matrix):
     """``matrix = L diag(D) L^T`` for symmetric positive definite *[..., n, n]*, ``L`` unit
     lower triangular (returned without its unit diagonal), by one column at a time: *n*
-    vectorised steps. Returns ``(L, D)``."""
-    n = matrix.shape[-1]
+    vectorised steps (``plan``: :func:`factor_plan` of *n*). Returns ``(L, D)``."""
+    n = len(plan.below)
     if n == 0:
         return matrix, matrix[..., 0]
     columns, pivots, work = [], [], matrix
-    below = np.tril(np.ones((n, n)), -1)  # [i, k] = 1 where i > k
     for k in range(n):
         pivot = work[..., k, k]
-        column = work[..., :, k] / pivot[..., None] * const(xp, below[:, k], matrix)
+        column = work[..., :, k] / pivot[..., None] * const(xp, plan.below[k], matrix)
         columns.append(column)
         pivots.append(pivot)
         if k < n - 1:
@@ -57,19 +206,18 @@ def factor(xp, matrix):
     return xp.stack(columns, axis=-1), xp.stack(pivots, axis=-1)
 
 
-def solve(xp, factored, rhs):
+def solve(xp, plan: Factor, factored, rhs):
     """``matrix^-1 rhs`` from :func:`factor`, ``rhs`` *[..., n]*."""
     lower, pivots = factored
-    n = pivots.shape[-1]
+    n = len(plan.below)
     if n == 0:
         return rhs
-    eye = np.eye(n)
     x = rhs
     for k in range(n - 1):  # forward: L y = rhs
         x = x - lower[..., :, k] * x[..., k : k + 1]
     x = x / pivots
     for k in range(n - 2, -1, -1):  # backward: L^T x = y
-        x = x - const(xp, eye[k], rhs) * mt.dot(xp, lower[..., :, k], x)[..., None]
+        x = x - const(xp, plan.unit[k], rhs) * mt.dot(xp, lower[..., :, k], x)[..., None]
     return x
 
 
@@ -83,14 +231,11 @@ def velocities(xp, model: Model, cdof, qvel):
     dof axes ``cdof_dot`` *[..., nv, 6]* (an axis moves with the frame before it; free
     translations are fixed)."""
     moving = cdof * qvel[..., None]
-    cvel = xp.matmul(const(xp, model.body_chain, cdof), moving)
-    before = xp.matmul(const(xp, model.dof_velocity_before, cdof), moving)
-    fixed = np.zeros((model.nv, 1))
-    for j in np.flatnonzero(model.jnt_type == FREE):
-        fixed[model.jnt_dofadr[j] : model.jnt_dofadr[j] + 3] = 1.0
+    cvel = mt.cmatmul(xp, model.smooth.chain, moving)
+    before = mt.cmatmul(xp, model.smooth.velocity_before, moving)
     cdof_dot = mt.cross_motion(xp, before, cdof)
-    if fixed.any():
-        cdof_dot = cdof_dot * const(xp, 1.0 - fixed, cdof)
+    if model.smooth.has_free:
+        cdof_dot = cdof_dot * const(xp, model.smooth.not_free_translation, cdof)
     return cvel, cdof_dot
 
 
@@ -102,8 +247,8 @@ def body_forces(xp, model: Model, cinert, cvel, cdof, cdof_dot, qvel, qacc=None)
     rate = cdof_dot * qvel[..., None]
     if qacc is not None:
         rate = rate + cdof * qacc[..., None]
-    base = const(xp, np.concatenate([np.zeros(3), -model.gravity]), cdof)
-    cacc = base + xp.matmul(const(xp, model.body_chain, cdof), rate)
+    base = const(xp, model.smooth.cacc_base, cdof)
+    cacc = base + mt.cmatmul(xp, model.smooth.chain, rate)
     inertial = mt.apply_inertia(xp, cinert, cacc)
     gyroscopic = mt.cross_force(xp, cvel, mt.apply_inertia(xp, cinert, cvel))
     return cacc, inertial + gyroscopic
@@ -112,8 +257,8 @@ def body_forces(xp, model: Model, cinert, cvel, cdof, cdof_dot, qvel, qacc=None)
 def project(xp, model: Model, cdof, wrenches):
     """Joint forces *[..., nv]* of body wrenches *[..., nbody, 6]* (about each body's tree
     origin): each dof takes the wrenches of its body's subtree along its axis."""
-    subtree = xp.matmul(const(xp, model.body_subtree, cdof), wrenches)
-    return mt.dot(xp, cdof, mt.take(xp, subtree, model.dof_body, axis=-2))
+    subtree = mt.cmatmul(xp, model.smooth.subtree, wrenches)
+    return mt.dot(xp, cdof, mt.take(xp, subtree, model.smooth.dof_body, axis=-2))
 
 
 def bias_forces(xp, model: Model, cinert, cvel, cdof, cdof_dot, qvel):
@@ -130,72 +275,42 @@ def bias_forces(xp, model: Model, cinert, cvel, cdof, cdof_dot, qvel):
 def passive_forces(xp, model: Model, qpos, qvel, kin=None, cvel=None, origin=None, cdof=None):
     """MuJoCo's ``qfrc_passive`` *[..., nv]*: joint springs and dampers, and the inertia-box
     fluid model (``kin``, ``cvel``, ``origin`` and ``cdof`` are needed only for the fluid)."""
-    out = qvel * const(xp, -model.dof_damping, qvel)
-    springs = [
-        j
-        for j in range(model.njnt)
-        if model.jnt_stiffness[j] != 0.0 and model.jnt_type[j] in (SLIDE, HINGE)
-    ]
-    if springs:
-        scatter = np.zeros((len(springs), model.nv))
-        for row, j in enumerate(springs):
-            scatter[row, model.jnt_dofadr[j]] = -model.jnt_stiffness[j]
-        adr = model.jnt_qposadr[springs]
-        stretch = mt.take(xp, qpos, adr, axis=-1) - const(xp, model.qpos_spring[adr], qpos)
-        out = out + xp.matmul(stretch[..., None, :], const(xp, scatter, qpos))[..., 0, :]
-    if model.fluid_bodies:
+    p = model.smooth
+    out = qvel * const(xp, p.negative_damping, qvel)
+    if p.has_springs:
+        stretch = mt.take(xp, qpos, p.spring_qpos, axis=-1) - const(xp, p.spring_ref, qpos)
+        out = out + mt.cmatmul(xp, p.spring_scatter, stretch[..., :, None])[..., 0]
+    if p.has_fluid:
         out = out + project(xp, model, cdof, fluid_wrenches(xp, model, kin, cvel, origin))
     return out
-
-
-def _fluid_constants(model: Model):
-    bodies = list(model.fluid_bodies)
-    inertia, mass = model.body_inertia[bodies], model.body_mass[bodies]
-    i0, i1, i2 = inertia[:, 0], inertia[:, 1], inertia[:, 2]
-    box = np.stack(
-        [
-            np.sqrt(np.maximum(MIN_VALUE, a + c - d) / mass * 6.0)
-            for a, c, d in ((i1, i2, i0), (i0, i2, i1), (i0, i1, i2))
-        ],
-        axis=-1,
-    )
-    others = [[n for n in range(3) if n != k] for k in range(3)]
-    area = np.stack([box[:, o[0]] * box[:, o[1]] for o in others], axis=-1)
-    spin = np.stack(
-        [box[:, k] * (box[:, o[0]] ** 4 + box[:, o[1]] ** 4) for k, o in enumerate(others)], axis=-1
-    )
-    diameter = box.sum(axis=-1) / 3.0
-    return bodies, area, spin, diameter
 
 
 def fluid_wrenches(xp, model: Model, kin, cvel, origin):
     """MuJoCo's inertia-box fluid model: viscous (Stokes) and quadratic drag on each body's
     equivalent inertia box, in its inertial frame, applied at its centre of mass. Returns
     wrenches *[..., nbody, 6]* about each body's tree origin (zero for bodies without)."""
-    bodies, area, spin, diameter = _fluid_constants(model)
+    p = model.smooth
     like = kin["xipos"]
-    com = mt.take(xp, kin["xipos"], bodies, axis=-2)
-    irot = mt.take(xp, kin["ximat"], bodies, axis=-3)
-    o = mt.take(xp, origin, bodies, axis=-2)
-    velocity = mt.take(xp, cvel, bodies, axis=-2)
+    com = mt.take(xp, kin["xipos"], p.fluid_bodies, axis=-2)
+    irot = mt.take(xp, kin["ximat"], p.fluid_bodies, axis=-3)
+    o = mt.take(xp, origin, p.fluid_bodies, axis=-2)
+    velocity = mt.take(xp, cvel, p.fluid_bodies, axis=-2)
     w, v = velocity[..., :3], velocity[..., 3:] + mt.cross(xp, velocity[..., :3], com - o)
     local_w, local_v = mt.mtv(xp, irot, w), mt.mtv(xp, irot, v)
-    if np.any(model.wind):
+    if p.has_wind:
         local_v = local_v - mt.mtv(xp, irot, const(xp, model.wind, like))
     torque, force = local_w * 0.0, local_v * 0.0
     if model.viscosity > 0:
-        d = const(xp, diameter[:, None], like)
+        d = const(xp, p.fluid_diameter, like)
         torque = torque - math.pi * model.viscosity * d**3 * local_w
         force = force - 3.0 * math.pi * model.viscosity * d * local_v
     if model.density > 0:
         rho = model.density
-        force = force - 0.5 * rho * const(xp, area, like) * xp.abs(local_v) * local_v
-        torque = torque - rho / 64.0 * const(xp, spin, like) * xp.abs(local_w) * local_w
+        force = force - 0.5 * rho * const(xp, p.fluid_area, like) * xp.abs(local_v) * local_v
+        torque = torque - rho / 64.0 * const(xp, p.fluid_spin, like) * xp.abs(local_w) * local_w
     world_torque, world_force = mt.mv(xp, irot, torque), mt.mv(xp, irot, force)
     wrench = xp.concat([world_torque + mt.cross(xp, com - o, world_force), world_force], axis=-1)
-    scatter = np.zeros((model.nbody, len(bodies)))
-    scatter[bodies, np.arange(len(bodies))] = 1.0
-    return xp.matmul(const(xp, scatter, like), wrench)
+    return mt.cmatmul(xp, p.fluid_scatter, wrench)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -212,31 +327,27 @@ def actuation(xp, model: Model, qpos, qvel, ctrl):
     if model.nu == 0 or ctrl is None or "actuation" in model.disabled:
         zero = qvel * 0.0
         return zero[..., :0], zero
-    lo, hi = model.actuator_ctrlrange[:, 0], model.actuator_ctrlrange[:, 1]
+    p = model.smooth
     u = ctrl
-    if np.isfinite(model.actuator_ctrlrange).any():
-        u = xp.clip(u, const(xp, lo, qpos), const(xp, hi, qpos))
+    if p.has_ctrlrange:
+        u = xp.clip(u, const(xp, p.ctrl_low, qpos), const(xp, p.ctrl_high, qpos))
     gear = const(xp, model.actuator_gear, qpos)
-    length = gear * mt.take(xp, qpos, model.actuator_qadr, axis=-1)
-    speed = gear * mt.take(xp, qvel, model.actuator_dof, axis=-1)
-    gain, bias = model.actuator_gain, model.actuator_bias
-    force = _affine(xp, gain, length, speed, qpos) * u + _affine(xp, bias, length, speed, qpos)
-    if np.isfinite(model.actuator_forcerange).any():
-        frange = model.actuator_forcerange
-        force = xp.clip(force, const(xp, frange[:, 0], qpos), const(xp, frange[:, 1], qpos))
-    scatter = np.zeros((model.nu, model.nv))
-    scatter[np.arange(model.nu), model.actuator_dof] = model.actuator_gear
-    qfrc = xp.matmul(force[..., None, :], const(xp, scatter, qpos))[..., 0, :]
-    dof_range = model.jnt_actfrcrange[model.dof_jnt]
-    if np.isfinite(dof_range).any():
-        qfrc = xp.clip(qfrc, const(xp, dof_range[:, 0], qpos), const(xp, dof_range[:, 1], qpos))
+    length = gear * mt.take(xp, qpos, p.actuator_qpos, axis=-1)
+    speed = gear * mt.take(xp, qvel, p.actuator_qvel, axis=-1)
+    force = _affine(xp, p.gain, length, speed, qpos) * u + _affine(xp, p.bias, length, speed, qpos)
+    if p.has_forcerange:
+        force = xp.clip(force, const(xp, p.force_low, qpos), const(xp, p.force_high, qpos))
+    qfrc = mt.cmatmul(xp, p.actuator_scatter, force[..., :, None])[..., 0]
+    if p.has_joint_range:
+        qfrc = xp.clip(qfrc, const(xp, p.dof_low, qpos), const(xp, p.dof_high, qpos))
     return force, qfrc
 
 
-def _affine(xp, prm, length, speed, like):
-    value = const(xp, prm[:, 0], like) + length * 0.0
-    if np.any(prm[:, 1]):
-        value = value + const(xp, prm[:, 1], like) * length
-    if np.any(prm[:, 2]):
-        value = value + const(xp, prm[:, 2], like) * speed
+def _affine(xp, coefficients, length, speed, like):
+    constant, per_length, per_speed = coefficients
+    value = const(xp, constant, like) + length * 0.0
+    if per_length is not None:
+        value = value + const(xp, per_length, like) * length
+    if per_speed is not None:
+        value = value + const(xp, per_speed, like) * speed
     return value

@@ -71,28 +71,6 @@ def test_forward_kinematics_matches_mujoco(name, backend, compiled):
     assert_close(sites[..., :3, :3], ref["site_xmat"])
 
 
-@pytest.mark.parametrize("name", ["all_features", "panda"])
-def test_reference_path_equals_fast_path_and_mujoco(name, backend, compiled):
-    """The 4x4 reference path (the specification) == the entry-wise fast path == MuJoCo, on a
-    model with every joint type, joint pos/ref, several joints per body and mocap."""
-    model, tree = compiled[name]
-    q = random_qpos(model, np.random.default_rng(7 + len(name)), BATCH)
-    reference = numpy_of(tree.reference_forward_kinematics(native(q, backend)))
-    fast = numpy_of(tree.forward_kinematics(native(q, backend)))
-    assert_close(reference, fast)
-    ref = mujoco_kinematics(model, q)
-    assert_close(reference[..., :3, 3], ref["xpos"])
-    assert_close(reference[..., :3, :3], ref["xmat"])
-
-
-def test_reference_path_on_every_model(compiled):
-    for name, (model, tree) in compiled.items():
-        q = random_qpos(model, np.random.default_rng(len(name)), 2)
-        reference = tree.reference_forward_kinematics(q)
-        assert_close(reference, tree.forward_kinematics(q))
-        assert_close(reference[..., :3, 3], mujoco_kinematics(model, q)["xpos"])
-
-
 @pytest.mark.parametrize("name", sorted(MODELS))
 def test_jacobians_match_mujoco(name, backend, compiled):
     model, tree = compiled[name]
