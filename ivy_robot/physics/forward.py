@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ivy_robot.physics import _math as mt
-from ivy_robot.physics import constraints, smooth
+from ivy_robot.physics import constraints, smooth, solver
 from ivy_robot.physics.data import Data
 from ivy_robot.physics.kinematics import com_pos, kinematics
 from ivy_robot.physics.model import BALL, FREE, JOINT_KINDS, Model, const
@@ -55,6 +55,8 @@ class Plan:
     frictionless_rows: mt.Gather
     contact_order: mt.Gather  # (pyramids, frictionless) -> contact order
     force_scatter: tuple  # per side: ConstMatrix [nbody, ncon], -1 / +1 (the world takes none)
+    row_kinds: np.ndarray  # [nefc] the solver's row kinds
+    solver: object  # the solver's options (ivy_robot.physics.solver.SolverOptions)
     empty_forces: np.ndarray  # [0, 3]
 
 
@@ -94,6 +96,16 @@ def plan(model: Model) -> Plan:
         frictionless_rows=mt.gather(first[plain], rows.nefc),
         contact_order=mt.gather(np.argsort(np.concatenate([pyramids, plain])), rows.ncon),
         force_scatter=tuple(mt.const_matrix(matrix) for matrix in scatter),
+        row_kinds=solver.row_kinds(rows.kind) if rows.nefc else np.zeros(0, np.int64),
+        solver=solver.SolverOptions(
+            solver=model.solver.lower(),
+            iterations=model.iterations,
+            tolerance=model.tolerance,
+            ls_iterations=model.ls_iterations,
+            ls_tolerance=model.ls_tolerance,
+            meaninertia=model.meaninertia,
+            warmstart="warmstart" not in model.disabled,
+        ),
         empty_forces=np.zeros((0, 3)),
     )
 
@@ -216,11 +228,24 @@ def fwd_constraint(xp, model: Model, data: Data) -> Data:
         return data.replace(
             qacc=data.qacc_smooth, qfrc_constraint=zero, efc_force=data.efc_pos * 0.0
         )
-    from ivy_robot.physics import solver
-
-    qacc, force = solver.solve_constraints(xp, model, rows, data)
-    qfrc = xp.matmul(force[..., None, :], data.efc_J)[..., 0, :]
-    return data.replace(qacc=qacc, efc_force=force, qfrc_constraint=qfrc)
+    problem = solver.ConstraintProblem(
+        M=data.qM,
+        qfrc_smooth=data.qfrc_smooth,
+        qacc_smooth=data.qacc_smooth,
+        J=data.efc_J,
+        D=data.efc_D,
+        R=data.efc_R,
+        aref=data.efc_aref,
+        frictionloss=const(xp, rows.frictionloss, data.efc_D) + 0.0 * data.efc_D,
+        active=data.efc_active,
+    )
+    p = model.fwd
+    solution = solver.solve(xp, problem, p.row_kinds, data.qacc_warmstart, p.solver)
+    return data.replace(
+        qacc=solution.qacc,
+        efc_force=solution.efc_force,
+        qfrc_constraint=solution.qfrc_constraint,
+    )
 
 
 def forward(xp, model: Model, data: Data) -> Data:
