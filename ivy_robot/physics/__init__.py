@@ -22,3 +22,9 @@ Example:
     >>> data = step(ivy.jax, model, qpos, qvel, ctrl)         # a Data record
     >>> data.qpos, data.qvel, data.xpos, data.contact_dist
 """
+
+from ivy_robot.physics.data import Data
+from ivy_robot.physics.forward import forward, make_data, step
+from ivy_robot.physics.model import Model, read_model
+
+__all__ = ["Data", "Model", "forward", "make_data", "read_model", "step"]
