@@ -37,7 +37,7 @@ import ivy
 from ivy.typing import Array, Framework
 from ivy_robot.mjcf import SUPPORTED_JOINT_TYPES, load_mjcf
 from ivy_robot.physics import _math as mt
-from ivy_robot.physics import forward as fw
+from ivy_robot.physics import pipeline as fw
 from ivy_robot.physics import smooth
 from ivy_robot.physics.constraints import point_jacobians
 from ivy_robot.physics.data import Data

@@ -24,7 +24,7 @@ Example:
 """
 
 from ivy_robot.physics.data import Data
-from ivy_robot.physics.forward import forward, make_data, step
 from ivy_robot.physics.model import Model, read_model
+from ivy_robot.physics.pipeline import forward, make_data, step
 
 __all__ = ["Data", "Model", "forward", "make_data", "read_model", "step"]

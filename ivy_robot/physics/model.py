@@ -9,7 +9,7 @@ Python values directly; nothing of MuJoCo is called after the model is read.
 
 Joints are described by one table, :data:`JOINT_KINDS`: per kind, the width of its ``qpos`` and
 ``qvel`` and which of its dofs rotate. The kinematics (:mod:`ivy_robot.physics.kinematics`) and
-the position integration (:mod:`ivy_robot.physics.forward`) read it.
+the position integration (:mod:`ivy_robot.physics.pipeline`) read it.
 
 What MuJoCo's ``mj_forward`` would compute and the pipeline does not model is listed in
 ``Model.unsupported`` when the model is read, and refused by name on first use of the dynamics
@@ -163,7 +163,7 @@ class Model:
     kin: Any = None  # ivy_robot.physics.kinematics.Plan
     smooth: Any = None  # ivy_robot.physics.smooth.Plan
     rows: Any = None  # ivy_robot.physics.constraints.Layout
-    fwd: Any = None  # ivy_robot.physics.forward.Plan
+    fwd: Any = None  # ivy_robot.physics.pipeline.Plan
 
     def check_dynamics(self) -> None:
         """Raise ``NotImplementedError`` naming what the model uses and the dynamics do not
@@ -322,11 +322,11 @@ def read_model(m: Any) -> Model:
         unsupported=_unsupported(m, mujoco, disabled, enabled, contacts),
         **structure,
     )
-    from ivy_robot.physics import constraints, forward, kinematics, smooth
+    from ivy_robot.physics import constraints, kinematics, pipeline, smooth
 
     model = model.replace(kin=kinematics.plan(m, model), smooth=smooth.plan(model))
     model = model.replace(rows=constraints.plan(model))
-    return model.replace(fwd=forward.plan(model))
+    return model.replace(fwd=pipeline.plan(model))
 
 
 def _contacts(m, disabled):
