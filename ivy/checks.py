@@ -269,17 +269,18 @@ def _checked(fn, exact: frozenset, broadcast: bool, hints: dict, shapes: dict):
     return public
 
 
-_FLOATING: dict = {}  # dtype object -> whether it is a floating (real or complex) dtype
+_FLOATING: dict = {}  # (dtype's type, dtype) -> whether it is a floating (real or complex) dtype
 
 
 def _is_floating(dtype) -> bool:
+    key = (type(dtype), dtype)  # (the type first: dtypes of two libraries never compare)
     try:
-        return _FLOATING[dtype]
+        return _FLOATING[key]
     except (KeyError, TypeError):
         text = getattr(dtype, "name", None) or str(dtype)
         floating = "float" in text or "complex" in text
         try:
-            _FLOATING[dtype] = floating
+            _FLOATING[key] = floating
         except TypeError:  # not hashable
             pass
         return floating

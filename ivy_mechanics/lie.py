@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Array, Framework
+from ivy_mechanics._checks import takes
 from ivy_mechanics._series import ONE_MINUS_COS_OVER_X2, SE3_LOG_D, X_MINUS_SIN_OVER_X3
 from ivy_mechanics.orientation import _kernels as K
 from ivy_mechanics.pose import assemble_mat_pose
@@ -25,6 +26,7 @@ __all__ = [
 ]
 
 
+@takes("vector")
 def so3_hat(vector: Array, *, f: Framework = None) -> Array:
     """Skew-symmetric matrix ``[w]x`` with ``[w]x @ p = w x p``.
 
@@ -45,6 +47,7 @@ def so3_hat(vector: Array, *, f: Framework = None) -> Array:
     return K.hat(xp, vector)
 
 
+@takes(matrix=("...", 3, 3))
 def so3_vee(matrix: Array, *, f: Framework = None) -> Array:
     """Inverse of :func:`so3_hat`: the vector of the skew-symmetric part of ``matrix``.
 
@@ -69,6 +72,7 @@ def so3_vee(matrix: Array, *, f: Framework = None) -> Array:
     )
 
 
+@takes("rot_vec")
 def so3_exp(rot_vec: Array, *, f: Framework = None) -> Array:
     """Exponential map of SO(3): the rotation matrix of a rotation vector (same as
     :func:`rot_vec_to_rot_mat`).
@@ -90,6 +94,7 @@ def so3_exp(rot_vec: Array, *, f: Framework = None) -> Array:
     return K.rotvec_to_mat(xp, rot_vec)
 
 
+@takes("rot_mat")
 def so3_log(rot_mat: Array, *, f: Framework = None) -> Array:
     """Logarithm map of SO(3): the rotation vector (angle in [0, pi]) of a rotation matrix
     (same as :func:`rot_mat_to_rot_vec`).
@@ -109,6 +114,7 @@ def so3_log(rot_mat: Array, *, f: Framework = None) -> Array:
     return K.mat_to_rotvec(xp, rot_mat)
 
 
+@takes("twist")
 def se3_hat(twist: Array, *, f: Framework = None) -> Array:
     """The 4x4 matrix ``[[ [w]x, v ], [0, 0]]`` of a twist ``[v, w]``.
 
@@ -128,6 +134,7 @@ def se3_hat(twist: Array, *, f: Framework = None) -> Array:
     return xp.concat([top, xp.zeros_like(top[..., 0:1, :])], axis=-2)
 
 
+@takes(matrix=("...", (3, 4), 4))
 def se3_vee(matrix: Array, *, f: Framework = None) -> Array:
     """Inverse of :func:`se3_hat`: the twist ``[v, w]`` of a 4x4 (or 3x4) matrix.
 
@@ -146,6 +153,7 @@ def se3_vee(matrix: Array, *, f: Framework = None) -> Array:
     return xp.concat([matrix[..., 0:3, 3], so3_vee(matrix[..., 0:3, 0:3], f=xp)], axis=-1)
 
 
+@takes("twist")
 def se3_exp(twist: Array, *, f: Framework = None) -> Array:
     """Exponential map of SE(3): the pose ``[[exp(w), V v], [0, 1]]`` reached by moving along a
     twist ``[v, w]`` for unit time, with ``V = I + B [w]x + C [w]x^2``,
@@ -175,6 +183,7 @@ def se3_exp(twist: Array, *, f: Framework = None) -> Array:
     return assemble_mat_pose(xp, K.rotvec_to_mat(xp, w), position)
 
 
+@takes("mat_pose")
 def se3_log(mat_pose: Array, *, f: Framework = None) -> Array:
     """Logarithm map of SE(3): the twist ``[v, w]`` with ``se3_exp([v, w]) = pose``, rotation
     angle in [0, pi]: ``v = t - [w]x t / 2 + D [w]x^2 t``, ``D = (1 - (t/2) cot(t/2)) / t^2``.

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Array, Framework
+from ivy_mechanics._checks import takes
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -58,6 +59,7 @@ def _split_mat_pose(mat_pose):
     return mat_pose[..., 0:3, 0:3], mat_pose[..., 0:3, 3]
 
 
+@takes("matrices")
 def make_transformation_homogeneous(matrices: Array, *, f: Framework = None) -> Array:
     """Append the row ``[0, 0, 0, 1]`` to ``[R, t]`` matrices.
 
@@ -84,6 +86,7 @@ def make_transformation_homogeneous(matrices: Array, *, f: Framework = None) -> 
 # ----------------------------------------------------------------------------------------------
 
 
+@takes("quat_pose")
 def quaternion_pose_to_mat_pose(quat_pose: Array, *, f: Framework = None) -> Array:
     """Homogeneous matrix of a quaternion pose (the quaternion is normalised).
 
@@ -102,6 +105,7 @@ def quaternion_pose_to_mat_pose(quat_pose: Array, *, f: Framework = None) -> Arr
     return assemble_mat_pose(xp, K.quat_to_mat(xp, quat_pose[..., 3:7]), quat_pose[..., 0:3])
 
 
+@takes("mat_pose")
 def mat_pose_to_quaternion_pose(mat_pose: Array, *, f: Framework = None) -> Array:
     """Quaternion pose (``qw >= 0``) of a matrix pose.
 
@@ -121,6 +125,7 @@ def mat_pose_to_quaternion_pose(mat_pose: Array, *, f: Framework = None) -> Arra
     return xp.concat([position, K.mat_to_quat(xp, rot_mat)], axis=-1)
 
 
+@takes("rot_vec_pose")
 def rot_vec_pose_to_mat_pose(rot_vec_pose: Array, *, f: Framework = None) -> Array:
     """Homogeneous matrix of a rotation-vector pose.
 
@@ -143,6 +148,7 @@ def rot_vec_pose_to_mat_pose(rot_vec_pose: Array, *, f: Framework = None) -> Arr
     return assemble_mat_pose(xp, rot_mat, rot_vec_pose[..., 0:3])
 
 
+@takes("mat_pose")
 def mat_pose_to_rot_vec_pose(mat_pose: Array, *, f: Framework = None) -> Array:
     """Rotation-vector pose of a matrix pose (angle in [0, pi]).
 
@@ -162,6 +168,7 @@ def mat_pose_to_rot_vec_pose(mat_pose: Array, *, f: Framework = None) -> Array:
     return xp.concat([position, K.mat_to_rotvec(xp, rot_mat)], axis=-1)
 
 
+@takes("euler_pose")
 def euler_pose_to_mat_pose(
     euler_pose: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
@@ -184,6 +191,7 @@ def euler_pose_to_mat_pose(
     return assemble_mat_pose(xp, rot_mat, euler_pose[..., 0:3])
 
 
+@takes("mat_pose")
 def mat_pose_to_euler_pose(
     mat_pose: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
@@ -207,6 +215,7 @@ def mat_pose_to_euler_pose(
     return xp.concat([position, euler], axis=-1)
 
 
+@takes("axis_angle_pose")
 def axis_angle_pose_to_mat_pose(axis_angle_pose: Array, *, f: Framework = None) -> Array:
     """Homogeneous matrix of an axis-angle pose (unit axis).
 
@@ -228,6 +237,7 @@ def axis_angle_pose_to_mat_pose(axis_angle_pose: Array, *, f: Framework = None) 
     )
 
 
+@takes("mat_pose")
 def mat_pose_to_axis_angle_pose(mat_pose: Array, *, f: Framework = None) -> Array:
     """Axis-angle pose of a matrix pose (angle in [0, pi], axis +z at angle 0).
 
@@ -253,6 +263,7 @@ def mat_pose_to_axis_angle_pose(mat_pose: Array, *, f: Framework = None) -> Arra
 # ----------------------------------------------------------------------------------------------
 
 
+@takes("quat_pose")
 def quaternion_pose_to_rot_vec_pose(quat_pose: Array, *, f: Framework = None) -> Array:
     """Rotation-vector pose of a quaternion pose.
 
@@ -271,6 +282,7 @@ def quaternion_pose_to_rot_vec_pose(quat_pose: Array, *, f: Framework = None) ->
     return xp.concat([quat_pose[..., 0:3], K.quat_to_rotvec(xp, quat_pose[..., 3:7])], axis=-1)
 
 
+@takes("rot_vec_pose")
 def rot_vec_pose_to_quaternion_pose(rot_vec_pose: Array, *, f: Framework = None) -> Array:
     """Quaternion pose of a rotation-vector pose.
 
@@ -290,6 +302,7 @@ def rot_vec_pose_to_quaternion_pose(rot_vec_pose: Array, *, f: Framework = None)
     return xp.concat([rot_vec_pose[..., 0:3], quat], axis=-1)
 
 
+@takes("quat_pose")
 def quaternion_pose_to_euler_pose(
     quat_pose: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
@@ -312,6 +325,7 @@ def quaternion_pose_to_euler_pose(
     return xp.concat([quat_pose[..., 0:3], euler], axis=-1)
 
 
+@takes("euler_pose")
 def euler_pose_to_quaternion_pose(
     euler_pose: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
@@ -334,6 +348,7 @@ def euler_pose_to_quaternion_pose(
     return xp.concat([euler_pose[..., 0:3], quat], axis=-1)
 
 
+@takes("quat_pose")
 def quaternion_pose_to_axis_angle_pose(quat_pose: Array, *, f: Framework = None) -> Array:
     """Axis-angle pose of a quaternion pose.
 
@@ -353,6 +368,7 @@ def quaternion_pose_to_axis_angle_pose(quat_pose: Array, *, f: Framework = None)
     return xp.concat([quat_pose[..., 0:3], axis_angle], axis=-1)
 
 
+@takes("axis_angle_pose")
 def axis_angle_pose_to_quaternion_pose(axis_angle_pose: Array, *, f: Framework = None) -> Array:
     """Quaternion pose of an axis-angle pose (unit axis).
 
@@ -377,6 +393,7 @@ def axis_angle_pose_to_quaternion_pose(axis_angle_pose: Array, *, f: Framework =
 # ----------------------------------------------------------------------------------------------
 
 
+@takes("mat_pose1", "mat_pose2")
 def compose_mat_poses(mat_pose1: Array, mat_pose2: Array, *, f: Framework = None) -> Array:
     """``P1 @ P2``: the pose ``P2`` expressed in the frame of ``P1`` (apply ``P2``, then ``P1``).
 
@@ -399,6 +416,7 @@ def compose_mat_poses(mat_pose1: Array, mat_pose2: Array, *, f: Framework = None
     return assemble_mat_pose(xp, xp.matmul(rot1, rot2), xp.matvec(rot1, pos2) + pos1)
 
 
+@takes("mat_pose")
 def invert_mat_pose(mat_pose: Array, *, f: Framework = None) -> Array:
     """Inverse of a rigid transformation: ``[[R^T, -R^T t], [0, 1]]``.
 
@@ -419,6 +437,7 @@ def invert_mat_pose(mat_pose: Array, *, f: Framework = None) -> Array:
     return assemble_mat_pose(xp, rot_t, -xp.matvec(rot_t, position))
 
 
+@takes("mat_pose", "points")
 def transform_points(mat_pose: Array, points: Array, *, f: Framework = None) -> Array:
     """``R @ p + t``: points from the body frame to the world frame. Batch dimensions
     broadcast, so a cloud ``[B, N, 3]`` is transformed by poses ``[B, 1, 4, 4]``.
@@ -441,6 +460,7 @@ def transform_points(mat_pose: Array, points: Array, *, f: Framework = None) -> 
     return xp.matvec(rot_mat, points) + position
 
 
+@takes("quat_pose1", "quat_pose2")
 def compose_quaternion_poses(quat_pose1: Array, quat_pose2: Array, *, f: Framework = None) -> Array:
     """Quaternion-pose equivalent of :func:`compose_mat_poses`: ``[t1 + R1 t2, q1 * q2]``.
 
@@ -463,6 +483,7 @@ def compose_quaternion_poses(quat_pose1: Array, quat_pose2: Array, *, f: Framewo
     return xp.concat([position, K.hamilton_product(xp, q1, q2)], axis=-1)
 
 
+@takes("quat_pose")
 def invert_quaternion_pose(quat_pose: Array, *, f: Framework = None) -> Array:
     """Inverse of a quaternion pose: ``[-R^T t, conj(q)]`` (unit quaternion).
 
@@ -488,6 +509,7 @@ def _quat_rotate(xp, q, p):
     return p + w * t + xp.cross(v, t)
 
 
+@takes("quat_pose", "quat_vel")
 def increment_quaternion_pose_with_velocity(
     quat_pose: Array, quat_vel: Array, delta_t: Array | float, *, f: Framework = None
 ) -> Array:

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Array, Framework
+from ivy_mechanics._checks import takes
 
 __all__ = [
     "polar_to_cartesian_coords",
@@ -27,6 +28,7 @@ __all__ = [
 ]
 
 
+@takes("polar_coords")
 def polar_to_cartesian_coords(polar_coords: Array, *, f: Framework = None) -> Array:
     """Cartesian coordinates of spherical polar coordinates ``[phi, theta, r]``.
 
@@ -49,6 +51,7 @@ def polar_to_cartesian_coords(polar_coords: Array, *, f: Framework = None) -> Ar
     )
 
 
+@takes("cartesian_coords")
 def cartesian_to_polar_coords(cartesian_coords: Array, *, f: Framework = None) -> Array:
     """Spherical polar coordinates ``[phi, theta, r]`` of cartesian coordinates.
 
@@ -72,6 +75,7 @@ def cartesian_to_polar_coords(cartesian_coords: Array, *, f: Framework = None) -
     return xp.concat([phi, theta, xp.safe_norm(cartesian_coords, keepdims=True)], axis=-1)
 
 
+@takes("cylindrical_coords")
 def cylindrical_to_cartesian_coords(cylindrical_coords: Array, *, f: Framework = None) -> Array:
     """Cartesian coordinates of cylindrical coordinates ``[rho, phi, z]``.
 
@@ -91,6 +95,7 @@ def cylindrical_to_cartesian_coords(cylindrical_coords: Array, *, f: Framework =
     return xp.concat([rho * xp.cos(phi), rho * xp.sin(phi), cylindrical_coords[..., 2:3]], axis=-1)
 
 
+@takes("cartesian_coords")
 def cartesian_to_cylindrical_coords(cartesian_coords: Array, *, f: Framework = None) -> Array:
     """Cylindrical coordinates ``[rho, phi, z]`` of cartesian coordinates.
 
@@ -112,6 +117,7 @@ def cartesian_to_cylindrical_coords(cartesian_coords: Array, *, f: Framework = N
     )
 
 
+@takes("coords")
 def make_coordinates_homogeneous(coords: Array, *, f: Framework = None) -> Array:
     """Append a 1 to each coordinate vector.
 

@@ -164,7 +164,7 @@ def create_trimesh_indices_for_image(
     return indices
 
 
-@checked
+@checked(exact=("validity_mask",))
 def coord_image_to_trimesh(
     coord_img: Array, validity_mask: Array | None = None, *, f: Framework = None
 ) -> tuple:

@@ -241,7 +241,7 @@ def velocity_from_flow_cam_coords_and_cam_mats(
     return velocity, valid
 
 
-@checked
+@checked(exact=("id_image", "obj_ids"))
 def project_cam_coords_with_object_transformations(
     cam_coords_1: Array,
     id_image: Array,
@@ -290,14 +290,14 @@ def project_cam_coords_with_object_transformations(
     trans = xp.reshape(obj_trans, (*tshape[:nb], 1, 1, tshape[-3], 3, 4))
     moved = xp.matvec(trans[..., 0:3], points[..., None, :]) + trans[..., 3]
     ids = xp.reshape(obj_ids[..., 0], (*C.shape_of(xp, obj_ids)[:-2], 1, 1, -1))
-    selected = xp.astype(ids == id_image, xp.dtype(moved))  # [*B, h, w, num_obj]
+    selected = xp.astype(xp.equal(ids, id_image), xp.dtype(moved))  # [*B, h, w, num_obj]
     motion_mask = xp.sum(selected, axis=-1, keepdims=True) > 0
     object_motion = xp.sum(moved * selected[..., None], axis=-2)
     static = tvg.cam_to_cam_coords(points, cam_1_to_2_ext_mat, f=xp)[..., 0:3]
     return C.homogeneous(xp, xp.where(motion_mask, object_motion, static)), motion_mask
 
 
-@checked
+@checked(exact=("id_image", "obj_ids"))
 def velocity_from_cam_coords_id_image_and_object_trans(
     cam_coords_t: Array,
     id_image: Array,
@@ -342,7 +342,7 @@ def velocity_from_cam_coords_id_image_and_object_trans(
     return xp.where(moving, velocity, xp.zeros_like(velocity))
 
 
-@checked
+@checked(exact=("id_image", "obj_ids"))
 def flow_from_cam_coords_id_image_and_object_trans(
     cam_coords_f1: Array,
     id_image: Array,

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Array, Framework
+from ivy_mechanics._checks import takes
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -21,6 +22,7 @@ __all__ = [
 ]
 
 
+@takes("rot_mat")
 def rot_mat_to_axis_angle(rot_mat: Array, *, f: Framework = None) -> Array:
     """Unit axis and angle of a rotation matrix.
 
@@ -39,6 +41,7 @@ def rot_mat_to_axis_angle(rot_mat: Array, *, f: Framework = None) -> Array:
     return K.quat_to_axis_angle(xp, K.mat_to_quat(xp, rot_mat), canonical=True)
 
 
+@takes("quaternion")
 def quaternion_to_axis_angle(quaternion: Array, *, f: Framework = None) -> Array:
     """Unit axis and angle ``2 atan2(|v|, |w|)`` of a quaternion ``[v, w]`` (any non-zero norm).
 
@@ -57,6 +60,7 @@ def quaternion_to_axis_angle(quaternion: Array, *, f: Framework = None) -> Array
     return K.quat_to_axis_angle(xp, quaternion)
 
 
+@takes("rot_vec")
 def rot_vec_to_axis_angle(rot_vec: Array, *, f: Framework = None) -> Array:
     """Unit axis ``v / |v|`` and angle ``|v|`` of a rotation vector.
 
@@ -75,6 +79,7 @@ def rot_vec_to_axis_angle(rot_vec: Array, *, f: Framework = None) -> Array:
     return K.rotvec_to_axis_angle(xp, rot_vec)
 
 
+@takes("polar_axis_angle")
 def polar_axis_angle_to_axis_angle(polar_axis_angle: Array, *, f: Framework = None) -> Array:
     """Axis-angle of ``[inclination, azimuth, angle]``: the axis is
     ``[sin(i) cos(a), sin(i) sin(a), cos(i)]``.
@@ -94,6 +99,7 @@ def polar_axis_angle_to_axis_angle(polar_axis_angle: Array, *, f: Framework = No
     return K.polar_to_axis_angle(xp, polar_axis_angle)
 
 
+@takes("euler_angles")
 def euler_to_axis_angle(
     euler_angles: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
@@ -115,6 +121,7 @@ def euler_to_axis_angle(
     return K.quat_to_axis_angle(xp, K.euler_to_quat(xp, euler_angles, convention))
 
 
+@takes("rot_6d")
 def rot_6d_to_axis_angle(rot_6d: Array, *, f: Framework = None) -> Array:
     """Axis-angle of the 6D representation (see :func:`rot_6d_to_rot_mat`).
 
@@ -134,6 +141,7 @@ def rot_6d_to_axis_angle(rot_6d: Array, *, f: Framework = None) -> Array:
     return K.quat_to_axis_angle(xp, quat, canonical=True)
 
 
+@takes()
 def get_random_axis_angle(batch_shape=(), dtype=None, *, f: Framework = None) -> Array:
     """Axis-angles of rotations drawn uniformly (Haar measure) from SO(3).
 

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Array, Framework
+from ivy_mechanics._checks import takes
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -34,6 +35,7 @@ _SEQUENCES = tuple(a + b + c for a in "xyz" for b in "xyz" for c in "xyz" if a !
 EULER_CONVENTIONS: tuple[str, ...] = _SEQUENCES + tuple(s.upper() for s in _SEQUENCES)
 
 
+@takes("rot_mat")
 def rot_mat_to_euler(rot_mat: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """Euler angles of a rotation matrix.
 
@@ -54,6 +56,7 @@ def rot_mat_to_euler(rot_mat: Array, convention: str = "zyx", *, f: Framework = 
     return K.quat_to_euler(xp, K.mat_to_quat(xp, rot_mat), convention)
 
 
+@takes("quaternion")
 def quaternion_to_euler(
     quaternion: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
@@ -75,6 +78,7 @@ def quaternion_to_euler(
     return K.quat_to_euler(xp, quaternion, convention)
 
 
+@takes("rot_vec")
 def rot_vec_to_euler(rot_vec: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """Euler angles of a rotation vector.
 
@@ -94,6 +98,7 @@ def rot_vec_to_euler(rot_vec: Array, convention: str = "zyx", *, f: Framework = 
     return K.quat_to_euler(xp, K.rotvec_to_quat(xp, rot_vec), convention)
 
 
+@takes("axis_angle")
 def axis_angle_to_euler(
     axis_angle: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
@@ -115,6 +120,7 @@ def axis_angle_to_euler(
     return K.quat_to_euler(xp, K.axis_angle_to_quat(xp, axis_angle), convention)
 
 
+@takes("polar_axis_angle")
 def polar_axis_angle_to_euler(
     polar_axis_angle: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
@@ -137,6 +143,7 @@ def polar_axis_angle_to_euler(
     return K.quat_to_euler(xp, quat, convention)
 
 
+@takes("rot_6d")
 def rot_6d_to_euler(rot_6d: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """Euler angles of the 6D representation (see :func:`rot_6d_to_rot_mat`).
 
@@ -156,6 +163,7 @@ def rot_6d_to_euler(rot_6d: Array, convention: str = "zyx", *, f: Framework = No
     return K.quat_to_euler(xp, K.mat_to_quat(xp, K.rot6d_to_mat(xp, rot_6d)), convention)
 
 
+@takes()
 def get_random_euler(
     batch_shape=(), convention: str = "zyx", dtype=None, *, f: Framework = None
 ) -> Array:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Array, Framework
+from ivy_mechanics._checks import takes
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -15,6 +16,7 @@ __all__ = [
 ]
 
 
+@takes("rot_mat", "points")
 def rotate_points(rot_mat: Array, points: Array, *, f: Framework = None) -> Array:
     """Rotate points: ``R @ p``. Batch dimensions broadcast, so a cloud ``[B, N, 3]`` is rotated
     by ``[B, 1, 3, 3]`` matrices.
@@ -36,6 +38,7 @@ def rotate_points(rot_mat: Array, points: Array, *, f: Framework = None) -> Arra
     return xp.matvec(rot_mat, points)
 
 
+@takes("quaternion", "points")
 def quaternion_rotate_points(quaternion: Array, points: Array, *, f: Framework = None) -> Array:
     """Rotate points by unit quaternions without forming the matrix:
     ``p + w t + v x t`` with ``t = 2 v x p``. Batch dimensions broadcast.
@@ -59,6 +62,7 @@ def quaternion_rotate_points(quaternion: Array, points: Array, *, f: Framework =
     return points + w * t + xp.cross(v, t)
 
 
+@takes("quaternion0", "quaternion1")
 def slerp(
     quaternion0: Array, quaternion1: Array, t: Array | float, *, f: Framework = None
 ) -> Array:
@@ -86,6 +90,7 @@ def slerp(
     return K.hamilton_product(xp, quaternion0, K.rotvec_to_quat(xp, relative * t))
 
 
+@takes("rot_mat1", "rot_mat2")
 def geodesic_distance(rot_mat1: Array, rot_mat2: Array, *, f: Framework = None) -> Array:
     """Angle in [0, pi] of the rotation between two orientations, ``|log(R1^T R2)|``.
 
@@ -120,6 +125,7 @@ def geodesic_distance(rot_mat1: Array, rot_mat2: Array, *, f: Framework = None) 
     return xp.atan2(sin, cos)
 
 
+@takes("quaternion1", "quaternion2")
 def quaternion_geodesic_distance(
     quaternion1: Array, quaternion2: Array, *, f: Framework = None
 ) -> Array:

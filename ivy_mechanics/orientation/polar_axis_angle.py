@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Array, Framework
+from ivy_mechanics._checks import takes
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -21,6 +22,7 @@ __all__ = [
 ]
 
 
+@takes("rot_mat")
 def rot_mat_to_polar_axis_angle(rot_mat: Array, *, f: Framework = None) -> Array:
     """Polar axis-angle of a rotation matrix.
 
@@ -40,6 +42,7 @@ def rot_mat_to_polar_axis_angle(rot_mat: Array, *, f: Framework = None) -> Array
     return K.axis_angle_to_polar(xp, axis_angle)
 
 
+@takes("quaternion")
 def quaternion_to_polar_axis_angle(quaternion: Array, *, f: Framework = None) -> Array:
     """Polar axis-angle of a quaternion (any non-zero norm).
 
@@ -58,6 +61,7 @@ def quaternion_to_polar_axis_angle(quaternion: Array, *, f: Framework = None) ->
     return K.axis_angle_to_polar(xp, K.quat_to_axis_angle(xp, quaternion))
 
 
+@takes("rot_vec")
 def rot_vec_to_polar_axis_angle(rot_vec: Array, *, f: Framework = None) -> Array:
     """Polar axis-angle of a rotation vector (the angle is ``|v|``, not wrapped).
 
@@ -76,6 +80,7 @@ def rot_vec_to_polar_axis_angle(rot_vec: Array, *, f: Framework = None) -> Array
     return K.axis_angle_to_polar(xp, K.rotvec_to_axis_angle(xp, rot_vec))
 
 
+@takes("axis_angle")
 def axis_angle_to_polar_axis_angle(axis_angle: Array, *, f: Framework = None) -> Array:
     """Polar axis-angle of ``[ax, ay, az, angle]``.
 
@@ -94,6 +99,7 @@ def axis_angle_to_polar_axis_angle(axis_angle: Array, *, f: Framework = None) ->
     return K.axis_angle_to_polar(xp, axis_angle)
 
 
+@takes("euler_angles")
 def euler_to_polar_axis_angle(
     euler_angles: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
@@ -116,6 +122,7 @@ def euler_to_polar_axis_angle(
     return K.axis_angle_to_polar(xp, K.quat_to_axis_angle(xp, quat))
 
 
+@takes("rot_6d")
 def rot_6d_to_polar_axis_angle(rot_6d: Array, *, f: Framework = None) -> Array:
     """Polar axis-angle of the 6D representation (see :func:`rot_6d_to_rot_mat`).
 

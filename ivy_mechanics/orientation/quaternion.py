@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Array, Framework
+from ivy_mechanics._checks import takes
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -25,6 +26,7 @@ __all__ = [
 ]
 
 
+@takes("rot_mat")
 def rot_mat_to_quaternion(rot_mat: Array, *, f: Framework = None) -> Array:
     """Unit quaternion of a rotation matrix, with ``w >= 0``.
 
@@ -47,6 +49,7 @@ def rot_mat_to_quaternion(rot_mat: Array, *, f: Framework = None) -> Array:
     return K.mat_to_quat(xp, rot_mat)
 
 
+@takes("rot_vec")
 def rot_vec_to_quaternion(rot_vec: Array, *, f: Framework = None) -> Array:
     """Unit quaternion ``[sin(t/2) u, cos(t/2)]`` of a rotation vector ``t u``.
 
@@ -65,6 +68,7 @@ def rot_vec_to_quaternion(rot_vec: Array, *, f: Framework = None) -> Array:
     return K.rotvec_to_quat(xp, rot_vec)
 
 
+@takes("axis_angle")
 def axis_angle_to_quaternion(axis_angle: Array, *, f: Framework = None) -> Array:
     """Unit quaternion of ``[ax, ay, az, angle]`` (the axis must be a unit vector).
 
@@ -83,6 +87,7 @@ def axis_angle_to_quaternion(axis_angle: Array, *, f: Framework = None) -> Array
     return K.axis_angle_to_quat(xp, axis_angle)
 
 
+@takes("polar_axis_angle")
 def polar_axis_angle_to_quaternion(polar_axis_angle: Array, *, f: Framework = None) -> Array:
     """Unit quaternion of ``[inclination, azimuth, angle]`` (axis inclination from +z, azimuth
     from +x).
@@ -102,6 +107,7 @@ def polar_axis_angle_to_quaternion(polar_axis_angle: Array, *, f: Framework = No
     return K.axis_angle_to_quat(xp, K.polar_to_axis_angle(xp, polar_axis_angle))
 
 
+@takes("euler_angles")
 def euler_to_quaternion(
     euler_angles: Array, convention: str = "zyx", *, f: Framework = None
 ) -> Array:
@@ -124,6 +130,7 @@ def euler_to_quaternion(
     return K.euler_to_quat(xp, euler_angles, convention)
 
 
+@takes("rot_6d")
 def rot_6d_to_quaternion(rot_6d: Array, *, f: Framework = None) -> Array:
     """Unit quaternion (``w >= 0``) of the 6D representation (see :func:`rot_6d_to_rot_mat`).
 
@@ -142,6 +149,7 @@ def rot_6d_to_quaternion(rot_6d: Array, *, f: Framework = None) -> Array:
     return K.mat_to_quat(xp, K.rot6d_to_mat(xp, rot_6d))
 
 
+@takes("quaternion1", "quaternion2")
 def hamilton_product(quaternion1: Array, quaternion2: Array, *, f: Framework = None) -> Array:
     """Hamilton product ``q1 * q2``: the rotation ``q2`` followed by ``q1``, i.e.
     ``R(q1 * q2) = R(q1) @ R(q2)``. Batch dimensions broadcast.
@@ -163,6 +171,7 @@ def hamilton_product(quaternion1: Array, quaternion2: Array, *, f: Framework = N
     return K.hamilton_product(xp, quaternion1, quaternion2)
 
 
+@takes("quaternion")
 def quaternion_conjugate(quaternion: Array, *, f: Framework = None) -> Array:
     """Conjugate ``[-x, -y, -z, w]`` (the inverse rotation for a unit quaternion).
 
@@ -181,6 +190,7 @@ def quaternion_conjugate(quaternion: Array, *, f: Framework = None) -> Array:
     return xp.concat([-quaternion[..., :3], quaternion[..., 3:]], axis=-1)
 
 
+@takes("quaternion")
 def inverse_quaternion(quaternion: Array, *, f: Framework = None) -> Array:
     """Multiplicative inverse ``conj(q) / |q|**2``.
 
@@ -200,6 +210,7 @@ def inverse_quaternion(quaternion: Array, *, f: Framework = None) -> Array:
     return conj / xp.sum(quaternion * quaternion, axis=-1, keepdims=True)
 
 
+@takes("quaternion")
 def normalize_quaternion(quaternion: Array, *, f: Framework = None) -> Array:
     """``q / |q|``, the unit quaternion of the same rotation.
 
@@ -218,6 +229,7 @@ def normalize_quaternion(quaternion: Array, *, f: Framework = None) -> Array:
     return quaternion / xp.sqrt(xp.sum(quaternion * quaternion, axis=-1, keepdims=True))
 
 
+@takes("quaternion")
 def scale_quaternion_rotation_angle(
     quaternion: Array, scale: Array | float, *, f: Framework = None
 ) -> Array:
@@ -242,6 +254,7 @@ def scale_quaternion_rotation_angle(
     return K.rotvec_to_quat(xp, K.quat_to_rotvec(xp, quaternion) * scale)
 
 
+@takes()
 def get_random_quaternion(batch_shape=(), dtype=None, *, f: Framework = None) -> Array:
     """Unit quaternions of rotations drawn uniformly (Haar measure) from SO(3): normalised
     4D standard normal samples.

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Array, Framework
+from ivy_mechanics._checks import takes
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -17,6 +18,7 @@ __all__ = [
 ]
 
 
+@takes("rot_mat")
 def rot_mat_to_rot_6d(rot_mat: Array, *, f: Framework = None) -> Array:
     """The first two columns of a rotation matrix.
 
@@ -35,6 +37,7 @@ def rot_mat_to_rot_6d(rot_mat: Array, *, f: Framework = None) -> Array:
     return K.mat_to_rot6d(xp, rot_mat)
 
 
+@takes("quaternion")
 def quaternion_to_rot_6d(quaternion: Array, *, f: Framework = None) -> Array:
     """6D representation of a quaternion (any non-zero norm).
 
@@ -53,6 +56,7 @@ def quaternion_to_rot_6d(quaternion: Array, *, f: Framework = None) -> Array:
     return K.mat_to_rot6d(xp, K.quat_to_mat(xp, quaternion))
 
 
+@takes("rot_vec")
 def rot_vec_to_rot_6d(rot_vec: Array, *, f: Framework = None) -> Array:
     """6D representation of a rotation vector.
 
@@ -71,6 +75,7 @@ def rot_vec_to_rot_6d(rot_vec: Array, *, f: Framework = None) -> Array:
     return K.mat_to_rot6d(xp, K.rotvec_to_mat(xp, rot_vec))
 
 
+@takes("axis_angle")
 def axis_angle_to_rot_6d(axis_angle: Array, *, f: Framework = None) -> Array:
     """6D representation of ``[ax, ay, az, angle]`` (unit axis).
 
@@ -90,6 +95,7 @@ def axis_angle_to_rot_6d(axis_angle: Array, *, f: Framework = None) -> Array:
     return K.mat_to_rot6d(xp, K.quat_to_mat(xp, quat, normalize=False))
 
 
+@takes("polar_axis_angle")
 def polar_axis_angle_to_rot_6d(polar_axis_angle: Array, *, f: Framework = None) -> Array:
     """6D representation of ``[inclination, azimuth, angle]``.
 
@@ -109,6 +115,7 @@ def polar_axis_angle_to_rot_6d(polar_axis_angle: Array, *, f: Framework = None) 
     return K.mat_to_rot6d(xp, K.quat_to_mat(xp, quat, normalize=False))
 
 
+@takes("euler_angles")
 def euler_to_rot_6d(euler_angles: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """6D representation of Euler angles (scipy's spelling; see :func:`euler_to_rot_mat`).
 

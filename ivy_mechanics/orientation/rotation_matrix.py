@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Array, Framework
+from ivy_mechanics._checks import takes
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -18,6 +19,7 @@ __all__ = [
 ]
 
 
+@takes("quaternion")
 def quaternion_to_rot_mat(quaternion: Array, *, f: Framework = None) -> Array:
     """Rotation matrix of a quaternion ``[x, y, z, w]`` (normalised first, as scipy does).
 
@@ -38,6 +40,7 @@ def quaternion_to_rot_mat(quaternion: Array, *, f: Framework = None) -> Array:
     return K.quat_to_mat(xp, quaternion)
 
 
+@takes("rot_vec")
 def rot_vec_to_rot_mat(rot_vec: Array, *, f: Framework = None) -> Array:
     """Rotation matrix of a rotation vector ``angle * axis`` (Rodrigues' formula, the SO(3)
     exponential map), exact at zero and at pi.
@@ -59,6 +62,7 @@ def rot_vec_to_rot_mat(rot_vec: Array, *, f: Framework = None) -> Array:
     return K.rotvec_to_mat(xp, rot_vec)
 
 
+@takes("axis_angle")
 def axis_angle_to_rot_mat(axis_angle: Array, *, f: Framework = None) -> Array:
     """Rotation matrix of ``[ax, ay, az, angle]`` (the axis must be a unit vector).
 
@@ -79,6 +83,7 @@ def axis_angle_to_rot_mat(axis_angle: Array, *, f: Framework = None) -> Array:
     return K.quat_to_mat(xp, K.axis_angle_to_quat(xp, axis_angle), normalize=False)
 
 
+@takes("polar_axis_angle")
 def polar_axis_angle_to_rot_mat(polar_axis_angle: Array, *, f: Framework = None) -> Array:
     """Rotation matrix of ``[inclination, azimuth, angle]``: the axis has inclination from +z and
     azimuth from +x in the xy-plane.
@@ -101,6 +106,7 @@ def polar_axis_angle_to_rot_mat(polar_axis_angle: Array, *, f: Framework = None)
     return K.quat_to_mat(xp, quat, normalize=False)
 
 
+@takes("euler_angles")
 def euler_to_rot_mat(euler_angles: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """Rotation matrix of Euler angles, in scipy's spelling of the sequence.
 
@@ -126,6 +132,7 @@ def euler_to_rot_mat(euler_angles: Array, convention: str = "zyx", *, f: Framewo
     return K.euler_to_mat(xp, euler_angles, convention)
 
 
+@takes("rot_6d")
 def rot_6d_to_rot_mat(rot_6d: Array, *, f: Framework = None) -> Array:
     """Rotation matrix of the 6D representation (Zhou et al., 2019): the two vectors
     ``rot_6d[..., :3]`` and ``rot_6d[..., 3:]`` are orthonormalised (Gram-Schmidt) into the first
@@ -148,6 +155,7 @@ def rot_6d_to_rot_mat(rot_6d: Array, *, f: Framework = None) -> Array:
     return K.rot6d_to_mat(xp, rot_6d)
 
 
+@takes()
 def get_random_rot_mat(batch_shape=(), dtype=None, *, f: Framework = None) -> Array:
     """Rotation matrices drawn uniformly (Haar measure) from SO(3).
 
@@ -168,6 +176,7 @@ def get_random_rot_mat(batch_shape=(), dtype=None, *, f: Framework = None) -> Ar
     return K.quat_to_mat(xp, quat)
 
 
+@takes("body_pos", "target_pos", "up")
 def target_facing_rotation_matrix(
     body_pos: Array, target_pos: Array, up: Array | None = None, *, f: Framework = None
 ) -> Array:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Array, Framework
+from ivy_mechanics._checks import takes
 from ivy_mechanics.orientation import _kernels as K
 
 __all__ = [
@@ -21,6 +22,7 @@ __all__ = [
 ]
 
 
+@takes("rot_mat")
 def rot_mat_to_rot_vec(rot_mat: Array, *, f: Framework = None) -> Array:
     """Rotation vector of a rotation matrix (via the quaternion: exact near 0 and near pi).
 
@@ -39,6 +41,7 @@ def rot_mat_to_rot_vec(rot_mat: Array, *, f: Framework = None) -> Array:
     return K.mat_to_rotvec(xp, rot_mat)
 
 
+@takes("quaternion")
 def quaternion_to_rot_vec(quaternion: Array, *, f: Framework = None) -> Array:
     """Rotation vector ``2 atan2(|v|, w) v / |v|`` of a quaternion ``[v, w]`` (any non-zero norm;
     a series of atan near the identity).
@@ -58,6 +61,7 @@ def quaternion_to_rot_vec(quaternion: Array, *, f: Framework = None) -> Array:
     return K.quat_to_rotvec(xp, quaternion)
 
 
+@takes("axis_angle")
 def axis_angle_to_rot_vec(axis_angle: Array, *, f: Framework = None) -> Array:
     """Rotation vector ``angle * axis`` of ``[ax, ay, az, angle]``.
 
@@ -76,6 +80,7 @@ def axis_angle_to_rot_vec(axis_angle: Array, *, f: Framework = None) -> Array:
     return K.axis_angle_to_rotvec(xp, axis_angle)
 
 
+@takes("polar_axis_angle")
 def polar_axis_angle_to_rot_vec(polar_axis_angle: Array, *, f: Framework = None) -> Array:
     """Rotation vector of ``[inclination, azimuth, angle]``.
 
@@ -94,6 +99,7 @@ def polar_axis_angle_to_rot_vec(polar_axis_angle: Array, *, f: Framework = None)
     return K.axis_angle_to_rotvec(xp, K.polar_to_axis_angle(xp, polar_axis_angle))
 
 
+@takes("euler_angles")
 def euler_to_rot_vec(euler_angles: Array, convention: str = "zyx", *, f: Framework = None) -> Array:
     """Rotation vector of Euler angles (scipy's spelling; see :func:`euler_to_rot_mat`).
 
@@ -113,6 +119,7 @@ def euler_to_rot_vec(euler_angles: Array, convention: str = "zyx", *, f: Framewo
     return K.quat_to_rotvec(xp, K.euler_to_quat(xp, euler_angles, convention))
 
 
+@takes("rot_6d")
 def rot_6d_to_rot_vec(rot_6d: Array, *, f: Framework = None) -> Array:
     """Rotation vector of the 6D representation (see :func:`rot_6d_to_rot_mat`).
 
@@ -131,6 +138,7 @@ def rot_6d_to_rot_vec(rot_6d: Array, *, f: Framework = None) -> Array:
     return K.mat_to_rotvec(xp, K.rot6d_to_mat(xp, rot_6d))
 
 
+@takes()
 def get_random_rot_vec(batch_shape=(), dtype=None, *, f: Framework = None) -> Array:
     """Rotation vectors of rotations drawn uniformly (Haar measure) from SO(3).
 
