@@ -30,6 +30,8 @@ __all__ = [
     "DtypeError",
     "InvalidValueError",
     "LinAlgError",
+    "UnavailableDeviceError",
+    "unavailable_device",
 ]
 
 
@@ -121,3 +123,44 @@ class LinAlgError(InvalidValueError):
     """A matrix the function cannot take: singular (``inv``, ``solve``), not positive definite
     (``cholesky``). Raised in eager calls on every backend (numpy's ``LinAlgError`` is also a
     ValueError); compiled jax code returns inf or NaN instead."""
+
+
+class UnavailableDeviceError(InvalidArgumentError, ValueError):
+    """A device that the backend does not have on this machine, or a name that is no device
+    (a ValueError). Raised in the same words on every backend by :func:`unavailable_device`."""
+
+
+def unavailable_device(device, xp, *, function: str | None = None) -> UnavailableDeviceError:
+    """The error for ``device``, which the backend namespace ``xp`` does not have here: it names
+    the device asked for and the devices the backend has, in ivy's names, in the same words on
+    every backend. Backends raise it; so can any library that takes ``device=``.
+
+    Args:
+        device: the device asked for (an ivy name such as ``'gpu:0'``, or anything else given).
+        xp: the backend namespace (``ivy.torch`` ...).
+        function: the public function that was called, for the message.
+
+    Returns:
+        The error, to raise.
+
+    Example:
+        >>> raise ivy.unavailable_device("gpu:0", ivy.numpy, function="asarray")
+        Traceback (most recent call last):
+        ...
+        ivy.errors.UnavailableDeviceError: ivy.asarray (numpy backend), argument 'device': numpy has
+        no device 'gpu:0' on this machine; its devices here: 'cpu'. Give one of them (ivy names
+        devices 'cpu' and 'gpu:N').
+    """
+    backend = xp.backend
+    try:
+        found = [xp.dev(xp.zeros((), device=d)) for d in xp.__array_namespace_info__().devices()]
+    except Exception:  # (listing the devices must not hide the error being reported)
+        found = ["cpu"]
+    names = ", ".join(repr(n) for n in dict.fromkeys(found))
+    return UnavailableDeviceError(
+        f"{backend} has no device {device!r} on this machine; its devices here: {names}. Give "
+        f"one of them (ivy names devices 'cpu' and 'gpu:N').",
+        function=function,
+        argument="device",
+        backend=backend,
+    )

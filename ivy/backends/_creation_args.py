@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ivy.errors import DtypeError
+from ivy.errors import DtypeError, InvalidValueError
 
 
 def linspace_dtype(start, stop, dtype, backend: str) -> str | None:
@@ -65,3 +65,16 @@ def has_int_beyond_int64(obj) -> bool:
     if isinstance(obj, (list, tuple)):
         return any(has_int_beyond_int64(v) for v in obj)
     return False
+
+
+def check_step(step, backend: str) -> None:
+    """``arange``'s ``step`` must not be 0 (numpy and jax divided by it, torch and tensorflow
+    returned an empty range: a plausible answer to a call that has none)."""
+    if isinstance(step, (int, float)) and step == 0:
+        raise InvalidValueError(
+            "step must not be 0 (the range would never reach stop); give a positive step to "
+            "count up or a negative one to count down.",
+            function="arange",
+            argument="step",
+            backend=backend,
+        )

@@ -45,13 +45,13 @@ def helpers_for(xp: Any, backend: str) -> dict[str, Any]:
         return names[dtype]
 
     def native_device(device):
-        if device is None or device == "cpu":
+        if device is None or device in ("cpu", "cpu:0"):
             return None if device is None else default_device
-        if not isinstance(device, str):
+        if not isinstance(device, (str, int)) and (info is None or device in info.devices()):
             return device  # a native device object
-        raise ValueError(
-            f"the {backend} backend knows the device 'cpu' (its default device); got {device!r}."
-        )
+        from ivy.errors import unavailable_device
+
+        raise unavailable_device(device, _fh.load_backend(backend))
 
     def device_name(device) -> str:
         return "cpu" if device == default_device else str(device)
@@ -119,10 +119,14 @@ def _named(fn: Callable, native: Callable, name: str) -> Callable:
     return fn
 
 
-def host_bridge(name: str, xp: Any, is_array: Callable[[Any], bool], dtype_name) -> Callable:
+def host_bridge(
+    name: str, xp: Any, is_array: Callable[[Any], bool], dtype_name, native_device=None
+) -> Callable:
     """``ivy.numpy.<name>`` for arrays of ``xp``: array arguments go to numpy (by DLPack), native
     dtypes by name, and numpy results come back as ``xp`` arrays. For the functions the Array API
-    does not define, on libraries whose arrays live in host memory."""
+    does not define, on libraries whose arrays live in host memory. A ``device=`` is checked by
+    the library's ``native_device`` (a device it lacks is refused in its name), then the work is
+    numpy's, on the host."""
     target = getattr(_fh.load_backend("numpy"), name)
 
     def to_host(v):
@@ -148,6 +152,9 @@ def host_bridge(name: str, xp: Any, is_array: Callable[[Any], bool], dtype_name)
 
     @functools.wraps(target)
     def fn(*args, **kwargs):
+        if native_device is not None and kwargs.get("device") is not None:
+            native_device(kwargs["device"])
+            kwargs = {**kwargs, "device": None}
         return back(target(*to_host(args), **to_host(kwargs)))
 
     fn.__ivy_host_bridge__ = True

@@ -47,7 +47,7 @@ def assemble_registered(name: str, spec: Any) -> types.ModuleType:
     def fallback(fn_name: str):
         if fn_name in _NEVER_BRIDGED:
             return None
-        return host_bridge(fn_name, xp, is_array, helpers["dtype_name"])
+        return host_bridge(fn_name, xp, is_array, helpers["dtype_name"], helpers["native_device"])
 
     module.__ivy_host_bridged__ = []  # the names that run through numpy, for the docs
 

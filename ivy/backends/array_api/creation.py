@@ -6,7 +6,12 @@ from __future__ import annotations
 import numpy as np
 
 from ivy.backends._constants import ConstantCache
-from ivy.backends._creation_args import beyond_int64, has_int_beyond_int64, linspace_dtype
+from ivy.backends._creation_args import (
+    beyond_int64,
+    check_step,
+    has_int_beyond_int64,
+    linspace_dtype,
+)
 from ivy.backends._dlpack import exportable
 from ivy.backends.array_api._unbound import (
     backend_name,
@@ -74,6 +79,7 @@ def full(shape, fill_value, *, dtype=None, device=None):
 
 
 def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
+    check_step(step, backend_name)
     if dtype is None:
         ints = all(isinstance(v, int) for v in (start, stop, step) if v is not None)
         dtype = xp.int64 if ints else xp.float32

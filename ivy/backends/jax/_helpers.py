@@ -122,11 +122,10 @@ def native_device(device):
     try:
         found = jax.devices(platform)[int(index or 0)]
     except (RuntimeError, ValueError, IndexError):
-        names = ", ".join(device_name(d) for d in jax.devices())
-        raise ValueError(
-            f"jax has no device {device!r}; the devices here are: {names}. "
-            f"Use one of these, e.g. 'cpu' or 'gpu:0'."
-        ) from None
+        from ivy import framework_handler as _fh
+        from ivy.errors import unavailable_device
+
+        raise unavailable_device(device, _fh.load_backend("jax")) from None
     _DEVICES[device] = found
     return found
 

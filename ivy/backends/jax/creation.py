@@ -7,7 +7,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from ivy.backends._constants import ConstantCache
-from ivy.backends._creation_args import beyond_int64, check_fill_value, linspace_dtype
+from ivy.backends._creation_args import beyond_int64, check_fill_value, check_step, linspace_dtype
 from ivy.backends._dlpack import exportable, on_host, refuse_copy_between_devices
 from ivy.backends.jax._helpers import (
     check_x64_of,
@@ -84,6 +84,7 @@ def full(shape, fill_value, *, dtype=None, device=None):
 
 
 def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
+    check_step(step, "jax")
     if dtype is None:
         ints = all(isinstance(v, (int, np.integer)) for v in (start, stop, step) if v is not None)
         dt = default_int() if ints else jnp.float32

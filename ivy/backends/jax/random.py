@@ -20,7 +20,7 @@ import warnings
 import jax
 import jax.numpy as jnp
 
-from ivy.backends._sample_args import categorical_args
+from ivy.backends._sample_args import categorical_args, check_draw_bounds, floating_draw
 from ivy.backends.jax._helpers import default_int, native_device, native_dtype
 
 _MASK32 = 0xFFFFFFFF
@@ -130,17 +130,22 @@ def _placed(x, device):
 
 def random_uniform(low=0.0, high=1.0, shape=None, *, dtype=None, device=None):
     dt = native_dtype(dtype) or jnp.float32
+    floating_draw("random_uniform", "jax", dtype, jnp.issubdtype(dt, jnp.inexact))
+    check_draw_bounds("random_uniform", low, high, "jax")
     out = jax.random.uniform(_state.next_key(), _shape(shape, low, high), dt, low, high)
     return _placed(out, device)
 
 
 def random_normal(mean=0.0, std=1.0, shape=None, *, dtype=None, device=None):
     dt = native_dtype(dtype) or jnp.float32
+    floating_draw("random_normal", "jax", dtype, jnp.issubdtype(dt, jnp.inexact))
+    check_draw_bounds("random_normal", mean, std, "jax")
     out = jax.random.normal(_state.next_key(), _shape(shape, mean, std), dt)
     return _placed((mean + std * out).astype(dt), device)
 
 
 def randint(low, high, shape=None, *, dtype=None, device=None):
+    check_draw_bounds("randint", low, high, "jax")
     dt = native_dtype(dtype) or default_int()
     out = jax.random.randint(_state.next_key(), _shape(shape, low, high), low, high, dt)
     return _placed(out, device)

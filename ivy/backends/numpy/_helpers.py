@@ -29,8 +29,12 @@ def dtype_name(dtype) -> str:
 
 
 def check_device(device) -> None:
-    if device not in (None, "cpu"):
-        raise ValueError(f"numpy arrays live on the CPU only; got device={device!r}. Use 'cpu'.")
+    """numpy arrays live on the CPU only."""
+    if device not in (None, "cpu", "cpu:0"):
+        from ivy import framework_handler as _fh
+        from ivy.errors import unavailable_device
+
+        raise unavailable_device(device, _fh.load_backend("numpy"))
 
 
 def has_own_dtype(obj) -> bool:
@@ -63,7 +67,7 @@ def as_inexact(x):
 def native_device(device):
     """numpy's only device: None (numpy's functions take ``device='cpu'`` or None)."""
     check_device(device)
-    return None if device is None else "cpu"
+    return None if device is None else "cpu"  # (numpy's functions take "cpu", not "cpu:0")
 
 
 def device_name(device) -> str:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ivy.backends._creation_args import check_python_data, linspace_dtype
+from ivy.backends._creation_args import check_python_data, check_step, linspace_dtype
 from ivy.backends._dlpack import exportable, on_host, refuse_copy_between_devices
 from ivy.backends.numpy._helpers import (
     check_device,
@@ -62,6 +62,7 @@ def full(shape, fill_value, *, dtype=None, device=None):
 
 def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
     check_device(device)
+    check_step(step, "numpy")
     if dtype is None:
         ints = all(isinstance(v, (int, np.integer)) for v in (start, stop, step) if v is not None)
         dtype = np.int64 if ints else np.float32

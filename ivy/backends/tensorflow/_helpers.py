@@ -243,25 +243,27 @@ def tf_device(device: str) -> str:
     if name is not None:
         return name
     if not isinstance(device, str):
-        raise TypeError(f"device must be a string such as 'cpu' or 'gpu:0'; got {device!r}.")
+        raise _unavailable(device)
     if device.startswith("/"):  # tensorflow's own name ('/job:localhost/.../device:CPU:0')
         spec = tf.DeviceSpec.from_string(device)
         if spec.device_type is not None:
             device = f"{spec.device_type.lower()}:{spec.device_index or 0}"
     kind_, _, index = device.lower().lstrip("/").partition(":")
     if kind_ not in ("cpu", "gpu") or not (index or "0").isdigit():
-        raise ValueError(f"Unknown device {device!r}; use 'cpu' or 'gpu:N' (e.g. 'gpu:0').")
+        raise _unavailable(device)
     index = int(index or 0)
-    if kind_ == "gpu":
-        count = len(tf.config.list_logical_devices("GPU"))
-        if index >= count:
-            choices = "'cpu'" + (f" or 'gpu:0' to 'gpu:{count - 1}'" if count else "")
-            raise ValueError(
-                f"device {device!r}: tensorflow sees {count} GPU(s) on this machine; use {choices}."
-            )
+    if index >= len(tf.config.list_logical_devices(kind_.upper())):
+        raise _unavailable(device)
     name = f"/{kind_.upper()}:{index}"
     _TF_DEVICES[device] = name
     return name
+
+
+def _unavailable(device):
+    from ivy import framework_handler as _fh
+    from ivy.errors import unavailable_device
+
+    return unavailable_device(device, _fh.load_backend("tensorflow"))
 
 
 def devices() -> list[str]:

@@ -6,7 +6,7 @@ import numpy as np
 import tensorflow as tf
 
 from ivy.backends._constants import ConstantCache
-from ivy.backends._creation_args import linspace_dtype
+from ivy.backends._creation_args import check_step, linspace_dtype
 from ivy.backends.tensorflow._helpers import (
     TENSOR_TYPES,
     default_dtype_of_value,
@@ -56,6 +56,7 @@ def _is_int(value) -> bool:
 
 
 def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
+    check_step(step, "tensorflow")
     ints = all(_is_int(v) for v in (start, stop, step) if v is not None)
     dt = native_dtype(dtype) or (tf.int64 if ints else tf.float32)
     work = dt if ints and dt.is_integer else tf.float64  # the length as numpy counts it

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import tensorflow as tf
 
-from ivy.backends._sample_args import categorical_args
+from ivy.backends._sample_args import categorical_args, check_draw_bounds, floating_draw
 from ivy.backends.tensorflow._helpers import native_dtype, placed, tensor, tensor_of
 
 _generator: list[tf.random.Generator] = []  # created on first use
@@ -38,6 +38,8 @@ def _shape(shape, a, b):
 
 def random_uniform(low=0.0, high=1.0, shape=None, *, dtype=None, device=None):
     dt = native_dtype(dtype) or tf.float32
+    floating_draw("random_uniform", "tensorflow", dtype, dt.is_floating or dt.is_complex)
+    check_draw_bounds("random_uniform", low, high, "tensorflow")
     work = dt if dt.is_floating else tf.float64
     with placed(device):
         low, high = tensor_of(low, work), tensor_of(high, work)
@@ -47,6 +49,8 @@ def random_uniform(low=0.0, high=1.0, shape=None, *, dtype=None, device=None):
 
 def random_normal(mean=0.0, std=1.0, shape=None, *, dtype=None, device=None):
     dt = native_dtype(dtype) or tf.float32
+    floating_draw("random_normal", "tensorflow", dtype, dt.is_floating or dt.is_complex)
+    check_draw_bounds("random_normal", mean, std, "tensorflow")
     work = dt if dt.is_floating else tf.float64
     with placed(device):
         mean, std = tensor_of(mean, work), tensor_of(std, work)
@@ -57,8 +61,7 @@ def random_normal(mean=0.0, std=1.0, shape=None, *, dtype=None, device=None):
 def randint(low, high, shape=None, *, dtype=None, device=None):
     dt = native_dtype(dtype) or tf.int64
     scalars = isinstance(low, int) and isinstance(high, int)
-    if scalars and low >= high:
-        raise ValueError(f"randint: low ({low}) must be less than high ({high}).")
+    check_draw_bounds("randint", low, high, "tensorflow")
     with placed(device):
         low, high = tensor_of(low, tf.int64), tensor_of(high, tf.int64)
         if not scalars:

@@ -29,13 +29,45 @@ def dtype_name(dtype) -> str:
         raise TypeError(f"torch dtype {dtype} has no ivy name; ivy knows {DTYPE_NAMES}.") from None
 
 
+_CUDA: dict = {}  # ivy device name or torch device -> the torch device, once found to exist
+
+
 def native_device(device):
-    """torch device for an ivy device string ('cpu', 'gpu:N') or a torch device; None stays None."""
-    if device is None or device == "cpu" or isinstance(device, torch.device):
+    """torch device for an ivy device string ('cpu', 'gpu:N') or a torch device; None stays
+    None. A device torch does not have here raises ivy's UnavailableDeviceError (torch's own
+    error on a machine without CUDA is a long assertion from its CUDA initialisation)."""
+    if device is None or device == "cpu":
         return device
-    if isinstance(device, str) and (device == "gpu" or device.startswith("gpu:")):
-        return "cuda" + device[3:]
-    raise ValueError(f"Unknown device {device!r}; use 'cpu' or 'gpu:N' (e.g. 'gpu:0').")
+    try:
+        return _CUDA[device]
+    except (KeyError, TypeError):
+        pass
+    found = _find_device(device)
+    if found is None:
+        from ivy import framework_handler as _fh
+        from ivy.errors import unavailable_device
+
+        raise unavailable_device(device, _fh.load_backend("torch"))
+    _CUDA[device] = found
+    return found
+
+
+def _find_device(device):
+    """The torch device named by ``device`` if torch has it here, else None."""
+    if isinstance(device, torch.device):
+        if device.type != "cuda":
+            return device
+        index = 0 if device.index is None else device.index
+        return device if index < torch.cuda.device_count() else None
+    if not isinstance(device, str):
+        return None
+    kind, _, index = device.partition(":")
+    if kind not in ("cpu", "gpu") or not (index or "0").isdigit():
+        return None
+    index = int(index or 0)
+    if kind == "cpu":
+        return "cpu" if index == 0 else None
+    return f"cuda:{index}" if index < torch.cuda.device_count() else None
 
 
 def device_name(device: torch.device) -> str:

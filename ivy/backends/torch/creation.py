@@ -6,7 +6,7 @@ import numpy as np
 import torch
 
 from ivy.backends._constants import ConstantCache
-from ivy.backends._creation_args import beyond_int64, check_fill_value
+from ivy.backends._creation_args import beyond_int64, check_fill_value, check_step
 from ivy.backends._dlpack import exportable, on_host, refuse_copy_between_devices
 from ivy.backends.torch._helpers import (
     default_dtype_of_value,
@@ -102,6 +102,7 @@ def full(shape, fill_value, *, dtype=None, device=None):
 
 
 def arange(start, /, stop=None, step=1, *, dtype=None, device=None):
+    check_step(step, "torch")
     if dtype is None:
         ints = all(isinstance(v, (int, np.integer)) for v in (start, stop, step) if v is not None)
         dtype = torch.int64 if ints else torch.float32

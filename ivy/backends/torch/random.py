@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import torch
 
-from ivy.backends._sample_args import categorical_args
+from ivy.backends._sample_args import categorical_args, check_draw_bounds, floating_draw
 from ivy.backends.torch._helpers import device_of, native_device, native_dtype
 
 
@@ -24,17 +24,22 @@ def _draw_args(a, b, shape, dtype, device, default_dtype):
 
 def random_uniform(low=0.0, high=1.0, shape=None, *, dtype=None, device=None):
     dtype, device, shape = _draw_args(low, high, shape, dtype, device, torch.float32)
-    u = torch.rand(shape, dtype=dtype if dtype.is_floating_point else torch.float64, device=device)
+    floating_draw("random_uniform", "torch", dtype, dtype.is_floating_point or dtype.is_complex)
+    check_draw_bounds("random_uniform", low, high, "torch")
+    u = torch.rand(shape, dtype=dtype, device=device)
     return (low + (high - low) * u).to(dtype)
 
 
 def random_normal(mean=0.0, std=1.0, shape=None, *, dtype=None, device=None):
     dtype, device, shape = _draw_args(mean, std, shape, dtype, device, torch.float32)
-    z = torch.randn(shape, dtype=dtype if dtype.is_floating_point else torch.float64, device=device)
+    floating_draw("random_normal", "torch", dtype, dtype.is_floating_point or dtype.is_complex)
+    check_draw_bounds("random_normal", mean, std, "torch")
+    z = torch.randn(shape, dtype=dtype, device=device)
     return (mean + std * z).to(dtype)
 
 
 def randint(low, high, shape=None, *, dtype=None, device=None):
+    check_draw_bounds("randint", low, high, "torch")
     dtype, device, shape = _draw_args(low, high, shape, dtype, device, torch.int64)
     shape = (shape,) if isinstance(shape, int) else tuple(shape)
     if not isinstance(low, torch.Tensor) and not isinstance(high, torch.Tensor):
