@@ -115,8 +115,13 @@ class SolverOptions(NamedTuple):
             >>> options.solver, options.iterations
             ('pgs', 50)
         """
+        import mujoco  # the model is MuJoCo's
+
         opt = model.opt
-        names = {0: "pgs", 2: "newton"}
+        names = {
+            int(mujoco.mjtSolver.mjSOL_PGS): "pgs",
+            int(mujoco.mjtSolver.mjSOL_NEWTON): "newton",
+        }
         if int(opt.solver) not in names:
             raise NotImplementedError(
                 "constraint solver: MuJoCo's CG solver is not implemented; use Newton or PGS "
@@ -124,7 +129,7 @@ class SolverOptions(NamedTuple):
             )
         if int(opt.noslip_iterations) > 0:
             raise NotImplementedError("constraint solver: the noslip solver is not implemented")
-        if int(opt.cone) != 0:
+        if int(opt.cone) != int(mujoco.mjtCone.mjCONE_PYRAMIDAL):
             raise NotImplementedError(
                 "constraint solver: elliptic friction cones are not implemented (pyramidal only)"
             )
@@ -135,7 +140,7 @@ class SolverOptions(NamedTuple):
             ls_iterations=int(opt.ls_iterations),
             ls_tolerance=float(opt.ls_tolerance),
             meaninertia=float(model.stat.meaninertia),
-            warmstart=not (int(opt.disableflags) & (1 << 9)),  # mjDSBL_WARMSTART
+            warmstart=not int(opt.disableflags) & int(mujoco.mjtDisableBit.mjDSBL_WARMSTART),
         )
 
 
@@ -167,7 +172,7 @@ def solve(
     problem: ConstraintProblem,
     kinds: Any,
     qacc_warmstart: Array | None = None,
-    options: SolverOptions = SolverOptions(),
+    options: SolverOptions | None = None,
 ) -> ConstraintSolution:
     """Solve the constraint problem: MuJoCo's ``mj_fwdConstraint`` for any batch shape.
 
@@ -177,7 +182,8 @@ def solve(
         kinds: numpy int array *[nefc]* of row kinds, static (:func:`row_kinds`).
         qacc_warmstart: *[..., nv]* the previous accelerations (MuJoCo's ``qacc_warmstart``),
             or None for a cold start, as ``options.warmstart=False`` gives.
-        options: :class:`SolverOptions` (:meth:`SolverOptions.from_mujoco`).
+        options: :class:`SolverOptions` (:meth:`SolverOptions.from_mujoco`); None: the defaults
+            (Newton, MuJoCo's default settings, ``meaninertia`` 1).
 
     Returns:
         The :class:`ConstraintSolution`.
@@ -187,6 +193,7 @@ def solve(
         >>> sol = solve(ivy.jax, problem, kinds, qacc_warmstart, SolverOptions.from_mujoco(m))
         >>> sol.qacc, sol.efc_force, sol.qfrc_constraint      # d.qacc, d.efc_force, ...
     """
+    options = SolverOptions() if options is None else options
     if options.solver not in ("newton", "pgs"):
         raise ValueError(
             f"constraint solver: solver must be 'newton' or 'pgs', got {options.solver!r}"
@@ -215,7 +222,8 @@ def solve(
     rows = still
     if xp.capabilities.autodiff:
         rows = _rows(xp, flat, kinds)
-        qacc, force = _implicit(xp, rows, qacc, force, zone, gauss)
+        D = rows.D if options.solver == "newton" else 1.0 / rows.R  # the dual reads R, not D
+        qacc, force = _implicit(xp, rows, qacc, force, zone, gauss, D)
     qfrc = _matvec_T(xp, rows.J, force)
     unflat = functools.partial(_unflatten, xp, batch)
     return ConstraintSolution(
@@ -242,6 +250,7 @@ class _Rows(NamedTuple):
     active: Array  # [B, n] bool
     friction: Array  # [B, n] bool: active friction rows
     one_sided: Array  # [B, n] bool: active one-sided rows
+    friction_slots: Array  # [f] int: the rows whose kind is friction (static)
 
 
 def _batch_shape(problem: ConstraintProblem, qacc_warmstart) -> tuple:
@@ -296,6 +305,9 @@ def _rows(xp, p: ConstraintProblem, kinds: np.ndarray) -> _Rows:
         active=active,
         friction=friction,
         one_sided=one_sided,
+        friction_slots=xp.constant(
+            np.flatnonzero(kinds == ROW_FRICTION).astype(np.int64), device=xp.dev(like)
+        ),
     )
 
 
@@ -404,79 +416,86 @@ def _newton_step(xp, rows: _Rows, qacc, jar):
     return new_qacc, new_jar, settled
 
 
-def _slopes(xp, rows: _Rows, jar, Jv, below, above):
-    """Each row's term ``I + alpha S`` of the directional derivative in the given zones."""
-    quad_I, quad_S, lin_I = rows.D * jar * Jv, rows.D * Jv * Jv, rows.floss * Jv
+def _directional(xp, rows: _Rows, jar, Jv, below, above):
+    """Each row's term ``a + alpha b`` of the cost's derivative along the search direction, with
+    the rows in the given zones; returns ``(a, b)``."""
     quadratic = xp.logical_not(xp.logical_or(below, above))
-    zero = xp.zeros_like(jar)
-    I = xp.where(quadratic, quad_I, xp.where(below, -lin_I, lin_I))
-    return I, xp.where(quadratic, quad_S, zero)
+    linear = rows.floss * Jv
+    a = xp.where(quadratic, rows.D * jar * Jv, xp.where(below, -linear, linear))
+    b = xp.where(quadratic, rows.D * Jv * Jv, xp.zeros_like(jar))
+    return a, b
 
 
 def _line_search(xp, rows: _Rows, jar, Jv, slope0, curvature):
     """The exact minimiser ``alpha >= 0`` of the cost along ``qacc + alpha search``.
 
-    The derivative along the line is continuous, piecewise linear and increasing, with a kink
-    where a row crosses a zone boundary. The boundaries crossed are sorted, the slopes summed
-    along them to find the segment where the derivative vanishes, and the root is solved in
-    that segment from the rows' zones there, summed afresh (no accumulated rounding)."""
-    zero, inf = xp.zeros_like(jar), xp.full_like(jar, float("inf"))
+    The derivative along the line, ``slope0 + alpha curvature`` plus the rows' terms, is
+    continuous, piecewise linear and increasing, with a kink where a row crosses a zone boundary
+    (one-sided rows at ``jar = 0``, friction rows at ``jar = -+R frictionloss``). The crossings
+    ahead are sorted and the changes of slope summed along them to find the segment where the
+    derivative vanishes; the root is then solved from the rows' zones inside that segment,
+    summed afresh (no accumulated rounding).
+
+    Args:
+        jar: *[B, n]* ``J qacc - aref``; ``Jv``: *[B, n]* ``J search``.
+        slope0, curvature: *[B]* the Gauss term's derivative at 0 and second derivative.
+    """
+    inf = xp.full_like(jar, float("inf"))
     moving = Jv != 0
-    safe_Jv = xp.where(moving, Jv, xp.ones_like(Jv))
+    step = xp.where(moving, Jv, xp.ones_like(Jv))
     sign = xp.where(Jv > 0, xp.ones_like(Jv), -xp.ones_like(Jv))
 
     def crossing(level):
-        alpha = (level - jar) / safe_Jv
-        valid = xp.logical_and(xp.logical_and(moving, xp.isfinite(level)), alpha > 0)
-        return xp.where(valid, alpha, inf), valid
+        alpha = (level - jar) / step
+        ahead = xp.logical_and(xp.logical_and(moving, xp.isfinite(level)), alpha > 0)
+        return xp.where(ahead, alpha, inf), ahead
 
-    at_low, low_valid = crossing(rows.low)
-    at_high, high_valid = crossing(rows.high)
-    quad_I, quad_S, lin_I = rows.D * jar * Jv, rows.D * Jv * Jv, rows.floss * Jv
-    # change of (I, S) on crossing: low (linear +floss <-> quadratic), high (quadratic <-> -floss)
-    dI = xp.concat([sign * (quad_I + lin_I), sign * (lin_I - quad_I)], axis=-1)
-    dS = xp.concat([sign * quad_S, -sign * quad_S], axis=-1)
-    valid = xp.concat([low_valid, high_valid], axis=-1)
-    dI, dS = xp.where(valid, dI, xp.zeros_like(dI)), xp.where(valid, dS, xp.zeros_like(dS))
-    crossings = xp.concat([at_low, at_high], axis=-1)
+    # the change of each row's (a, b) where it crosses its low boundary (linear at +floss ->
+    # quadratic, when moving up) and its high boundary (quadratic -> linear at -floss or
+    # satisfied); only friction rows have a low boundary
+    quad_a, quad_b, linear = rows.D * jar * Jv, rows.D * Jv * Jv, rows.floss * Jv
+    at_low, low_ahead = crossing(rows.low)
+    at_high, high_ahead = crossing(rows.high)
+    slots = rows.friction_slots
+    crossings = xp.concat([xp.take(at_low, slots, axis=-1), at_high], axis=-1)
+    ahead = xp.concat([xp.take(low_ahead, slots, axis=-1), high_ahead], axis=-1)
+    da = xp.concat(
+        [xp.take(sign * (quad_a + linear), slots, axis=-1), sign * (linear - quad_a)], axis=-1
+    )
+    db = xp.concat([xp.take(sign * quad_b, slots, axis=-1), -sign * quad_b], axis=-1)
+    da, db = xp.where(ahead, da, xp.zeros_like(da)), xp.where(ahead, db, xp.zeros_like(db))
 
-    # zones just after alpha = 0
+    # zones just after alpha = 0 (a row on a boundary takes the side it moves to)
     below = xp.logical_or(jar < rows.low, xp.logical_and(jar == rows.low, xp.logical_not(Jv > 0)))
     above = xp.logical_or(jar > rows.high, xp.logical_and(jar == rows.high, xp.logical_not(Jv < 0)))
-    above = xp.logical_and(above, xp.logical_not(below))
-    I_rows, S_rows = _slopes(xp, rows, jar, Jv, below, above)
-    I0 = slope0 + xp.sum(I_rows, axis=-1)
-    S0 = curvature + xp.sum(S_rows, axis=-1)
+    a_rows, b_rows = _directional(
+        xp, rows, jar, Jv, below, xp.logical_and(above, xp.logical_not(below))
+    )
+    a0 = (slope0 + xp.sum(a_rows, axis=-1))[:, None]
+    b0 = (curvature + xp.sum(b_rows, axis=-1))[:, None]
 
+    # segment k runs from the k-th crossing (0 for k = 0) to the next (inf after the last)
     order = xp.argsort(crossings, axis=-1)
     ends = xp.take_along_axis(crossings, order, axis=-1)
-    I = xp.concat(
-        [I0[:, None], I0[:, None] + xp.cumsum(xp.take_along_axis(dI, order, axis=-1), axis=-1)],
-        axis=-1,
-    )
-    S = xp.concat(
-        [S0[:, None], S0[:, None] + xp.cumsum(xp.take_along_axis(dS, order, axis=-1), axis=-1)],
-        axis=-1,
-    )
+    a = xp.concat([a0, a0 + xp.cumsum(xp.take_along_axis(da, order, axis=-1), axis=-1)], axis=-1)
+    b = xp.concat([b0, b0 + xp.cumsum(xp.take_along_axis(db, order, axis=-1), axis=-1)], axis=-1)
     upper = xp.concat([ends, inf[:, :1]], axis=-1)
-    lower = xp.concat([zero[:, :1], ends], axis=-1)
-    unbounded = xp.isinf(upper)
-    finite_upper = xp.where(unbounded, xp.zeros_like(upper), upper)
-    reached = xp.logical_or(unbounded, I + finite_upper * S >= 0)
-    segment = xp.argmax(xp.astype(reached, xp.int32), axis=-1)[:, None]
+    lower = xp.concat([xp.zeros_like(a0), ends], axis=-1)
+    last = xp.isinf(upper)
+    rising = a + xp.where(last, xp.zeros_like(upper), upper) * b >= 0  # the root is before its end
+    segment = xp.argmax(xp.astype(xp.logical_or(last, rising), xp.int32), axis=-1)[:, None]
     lo = xp.take_along_axis(lower, segment, axis=-1)[:, 0]
     hi = xp.take_along_axis(upper, segment, axis=-1)[:, 0]
 
-    # the zones inside the segment, and the root of the derivative there
-    inside = xp.where(xp.isinf(hi), 2.0 * lo + 1.0, 0.5 * (lo + hi))
-    at = jar + inside[:, None] * Jv
-    below = at <= rows.low
-    above = xp.logical_and(at >= rows.high, xp.logical_not(below))
-    I_rows, S_rows = _slopes(xp, rows, jar, Jv, below, above)
-    I_seg = slope0 + xp.sum(I_rows, axis=-1)
-    S_seg = curvature + xp.sum(S_rows, axis=-1)
-    positive = S_seg > 0
-    alpha = xp.where(positive, -I_seg / xp.where(positive, S_seg, xp.ones_like(S_seg)), lo)
+    # the zones inside that segment, and the root of the derivative there
+    inside = jar + xp.where(xp.isinf(hi), 2.0 * lo + 1.0, 0.5 * (lo + hi))[:, None] * Jv
+    below = inside <= rows.low
+    above = xp.logical_and(inside >= rows.high, xp.logical_not(below))
+    a_rows, b_rows = _directional(xp, rows, jar, Jv, below, above)
+    a = slope0 + xp.sum(a_rows, axis=-1)
+    b = curvature + xp.sum(b_rows, axis=-1)
+    positive = b > 0
+    alpha = xp.where(positive, -a / xp.where(positive, b, xp.ones_like(b)), lo)
     return xp.minimum(xp.maximum(alpha, lo), hi)
 
 
@@ -648,14 +667,14 @@ def _diagonal(xp, A):
 # ----------------------------------------------------------------------------------------------
 
 
-def _implicit(xp, rows: _Rows, qacc, force, zone, gauss):
+def _implicit(xp, rows: _Rows, qacc, force, zone, gauss, D):
     """``qacc`` and ``force`` unchanged in value, with the derivatives of the exact solution in
     the given zones: one Newton step from the (stopped) solution, taken with gradients."""
     qacc, force = xp.stop_gradient(qacc), xp.stop_gradient(force)
     quadratic = zone == 1
     fl = rows.floss
     linear = xp.where(zone == 0, fl, xp.where(zone == 2, xp.zeros_like(fl) - fl, xp.zeros_like(fl)))
-    D = xp.where(quadratic, rows.D, xp.zeros_like(rows.D))
+    D = xp.where(quadratic, D, xp.zeros_like(D))
     jar = xp.matvec(rows.J, qacc) - rows.aref
     grad = (
         xp.matvec(rows.M, qacc)
