@@ -57,6 +57,17 @@ PARALLEL_SIN2 = 1e-8  # capsule axes closer than this squared sine are parallel 
 # every pair but plane-plane and those of height fields with planes and height fields
 _NO_FUNCTION = {(PLANE, PLANE), (PLANE, HFIELD), (HFIELD, HFIELD)}
 
+# numpy constants of the kernels, made once here (traced code touches numpy only through
+# xp.constant)
+_X, _Y, _Z = np.eye(3)
+_BOX_CORNERS = np.array([[1 if i & b else -1 for b in (1, 2, 4)] for i in range(8)], np.float64)
+_BEFORE_8 = np.triu(np.ones((8, 8)), 1)  # [j, i] = 1 where j < i
+_SLOTS_4 = np.arange(4.0)[:, None]
+_ENDS = np.array([1.0, -1.0])
+_FIRST_ONLY = np.array([True, False])
+_NEAREST_THEN_ENDS = (np.array([1.0, 0.0, 0.0]), np.array([0.0, -1.0, 1.0]))
+_SIN_60 = 0.8660254037844386  # sqrt(3) / 2
+
 
 # ----------------------------------------------------------------------------------------------
 # Small vector helpers ([..., 3] vectors, [..., 3, 3] row-major matrices)
@@ -72,31 +83,32 @@ def _axis(mat, column: int):
     return mat[..., :, column]
 
 
-def _unit(xp, like, vector) -> Any:
-    """The constant 3-vector ``vector`` in ``like``'s dtype and device, broadcastable."""
-    return xp.constant(np.asarray(vector, np.float64), dtype=like.dtype, device=xp.dev(like))
+def _const(xp, like, value: np.ndarray) -> Any:
+    """A numpy constant of this module in ``like``'s dtype and device."""
+    return xp.constant(value, dtype=like.dtype, device=xp.dev(like))
 
 
 def _normalize(xp, v):
     """``v / |v|`` as ``mju_normalize3`` (``[1, 0, 0]`` below MIN_VALUE), with finite
-    gradients everywhere; returns the unit vector and the norm."""
-    norm = xp.safe_norm(v, axis=-1, keepdims=True)
-    small = norm < MIN_VALUE
-    unit = v / xp.where(small, xp.ones_like(norm), norm)
-    return xp.where(small, _unit(xp, v, [1.0, 0.0, 0.0]), unit), norm[..., 0]
+    gradients everywhere; returns the unit vector and the norm (below MIN_VALUE: its square,
+    as small and with a finite gradient)."""
+    square = _dot(xp, v, v)[..., None]
+    small = square < MIN_VALUE * MIN_VALUE
+    norm = xp.sqrt(xp.where(small, xp.ones_like(square), square))
+    unit = xp.where(small, _const(xp, v, _X), v / norm)
+    return unit, xp.where(small, square, norm)[..., 0]
 
 
 def _contact_frame(xp, normal, tangent=None):
     """The contact frame ``[..., 3, 3]`` (rows: normal, tangent1, tangent2) completed from a
-    normal and an optional first tangent as ``mju_makeFrame`` completes it: without a tangent
+    unit normal and an optional first tangent as ``mju_makeFrame`` completes it: without a tangent
     (or one shorter than 1/2), the y axis if the normal's y component is within (-1/2, 1/2),
     else the z axis; then made orthogonal to the normal and normalised."""
-    normal, _ = _normalize(xp, normal)
-    ny = normal[..., 1:2]
+    ny = normal[..., 1:2]  # the normals of the kinds are unit vectors
     default = xp.where(
         xp.logical_and(ny < 0.5, ny > -0.5),
-        _unit(xp, normal, [0.0, 1.0, 0.0]),
-        _unit(xp, normal, [0.0, 0.0, 1.0]),
+        _const(xp, normal, _Y),
+        _const(xp, normal, _Z),
     )
     if tangent is None:
         tangent = default
@@ -108,18 +120,15 @@ def _contact_frame(xp, normal, tangent=None):
     return xp.stack([normal, tangent, xp.cross(normal, tangent)], axis=-2)
 
 
-def _first_found(xp, found, count: int, like):
-    """Selection weights ``[..., count, m]`` (0 or 1) that pick the first ``count`` found
-    candidates of ``found`` ``[..., m]`` in order, as a collision function that stops after
-    ``count`` contacts fills its output; rows past the number found are zero."""
-    m = found.shape[-1]
+def _first_four(xp, found, like):
+    """Selection weights ``[..., 4, 8]`` (0 or 1) that pick the first four found of eight
+    candidates ``found`` ``[..., 8]`` in order, as a collision function that stops after four
+    contacts fills its output; rows past the number found are zero."""
     weight = xp.astype(found, like.dtype)
-    before = xp.constant(np.triu(np.ones((m, m)), 1), dtype=like.dtype, device=xp.dev(like))
-    rank = xp.matmul(weight, before)  # number found before each candidate (exact integers)
-    slots = xp.constant(
-        np.arange(count, dtype=np.float64)[:, None], dtype=like.dtype, device=xp.dev(like)
+    rank = xp.matmul(weight, _const(xp, like, _BEFORE_8))  # found before each (exact)
+    return weight[..., None, :] * xp.astype(
+        rank[..., None, :] == _const(xp, like, _SLOTS_4), like.dtype
     )
-    return weight[..., None, :] * xp.astype(rank[..., None, :] == slots, like.dtype)
 
 
 def _last(value):
@@ -174,10 +183,6 @@ def _finish(xp, raw: _Raw):
     return raw.dist, raw.pos, _contact_frame(xp, raw.normal, raw.tangent), raw.found
 
 
-def _signs(xp, like, values):
-    return xp.constant(np.asarray(values, np.float64), dtype=like.dtype, device=xp.dev(like))
-
-
 # ----------------------------------------------------------------------------------------------
 # Pair kinds: (xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw with K candidates
 # ----------------------------------------------------------------------------------------------
@@ -194,7 +199,7 @@ def _plane_sphere(xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw:
 def _plane_capsule(xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw:
     normal = _axis(mat1, 2)[..., None, :]
     axis = _axis(mat2, 2)[..., None, :]
-    ends = pos2[..., None, :] + axis * (size2[..., 1:2] * _signs(xp, pos2, [1.0, -1.0]))[..., None]
+    ends = pos2[..., None, :] + axis * (size2[..., 1:2] * _const(xp, pos2, _ENDS))[..., None]
     dist, pos, found = _raw_plane_sphere(
         xp, pos1[..., None, :], normal, ends, size2[..., 0:1], _last(margin)
     )
@@ -203,19 +208,16 @@ def _plane_capsule(xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw:
     )
 
 
-_BOX_CORNERS = np.array([[1 if i & b else -1 for b in (1, 2, 4)] for i in range(8)], np.float64)
-
-
 def _plane_box(xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw:
     normal = _axis(mat1, 2)
-    local = _signs(xp, pos2, _BOX_CORNERS) * size2[..., None, :]  # [..., 8, 3]
+    local = _const(xp, pos2, _BOX_CORNERS) * size2[..., None, :]  # [..., 8, 3]
     corner = xp.matmul(local, xp.matrix_transpose(mat2))  # rows: mat2 @ local corner
     centre_dist = _dot(xp, pos2 - pos1, normal)
     ldist = _dot(xp, corner, normal[..., None, :])
     dist = centre_dist[..., None] + ldist
     found = xp.logical_and(dist <= _last(margin), ldist <= 0)
     pos = pos2[..., None, :] + corner - normal[..., None, :] * (dist / 2)[..., None]
-    sel = _first_found(xp, found, 4, pos2)
+    sel = _first_four(xp, found, pos2)
     dist, pos = xp.sum(sel * dist[..., None, :], axis=-1), xp.matmul(sel, pos)
     found = xp.sum(sel, axis=-1) > 0.5
     return _Raw(dist, pos, xp.broadcast_to(normal[..., None, :], pos.shape), None, found)
@@ -241,7 +243,7 @@ def _plane_cylinder(xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw:
     projection = projection * half_height
     # the nearest rim point, the same rim point on the far cap, two more of the near cap
     side, _ = _normalize(xp, xp.cross(vec, axis))
-    side = side * (radius * np.sqrt(3.0) / 2)[..., None]
+    side = side * (radius * _SIN_60)[..., None]
     near = centre_dist + projection
     beside = near - rim / 2
     dist = xp.stack([near + rim, centre_dist - projection + rim, beside, beside], axis=-1)
@@ -295,7 +297,10 @@ def _capsule_capsule(xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw:
     safe_sqr = xp.where(parallel, xp.ones_like(det), _dot(xp, normal, normal))
     nearest = _dot(xp, xp.cross(-dif, axis2), normal) / safe_sqr
     x1 = xp.clip(
-        nearest[..., None] * _signs(xp, u, [1.0, 0.0, 0.0]) + _signs(xp, u, [0, -1, 1]), -1.0, 1.0
+        nearest[..., None] * _const(xp, u, _NEAREST_THEN_ENDS[0])
+        + _const(xp, u, _NEAREST_THEN_ENDS[1]),
+        -1.0,
+        1.0,
     )
     # the nearest point of segment 2 to each; where that one is clipped, the nearest point of
     # segment 1 to it instead
@@ -315,22 +320,23 @@ def _capsule_capsule(xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw:
         size2[..., 0:1],
         _last(margin),
     )
-    # general: the first candidate only; parallel: the other two
-    sel = xp.where(
-        parallel[..., None, None], _signs(xp, u, _PARALLEL_PICK), _signs(xp, u, _GENERAL_PICK)
-    )
-    found = xp.matmul(sel, xp.astype(found, u.dtype)[..., None])[..., 0] > 0.5
+    # general: the first candidate twice (the second not found); parallel: the other two
+    par = parallel[..., None]
+    vectors = [
+        xp.where(par[..., None], v[..., 1:, :], xp.broadcast_to(v[..., :1, :], v[..., 1:, :].shape))
+        for v in (pos, normal)
+    ]
     return _Raw(
-        xp.matmul(sel, dist[..., None])[..., 0],
-        xp.matmul(sel, pos),
-        xp.matmul(sel, normal),
-        None,
-        found,
+        dist=xp.where(par, dist[..., 1:], xp.broadcast_to(dist[..., :1], dist[..., 1:].shape)),
+        pos=vectors[0],
+        normal=vectors[1],
+        tangent=None,
+        found=xp.where(
+            par,
+            found[..., 1:],
+            xp.logical_and(found[..., :1], xp.constant(_FIRST_ONLY, device=xp.dev(found))),
+        ),
     )
-
-
-_GENERAL_PICK = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
-_PARALLEL_PICK = np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
 
 
 # ----------------------------------------------------------------------------------------------
@@ -491,6 +497,7 @@ class PairKind:
         geom1, geom2: the pairs' geom ids (tuples of ints, MuJoCo's order).
         size1, size2: their sizes, numpy ``[npairs, 3]``.
         reach: numpy ``[npairs]``, margin + gap: the distance within which a contact is found.
+        index1, index2: ``geom1``, ``geom2`` as int64 numpy arrays.
     """
 
     types: tuple
@@ -500,9 +507,12 @@ class PairKind:
     size1: np.ndarray
     size2: np.ndarray
     reach: np.ndarray
+    index1: np.ndarray
+    index2: np.ndarray
 
     @property
     def function(self) -> Callable:
+        """The kind's public function (:data:`PAIR_KINDS`)."""
         return PAIR_KINDS[self.types][0]
 
 
@@ -518,9 +528,9 @@ class ContactTable:
     leaves a found contact out of the constraints whatever its distance: its two bodies move
     with no dof apart; only explicit pairs can have it).
 
-    Structure: ``kinds`` (one :class:`PairKind` per pair kind present) and ``order`` (int
+    Structure: ``kinds`` (one :class:`PairKind` per pair kind present), ``order`` (int
     ``[ncon]``: for each candidate, its index in the concatenation of the kinds' candidates,
-    pair by pair, contact by contact).
+    pair by pair, contact by contact) and ``in_order`` (whether ``order`` is the identity).
     """
 
     geom1: np.ndarray
@@ -539,6 +549,7 @@ class ContactTable:
     acts: np.ndarray
     kinds: tuple
     order: np.ndarray
+    in_order: bool
 
     @property
     def ncon(self) -> int:
@@ -851,13 +862,18 @@ def _build_table(m, mujoco, pairs: list) -> ContactTable:
                 size1=np.array(m.geom_size[list(g1s)], np.float64),
                 size2=np.array(m.geom_size[list(g2s)], np.float64),
                 reach=np.array(reach, np.float64),
+                index1=np.array(g1s, np.int64),
+                index2=np.array(g2s, np.int64),
             )
         )
         offsets[types] = start
         start += ncon * len(group)
     order = np.array([offsets[t] + i * PAIR_KINDS[t][1] + k for t, i, k in slots], np.int64)
     return ContactTable(
-        **{k: _as_array(k, v) for k, v in rows.items()}, kinds=tuple(kinds), order=order
+        **{k: _as_array(k, v) for k, v in rows.items()},
+        kinds=tuple(kinds),
+        order=order,
+        in_order=bool(np.array_equal(order, np.arange(len(order)))),
     )
 
 
@@ -947,8 +963,8 @@ def collide(xp, table: ContactTable, geom_xpos, geom_xmat) -> Contacts:
     tangents = any(kind.types == (PLANE, CAPSULE) for kind in table.kinds)
     for kind in table.kinds:
         count = len(kind.geom1) * kind.ncon
-        index1 = xp.constant(np.array(kind.geom1, np.int64), device=dev)
-        index2 = xp.constant(np.array(kind.geom2, np.int64), device=dev)
+        index1 = xp.constant(kind.index1, device=dev)
+        index2 = xp.constant(kind.index2, device=dev)
         raw = _RAW_KERNELS[kind.types](
             xp,
             xp.take(geom_xpos, index1, axis=-2),
@@ -966,14 +982,22 @@ def collide(xp, table: ContactTable, geom_xpos, geom_xmat) -> Contacts:
             parts, (raw.dist, raw.pos, raw.normal, tangent, raw.found), ((), (3,), (3,), (3,), ())
         ):
             part.append(None if value is None else xp.reshape(value, batch + (count,) + tail))
-    order = xp.constant(table.order, device=dev)
-    dist, found = (xp.take(xp.concat(p, axis=-1), order, axis=-1) for p in (parts[0], parts[4]))
-    pos, normal = (xp.take(xp.concat(p, axis=-2), order, axis=-2) for p in parts[1:3])
-    tangent = xp.take(xp.concat(parts[3], axis=-2), order, axis=-2) if tangents else None
+    dist, pos, normal, tangent, found = (
+        None if not tangents and k == 3 else _in_order(xp, table, p, -1 if k in (0, 4) else -2)
+        for k, p in enumerate(parts)
+    )
     include = _constant(xp, table.includemargin, geom_xpos)
     acts = xp.constant(table.acts, device=dev)
     active = xp.logical_and(xp.logical_and(found, dist < include), acts)
     return Contacts(dist, pos, _contact_frame(xp, normal, tangent), found, active)
+
+
+def _in_order(xp, table: ContactTable, parts: list, axis: int):
+    """The kinds' candidates, concatenated, in MuJoCo's order (one constant permutation)."""
+    joined = parts[0] if len(parts) == 1 else xp.concat(parts, axis=axis)
+    if table.in_order:
+        return joined
+    return xp.take(joined, xp.constant(table.order, device=xp.dev(joined)), axis=axis)
 
 
 def _constant(xp, value: np.ndarray, like):
