@@ -24,7 +24,16 @@ Example:
     >>> trainer.run(agent, "CartPole-v1", workers=8, seed=0, f="torch", out="runs/ppo")
 """
 
-from ivy_rl import (
+import importlib.util as _importlib_util
+
+if _importlib_util.find_spec("gymnasium") is None:  # (before any module of ivy_rl imports it)
+    raise ModuleNotFoundError(
+        "ivy_rl trains on Gymnasium environments, and gymnasium is not installed: install "
+        "ivy's [rl] extra (pip install 'ivy[rl]'), or gymnasium itself (pip install gymnasium).",
+        name="gymnasium",
+    )
+
+from ivy_rl import (  # noqa: E402
     agents,
     buffers,
     critics,

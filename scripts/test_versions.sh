@@ -14,9 +14,7 @@
 # Examples:
 #   scripts/test_versions.sh --python 3.12                        # jax 0.12, torch 2.15, tf 2.21
 #   scripts/test_versions.sh --python 3.12 --frameworks jax,tensorflow -- tests/ivy -x
-#
-# pip's global constraints (`pip config list`) may cap a framework below its newest release;
-# `PIP_CONSTRAINT= scripts/test_versions.sh ...` lifts such a cap for this run.
+#   scripts/test_versions.sh --constraint .ci/constraints.txt     # the releases CI pins
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
