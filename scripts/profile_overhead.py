@@ -276,7 +276,16 @@ def _timed(rows: list[dict]) -> list[dict]:
     return [r for r in rows if not r["skipped"]]
 
 
-def plot(rows: list[dict], path: Path, backends: list[str], top: int = 30) -> None:
+def bar_limits(totals) -> tuple[float, float]:
+    """The x-range of a log-scaled axis of bars with these totals (us): every bar visible, the
+    shortest ending well inside the axis (matplotlib's own limits, set by the bars' stacked
+    segments, could start above a short bar and hide it: jax's ``sin`` at 27 us)."""
+    positive = [t for t in totals if t > 0] or [1.0]
+    return min(positive) / 2.0, max(positive) * 1.5
+
+
+def plot(rows: list[dict], path: Path, backends: list[str], top: int = 30) -> list[tuple]:
+    """Draw the figure to ``path``; return each backend's x-limits (for the tests)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -285,6 +294,7 @@ def plot(rows: list[dict], path: Path, backends: list[str], top: int = 30) -> No
     fig, axes = plt.subplots(1, len(backends), figsize=(5 * len(backends), 0.25 * top + 2))
     axes = np.atleast_1d(axes)
     colours = {"backend": "#4c72b0", "ivy_compilable": "#dd8452", "ivy_eager": "#c44e52"}
+    limits = []
     for ax, backend in zip(axes, backends):
         mine = [r for r in _timed(rows) if r["backend"] == backend]
         mine.sort(key=lambda r: r["ivy_compilable_us"] + r["ivy_eager_us"], reverse=True)
@@ -299,12 +309,15 @@ def plot(rows: list[dict], path: Path, backends: list[str], top: int = 30) -> No
             y, [r["function"] + ("" if r["attribution"] == "direct" else " *") for r in mine]
         )
         ax.set_xscale("log")
+        ax.set_xlim(*bar_limits(left))
+        limits.append(ax.get_xlim())
         ax.set_xlabel("time per call (us), cumulative")
         ax.set_title(f"{backend} (* no native reference)")
     axes[0].legend(loc="lower right")
     fig.tight_layout()
     fig.savefig(path, dpi=100)
     plt.close(fig)
+    return limits
 
 
 def summary(rows: list[dict], backends: list[str], top: int = 5) -> str:

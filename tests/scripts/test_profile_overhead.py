@@ -74,3 +74,21 @@ def test_inputs_are_built_from_the_signature(name):
 
     args, kwargs = po.input_spec(name, getattr(ivy.core, name))
     assert args or kwargs
+
+
+def test_every_bar_is_inside_the_figure(tmp_path):
+    """A bar far shorter than the others (jax's sin at 27 us beside calls of milliseconds) lay
+    below the log axis' minimum, invisible."""
+
+    def row(function, backend_us, compilable_us, eager_us):
+        return dict(
+            function=function, backend="jax", skipped="", attribution="direct",
+            backend_us=backend_us, ivy_compilable_us=compilable_us, ivy_eager_us=eager_us,
+        )  # fmt: skip
+
+    rows = [row("sin", 20.0, 2.0, 5.0), row("conv2d", 3000.0, 900.0, 40.0)]
+    rows += [row(f"f{i}", 800.0 + i, 300.0, 30.0) for i in range(5)]
+    ((low, high),) = po.plot(rows, tmp_path / "overhead.png", ["jax"], top=30)
+    totals = [r["backend_us"] + r["ivy_compilable_us"] + r["ivy_eager_us"] for r in rows]
+    assert low < min(totals) / 1.5 and high > max(totals)
+    assert (tmp_path / "overhead.png").stat().st_size > 0
