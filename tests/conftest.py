@@ -11,7 +11,18 @@ The backends and what each can do are listed once, in :data:`BACKENDS`; tests as
 capability (``capable(backend, "autodiff")``, the subset fixtures), never for a backend's name.
 
 Narrow it with ``--backends numpy,torch`` or the environment variable ``IVY_BACKENDS``.
-jax runs with 64-bit types enabled so that float64 works on every backend.
+jax runs with 64-bit types enabled so that float64 works on every backend; ``--jax-x64 off`` (or
+``IVY_JAX_X64=0``) runs it as users get it by default, 64-bit types off: a test that needs
+float64 asks ``require(backend, "float64")`` and is skipped on jax then (a property of that
+configuration), and everything else must pass.
+
+Order. Every test draws from its own generator (the ``rng`` fixture, seeded by the test's name),
+never from one shared by a module, so what it gets does not depend on the tests before it.
+``--shuffle SEED`` (or ``IVY_TEST_SHUFFLE=SEED``; ``random`` picks and prints a seed) runs the
+tests in an order shuffled by that seed, the check that the suite does not depend on its order:
+
+    python -m pytest tests/ivy tests/ivy_mechanics tests/ivy_vision tests/ivy_rl tests/scripts \
+        -n 2 --shuffle random
 
 Opt-in backends. ``array_api_strict`` (a library registered with ``ivy.register_framework``, the
 reference implementation of the Array API standard) joins the matrix only in the test
@@ -28,8 +39,11 @@ from __future__ import annotations
 
 import importlib.util
 import os
+import random
 import sys
+import zlib
 
+import numpy as np
 import pytest
 
 import ivy
@@ -96,7 +110,10 @@ SUBSETS = {
 
 
 def capable(backend: str, capability: str) -> bool:
-    """Whether ``backend`` has ``capability`` (a key of :data:`BACKENDS`' rows)."""
+    """Whether ``backend`` has ``capability`` (a key of :data:`BACKENDS`' rows; ``'float64'``:
+    whether it holds float64 arrays in this run, which jax does only with ``--jax-x64 on``)."""
+    if capability == "float64":
+        return backend != "jax" or JAX_X64[0]
     return BACKENDS[backend][capability]
 
 
@@ -117,6 +134,19 @@ def pytest_addoption(parser):
         default=None,
         help="comma-separated backends to test (default: every installed one; or set IVY_BACKENDS)",
     )
+    parser.addoption(
+        "--shuffle",
+        default=os.environ.get("IVY_TEST_SHUFFLE"),
+        help="run the tests in an order shuffled by this seed ('random': a new seed, printed); "
+        "or set IVY_TEST_SHUFFLE",
+    )
+    parser.addoption(
+        "--jax-x64",
+        choices=("on", "off"),
+        default="off" if os.environ.get("IVY_JAX_X64", "1") in ("0", "off") else "on",
+        help="jax's 64-bit types during the run (default on; off is jax's own default; or set "
+        "IVY_JAX_X64=0)",
+    )
 
 
 def _selected(config) -> tuple[str, ...]:
@@ -130,11 +160,65 @@ def _selected(config) -> tuple[str, ...]:
 
 def pytest_configure(config):
     config.ivy_backends = _selected(config)
+    JAX_X64[0] = config.getoption("--jax-x64") == "on"
     if "jax" in config.ivy_backends:
         import jax
 
-        jax.config.update("jax_enable_x64", True)
+        jax.config.update("jax_enable_x64", JAX_X64[0])
     _target_the_device(config.ivy_backends)
+    config.ivy_shuffle = _shuffle_seed(config)
+
+
+#: Whether jax runs with 64-bit types (``--jax-x64``), set when the run is configured.
+JAX_X64 = [True]
+
+
+def _shuffle_seed(config) -> int | None:
+    """The seed of ``--shuffle`` (a new one for ``random``; the same one on every xdist worker,
+    which must collect the tests in one order: the controller passes it on)."""
+    value = config.getoption("--shuffle")
+    if value in (None, "", "off", "0"):
+        return None
+    workerinput = getattr(config, "workerinput", None)
+    if workerinput is not None and "ivy_shuffle" in workerinput:
+        return workerinput["ivy_shuffle"]
+    if value == "random":
+        return random.SystemRandom().randrange(1, 2**31)
+    try:
+        return int(value)
+    except ValueError:
+        raise pytest.UsageError(
+            f"--shuffle takes an integer seed or 'random'; got {value!r}."
+        ) from None
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_configure_node(node):
+    """(xdist) every worker shuffles with the controller's seed."""
+    node.workerinput["ivy_shuffle"] = node.config.ivy_shuffle
+
+
+def pytest_report_header(config):
+    seed = getattr(config, "ivy_shuffle", None)
+    if seed is not None:
+        return f"tests shuffled with seed {seed} (rerun this order: --shuffle {seed})"
+    return None
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_collection_modifyitems(config, items):
+    seed = getattr(config, "ivy_shuffle", None)
+    if seed is not None:
+        random.Random(seed).shuffle(items)
+
+
+@pytest.fixture
+def rng(request) -> np.random.Generator:
+    """A random generator of this test's own, seeded by the test's module and name (not its
+    parameters, so every backend gets the same draws): what a test draws never depends on the
+    tests that ran before it in the same worker."""
+    name = f"{request.node.module.__name__}::{request.node.originalname}"
+    return np.random.default_rng(zlib.crc32(name.encode()))
 
 
 def device_for(backend: str) -> str:

@@ -13,13 +13,13 @@ from ivy_rl import distributions as D
 from ivy_rl import models, normalizers, replays, updaters
 from tests.helpers import assert_close, native
 
-RNG = np.random.default_rng(0)
-LOC, SCALE = RNG.normal(size=(4, 3)), RNG.uniform(0.3, 2.0, size=(4, 3))
-ACTIONS = RNG.normal(size=(4, 3))
-LOGITS = RNG.normal(size=(4, 5))
+_data = np.random.default_rng(0)  # constants only; tests: the rng fixture
+LOC, SCALE = _data.normal(size=(4, 3)), _data.uniform(0.3, 2.0, size=(4, 3))
+ACTIONS = _data.normal(size=(4, 3))
+LOGITS = _data.normal(size=(4, 5))
 
 
-def test_normal_matches_scipy(backend, xp):
+def test_normal_matches_scipy(rng, backend, xp):
     d = D.Normal(xp, native(LOC, backend), native(SCALE, backend))
     assert_close(
         d.log_prob(native(ACTIONS, backend)), scipy.stats.norm.logpdf(ACTIONS, LOC, SCALE).sum(-1)
@@ -35,7 +35,7 @@ def test_normal_matches_scipy(backend, xp):
             q = scipy.stats.norm.logpdf(grid, LOC[i, j] * 0.5, SCALE[i, j] * 1.5)
             kl[i] += np.trapezoid(p * (np.log(np.maximum(p, 1e-300)) - q), grid)
     assert_close(d.kl(other), kl, rtol=1e-6, atol=1e-6)
-    noise = RNG.normal(size=(4, 3))
+    noise = rng.normal(size=(4, 3))
     assert_close(d.sample(native(noise, backend)), LOC + SCALE * noise)
 
 
@@ -47,7 +47,7 @@ def test_squashed_normal_log_prob_is_change_of_variables(backend, xp):
     assert_close(d.raw_to_action(native(raw, backend)), np.tanh(raw))
 
 
-def test_categorical_matches_numpy(backend, xp):
+def test_categorical_matches_numpy(rng, backend, xp):
     d = D.Categorical(xp, native(LOGITS, backend))
     logp = LOGITS - scipy.special.logsumexp(LOGITS, axis=-1, keepdims=True)
     actions = np.array([0, 4, 2, 1])
@@ -56,7 +56,7 @@ def test_categorical_matches_numpy(backend, xp):
     other = D.Categorical(xp, native(LOGITS[::-1].copy(), backend))
     p = np.exp(logp)
     assert_close(d.kl(other), (p * (logp - logp[::-1])).sum(-1))
-    gumbel = RNG.gumbel(size=(4, 5))
+    gumbel = rng.gumbel(size=(4, 5))
     assert np.array_equal(
         ivy.to_numpy(d.sample(native(gumbel, backend))), np.argmax(logp + gumbel, -1)
     )
@@ -69,8 +69,8 @@ def test_gumbel_sampling_follows_the_probabilities():
     np.testing.assert_allclose(freq, [0.2, 0.5, 0.3], atol=0.015)
 
 
-def test_mean_std_matches_numpy_over_several_updates():
-    data = RNG.normal(2.0, 3.0, size=(50, 4))
+def test_mean_std_matches_numpy_over_several_updates(rng):
+    data = rng.normal(2.0, 3.0, size=(50, 4))
     norm = normalizers.MeanStd((4,))
     norm.record(data[:20])
     norm.update()
@@ -118,8 +118,8 @@ def test_segment_stores_steps_and_draws_minibatch_orders():
     assert other.ready()
 
 
-def test_return_moments_fold_as_the_host_normalizer_does():
-    data = RNG.normal(3.0, 2.0, size=(2, 40))
+def test_return_moments_fold_as_the_host_normalizer_does(rng):
+    data = rng.normal(3.0, 2.0, size=(2, 40))
     host = normalizers.ReturnNormalizer()
     folded = normalizers.ReturnNormalizer()
     for part in data:
@@ -145,12 +145,12 @@ def test_return_moments_fold_as_the_host_normalizer_does():
         (gym.spaces.Box(-1, 1, (2,)), "deterministic"),
     ],
 )
-def test_actor_critic_models_on_every_backend(backend, xp, space, head):
+def test_actor_critic_models_on_every_backend(rng, backend, xp, space, head):
     obs_space = gym.spaces.Box(-1, 1, (4,))
     model = models.actor_critic(
         obs_space, space, rng=np.random.default_rng(0), head=head, f=backend
     )
-    obs = native(RNG.normal(size=(5, 4)).astype(np.float32), backend)
+    obs = native(rng.normal(size=(5, 4)).astype(np.float32), backend)
     stats = {
         "mean": native(np.ones(4, np.float32), backend),
         "std": native(np.full(4, 2.0, np.float32), backend),
@@ -177,21 +177,21 @@ def test_targets_follow_by_polyak_averaging(xp, backend):
         assert_close(new, before + 0.25)
 
 
-def test_unsupported_action_spaces_list_the_supported_ones():
+def test_unsupported_action_spaces_list_the_supported_ones(rng):
     with pytest.raises(TypeError, match="supported action spaces: Box, Discrete"):
         models.actor_critic(
-            gym.spaces.Box(-1, 1, (3,)), gym.spaces.MultiDiscrete([2, 2]), rng=RNG, f="numpy"
+            gym.spaces.Box(-1, 1, (3,)), gym.spaces.MultiDiscrete([2, 2]), rng=rng, f="numpy"
         )
     with pytest.raises(ValueError, match="choose one of"):
         models.actor_critic(
-            gym.spaces.Box(-1, 1, (3,)), gym.spaces.Discrete(2), rng=RNG, head="gaussian", f="numpy"
+            gym.spaces.Box(-1, 1, (3,)), gym.spaces.Discrete(2), rng=rng, head="gaussian", f="numpy"
         )
 
 
-def test_conjugate_gradient_solves_a_positive_definite_system():
-    a = RNG.normal(size=(6, 6))
+def test_conjugate_gradient_solves_a_positive_definite_system(rng):
+    a = rng.normal(size=(6, 6))
     matrix = a @ a.T + 6 * np.eye(6)
-    b = {"x": RNG.normal(size=4), "y": RNG.normal(size=2)}
+    b = {"x": rng.normal(size=4), "y": rng.normal(size=2)}
 
     def matvec(v):
         out = matrix @ np.concatenate([v["x"], v["y"]])
@@ -225,3 +225,6 @@ def test_trust_region_step_respects_the_kl_bound(diff_backend):
     direction = np.array([3.0, -2.0]) / np.sqrt(13.0)
     np.testing.assert_allclose(step / np.linalg.norm(step), direction, rtol=1e-9)
     assert float(ivy.to_numpy(infos["loss"])) < 13.0
+
+
+del _data  # no test draws from a generator shared by the module

@@ -7,41 +7,43 @@ import numpy as np
 
 from tests.ivy_vision import _reference as R
 
-rng = np.random.default_rng(2024)
+_data = np.random.default_rng(2024)  # constants only; tests: the rng fixture
 B, H, W, N = 2, 4, 5, 7
 
 K = np.stack([R.calib(300.0, 310.0, 160.5, 119.5), R.calib(250.0, 240.0, 2.0, 1.5)])
 K_SKEW = K.copy()
 K_SKEW[:, 0, 1] = [0.7, -1.2]
 K_INV = np.linalg.inv(K)
-ROT = np.stack([R.random_rotation(rng) for _ in range(B)])
-CENTER = rng.uniform(-2, 2, (B, 3))
+ROT = np.stack([R.random_rotation(_data) for _ in range(B)])
+CENTER = _data.uniform(-2, 2, (B, 3))
 EXT = np.concatenate([ROT, -ROT @ CENTER[..., None]], -1)
 EXT_INV = np.concatenate([np.swapaxes(ROT, -1, -2), CENTER[..., None]], -1)
 FULL = K @ EXT
 FULL_INV = np.linalg.inv(np.concatenate([FULL, np.broadcast_to([[0, 0, 0, 1.0]], (B, 1, 4))], -2))[
     :, :3
 ]
-DEPTH = rng.uniform(1.0, 3.0, (B, H, W, 1))
+DEPTH = _data.uniform(1.0, 3.0, (B, H, W, 1))
 GRID = R.pixel_grid(H, W)
 DS = GRID * DEPTH
-CAM = np.concatenate([rng.uniform(-1, 1, (B, N, 2)), rng.uniform(1, 3, (B, N, 1))], -1)
-WORLD = rng.uniform(-2, 2, (B, N, 3))
-PIXELS = rng.uniform(0, 30, (B, N, 2))
-ANGLES = rng.uniform(0.5, 2.0, (B, 2))
+CAM = np.concatenate([_data.uniform(-1, 1, (B, N, 2)), _data.uniform(1, 3, (B, N, 1))], -1)
+WORLD = _data.uniform(-2, 2, (B, N, 3))
+PIXELS = _data.uniform(0, 30, (B, N, 2))
+ANGLES = _data.uniform(0.5, 2.0, (B, 2))
 SPHERE = np.stack(
-    [rng.uniform(-3, 3, (B, N)), rng.uniform(0.2, 2.9, (B, N)), rng.uniform(0.5, 3, (B, N))], -1
+    [_data.uniform(-3, 3, (B, N)), _data.uniform(0.2, 2.9, (B, N)), _data.uniform(0.5, 3, (B, N))],
+    -1,
 )
 ANGULAR = np.stack(
-    [rng.uniform(0, 720, (B, N)), rng.uniform(1, 359, (B, N)), rng.uniform(0.5, 3, (B, N))], -1
+    [_data.uniform(0, 720, (B, N)), _data.uniform(1, 359, (B, N)), _data.uniform(0.5, 3, (B, N))],
+    -1,
 )
 PPD = 2.0
-OMNI = rng.standard_normal((B, 6, 8, 2))
-MAT = rng.standard_normal((B, 2, 3))
+OMNI = _data.standard_normal((B, 6, 8, 2))
+MAT = _data.standard_normal((B, 2, 3))
 
 # a second camera for the two-view functions
-ROT2 = np.stack([R.random_rotation(rng) for _ in range(B)])
-CENTER2 = rng.uniform(-2, 2, (B, 3))
+ROT2 = np.stack([R.random_rotation(_data) for _ in range(B)])
+CENTER2 = _data.uniform(-2, 2, (B, 3))
 EXT2 = np.concatenate([ROT2, -ROT2 @ CENTER2[..., None]], -1)
 FULL2 = K @ EXT2
 
@@ -196,3 +198,6 @@ CASES = {
 def scale_of(expected) -> float:
     values = expected if isinstance(expected, tuple) else (expected,)
     return max(float(np.max(np.abs(v))) for v in values)
+
+
+del _data  # no test draws from a generator shared by the module

@@ -14,8 +14,8 @@ from tests.ivy_vision import _cases as K
 # torch.compile's internals still call the deprecated torch.jit.script_method
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning:torch.*")
 
-rng = np.random.default_rng(41)
-IMAGE = rng.standard_normal((2, 4, 5, 3))
+_data = np.random.default_rng(41)  # constants only; tests: the rng fixture
+IMAGE = _data.standard_normal((2, 4, 5, 3))
 
 
 def _inverse_warp(image, depth, mat):
@@ -59,16 +59,19 @@ def _triangulate(pixels, full_mats):
 
 DS2 = K.R.apply(K.FULL12, K.DS)
 PIXELS = np.stack([K.DS / K.DS[..., 2:3], DS2 / DS2[..., 2:3]], 1)
-TRIS = np.concatenate([rng.uniform(0, 6, (2, 4, 3, 2)), rng.uniform(1, 3, (2, 4, 3, 1))], -1)
+TRIS = np.concatenate([_data.uniform(0, 6, (2, 4, 3, 2)), _data.uniform(1, 3, (2, 4, 3, 1))], -1)
 
 CASES = {
     "inverse_warp": (_inverse_warp, (IMAGE, K.DEPTH, K.FULL12)),
     "forward_warp": (_forward_warp, (IMAGE, K.DEPTH, K.FULL12)),
     "quantize_to_image": (
         _quantize,
-        (rng.uniform(-1, 5, (2, 20, 2)), rng.uniform(1, 2, (2, 20, 2))),
+        (_data.uniform(-1, 5, (2, 20, 2)), _data.uniform(1, 2, (2, 20, 2))),
     ),
-    "coords_to_voxel_grid": (_voxels, (rng.uniform(0, 1, (2, 40, 3)), rng.normal(size=(2, 40, 1)))),
+    "coords_to_voxel_grid": (
+        _voxels,
+        (_data.uniform(0, 1, (2, 40, 3)), _data.normal(size=(2, 40, 1))),
+    ),
     "rasterize_triangles": (_rasterize, (TRIS,)),
     "geometry": (_geometry, (K.DEPTH, K.FULL_INV, K.FULL2)),
     "triangulate_depth": (_triangulate, (PIXELS, np.stack([K.FULL, K.FULL2], 1))),
@@ -103,3 +106,6 @@ def test_randomness_is_fresh_in_compiled_code(graph_backend):
     a, b = numpy_of(fn(starts, ends)), numpy_of(fn(starts, ends))
     assert not np.array_equal(a, b)
     assert np.all((a >= np.arange(4) / 4) & (a < np.arange(1, 5) / 4))
+
+
+del _data  # no test draws from a generator shared by the module

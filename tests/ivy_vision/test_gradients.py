@@ -13,12 +13,12 @@ import ivy_vision as vis
 from tests.helpers import check_gradients
 from tests.ivy_vision import _cases as K
 
-rng = np.random.default_rng(31)
+_data = np.random.default_rng(31)  # constants only; tests: the rng fixture
 H, W = 4, 5
-DEPTH = rng.uniform(2.0, 3.0, (2, H, W, 1))
-POSE = np.concatenate([rng.normal(0, 0.05, (2, 3)), rng.normal(0, 0.05, (2, 3))], -1)
+DEPTH = _data.uniform(2.0, 3.0, (2, H, W, 1))
+POSE = np.concatenate([_data.normal(0, 0.05, (2, 3)), _data.normal(0, 0.05, (2, 3))], -1)
 INTRINSICS = np.array([[6.0, 6.5, 2.1, 1.4], [5.5, 5.0, 1.9, 1.6]])
-IMAGE = rng.standard_normal((2, H, W, 2))
+IMAGE = _data.standard_normal((2, H, W, 2))
 EXT1 = np.broadcast_to(np.eye(3, 4), (2, 3, 4))
 
 
@@ -96,11 +96,11 @@ CASES = {
     ),
     "sample_image border": (
         lambda im, c: vis.sample_image(im, c),
-        (IMAGE, rng.uniform(-1, 5.5, (2, 9, 2))),
+        (IMAGE, _data.uniform(-1, 5.5, (2, 9, 2))),
     ),
     "sample_image zeros": (
         lambda im, c: vis.sample_image(im, c, padding="zeros"),
-        (IMAGE, rng.uniform(-1, 5.5, (2, 9, 2))),
+        (IMAGE, _data.uniform(-1, 5.5, (2, 9, 2))),
     ),
     "triangulate cmp": (_triangulation(PIXELS2, "cmp"), (PIXELS2,)),
     "triangulate dlt": (_triangulation(PIXELS2, "dlt"), (PIXELS2,)),
@@ -108,49 +108,57 @@ CASES = {
     "essential matrix": (lambda a, b: vis.get_essential_matrix(a, b), (K.EXT, K.EXT2)),
     "quantize_to_image": (
         lambda c, ft: vis.quantize_to_image(c, (4, 5), ft, None, False, 1e-2, 1e-2)[0],
-        (rng.uniform(0, 4, (2, 12, 2)), rng.uniform(1, 2, (2, 12, 2))),
+        (_data.uniform(0, 4, (2, 12, 2)), _data.uniform(1, 2, (2, 12, 2))),
     ),
     "quantize_to_image depth buffer": (
         lambda c, ft: vis.quantize_to_image(c, (4, 5), ft, None, True)[0],
-        (rng.uniform(0, 4, (2, 12, 2)), rng.uniform(1, 2, (2, 12, 2))),
+        (_data.uniform(0, 4, (2, 12, 2)), _data.uniform(1, 2, (2, 12, 2))),
     ),
     "coords_to_voxel_grid": (
         lambda p, ft: vis.coords_to_voxel_grid(p, (2, 3, 2), "DIMS", (0, 0, 0, 1, 1, 1), ft)[0],
-        (rng.uniform(0.05, 0.95, (2, 30, 3)), rng.standard_normal((2, 30, 2))),
+        (_data.uniform(0.05, 0.95, (2, 30, 3)), _data.standard_normal((2, 30, 2))),
     ),
     "rasterize_triangles": (
         lambda t: xp_concat(vis.rasterize_triangles(t, (6, 7))[0::2]),
-        (np.concatenate([rng.uniform(0, 6, (1, 3, 3, 2)), rng.uniform(1, 3, (1, 3, 3, 1))], -1),),
+        (
+            np.concatenate(
+                [_data.uniform(0, 6, (1, 3, 3, 2)), _data.uniform(1, 3, (1, 3, 3, 1))], -1
+            ),
+        ),
     ),
     "sphere sdf": (
         lambda c, r, q: vis.sphere_signed_distances(c, r, q),
         (
-            rng.standard_normal((2, 3, 3)),
-            rng.uniform(0.2, 1, (2, 3, 1)),
-            rng.standard_normal((2, 6, 3)),
+            _data.standard_normal((2, 3, 3)),
+            _data.uniform(0.2, 1, (2, 3, 1)),
+            _data.standard_normal((2, 6, 3)),
         ),
     ),
     "cuboid sdf": (
         lambda e, d, q: vis.cuboid_signed_distances(e, d, q),
         (
-            np.concatenate([K.ROT[:, None], rng.standard_normal((2, 1, 3, 1))], -1),
-            rng.uniform(0.5, 1, (2, 1, 3)),
-            rng.standard_normal((2, 6, 3)) * 2,
+            np.concatenate([K.ROT[:, None], _data.standard_normal((2, 1, 3, 1))], -1),
+            _data.uniform(0.5, 1, (2, 1, 3)),
+            _data.standard_normal((2, 6, 3)) * 2,
         ),
     ),
     "termination probabilities": (
         lambda s, d, ft: vis.render_rays_via_termination_probabilities(
             vis.ray_termination_probabilities(s, d), ft
         ),
-        (rng.uniform(0, 2, (3, 8)), rng.uniform(0.1, 0.3, (3, 8)), rng.standard_normal((3, 8, 2))),
+        (
+            _data.uniform(0, 2, (3, 8)),
+            _data.uniform(0.1, 0.3, (3, 8)),
+            _data.standard_normal((3, 8, 2)),
+        ),
     ),
     "variance smoothing": (
         lambda m, v: xp_concat(vis.smooth_image_from_var_image(m, v, 3, 0.5)),
-        (IMAGE, rng.uniform(0.5, 2, IMAGE.shape)),
+        (IMAGE, _data.uniform(0.5, 2, IMAGE.shape)),
     ),
     "weighted smoothing": (
         lambda m, w: xp_concat(vis.weighted_image_smooth(m, w, 2)),
-        (IMAGE, rng.uniform(0.5, 2, IMAGE.shape)),
+        (IMAGE, _data.uniform(0.5, 2, IMAGE.shape)),
     ),
 }
 
@@ -165,3 +173,6 @@ def xp_concat(arrays):
 def test_gradients_equal_finite_differences(name, diff_backend):
     fn, arrays = CASES[name]
     check_gradients(diff_backend, fn, arrays, n_directions=2, rtol=1e-6)
+
+
+del _data  # no test draws from a generator shared by the module

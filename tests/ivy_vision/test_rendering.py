@@ -13,8 +13,6 @@ from tests.helpers import check, native, numpy_of
 from tests.ivy_vision import _reference as R
 from tests.ivy_vision._scene import cameras
 
-rng = np.random.default_rng(23)
-
 # ----------------------------------------------------------------------------------------------
 # quantize_to_image
 # ----------------------------------------------------------------------------------------------
@@ -52,7 +50,7 @@ def _quantize_reference(
 
 
 @pytest.mark.parametrize("with_db", [False, True])
-def test_quantize_to_image(with_db, backend):
+def test_quantize_to_image(rng, with_db, backend):
     n, dims = 60, (4, 5)
     coords = rng.uniform(-1, 5.2, (2, n, 2))
     coords[:, :20] = np.round(coords[:, :20])  # duplicates on pixel centres
@@ -92,7 +90,7 @@ def test_quantize_to_image(with_db, backend):
             np.testing.assert_allclose(numpy_of(got)[b], want, rtol=1e-12, atol=1e-12)
 
 
-def test_quantize_to_image_defaults(backend):
+def test_quantize_to_image_defaults(rng, backend):
     """Scalar variances and no prior, points all inside: every point is counted once."""
     coords = rng.uniform(0, [3.4, 2.4], (30, 2))
     feat = rng.uniform(1, 2, (30, 2))
@@ -144,7 +142,7 @@ def _rasterize_reference(tris, dims):
     return np.where(ids >= 0, depth, 0)[..., None], ids[..., None], bary
 
 
-def test_rasterize_triangles_against_loops(backend):
+def test_rasterize_triangles_against_loops(rng, backend):
     tris = np.concatenate([rng.uniform(-2, 9, (2, 7, 3, 2)), rng.uniform(1, 4, (2, 7, 3, 1))], -1)
     tris[0, 3, 1, 2] = -1.0  # behind the camera: skipped
     tris[1, 4, 2, :2] = tris[1, 4, 0, :2]  # no area: skipped
@@ -173,7 +171,7 @@ def test_rasterized_depth_of_a_projected_plane_is_exact(backend):
     np.testing.assert_allclose(depth[covered], floor_depth[covered], rtol=1e-12)
 
 
-def test_trimesh_of_images(backend):
+def test_trimesh_of_images(rng, backend):
     expected = np.array(
         [[0, 1, 3], [1, 2, 4], [3, 4, 6], [4, 5, 7], [4, 1, 3], [5, 2, 4], [7, 4, 6], [8, 5, 7]]
     )
@@ -194,7 +192,7 @@ def test_trimesh_of_images(backend):
 # ----------------------------------------------------------------------------------------------
 
 
-def test_weighted_and_variance_smoothing(backend):
+def test_weighted_and_variance_smoothing(rng, backend):
     mean = rng.standard_normal((2, 5, 6, 2))
     weights = rng.uniform(0.1, 2, (2, 5, 6, 2))
     k = 3
@@ -235,7 +233,7 @@ def test_weighted_and_variance_smoothing(backend):
 # ----------------------------------------------------------------------------------------------
 
 
-def test_signed_distances(backend):
+def test_signed_distances(rng, backend):
     centres = rng.standard_normal((2, 3, 3))
     radii = rng.uniform(0.2, 1, (2, 3, 1))
     queries = rng.standard_normal((2, 10, 3)) * 2
@@ -267,7 +265,7 @@ def test_signed_distances(backend):
 # ----------------------------------------------------------------------------------------------
 
 
-def test_termination_probabilities_and_rendering(backend):
+def test_termination_probabilities_and_rendering(rng, backend):
     density = rng.uniform(0, 3, (2, 4, 9))
     spacing = rng.uniform(0.01, 0.5, (2, 4, 9))
     alpha = 1 - np.exp(-density * spacing)

@@ -14,12 +14,12 @@ from tests.helpers import check, native, numpy_of
 from tests.ivy_vision import _reference as R
 from tests.ivy_vision._scene import cameras, texture
 
-rng = np.random.default_rng(7)
-IMAGE = rng.standard_normal((2, 5, 7, 3))
+_data = np.random.default_rng(7)  # constants only; tests: the rng fixture
+IMAGE = _data.standard_normal((2, 5, 7, 3))
 # points inside, on the border, half a pixel out and far out (never exactly on .5 for nearest)
 COORDS = np.concatenate(
     [
-        rng.uniform(-3, 10, (2, 60, 2)),
+        _data.uniform(-3, 10, (2, 60, 2)),
         np.array([[[0.0, 0.0], [6.0, 4.0], [-0.4, 2.2], [6.3, -0.7]]] * 2),
     ],
     1,
@@ -74,7 +74,7 @@ def test_sample_image_batch_and_sample_shapes(backend):
     check(out, R.sample(ints.astype(np.float64), COORDS), backend, dtype="float32", atol=1e-4)
 
 
-def test_identity_warps_return_the_image(backend):
+def test_identity_warps_return_the_image(rng, backend):
     image = native(IMAGE, backend)
     depth = native(rng.uniform(1, 2, (2, 5, 7, 1)), backend)
     identity = native(np.eye(3, 4), backend)
@@ -166,3 +166,6 @@ def test_forward_warp_depth_buffer_keeps_the_nearest(backend):
         native(image, backend), native(depth, backend), native(full, backend), with_db=False
     )
     check(out[..., 0], np.array([[1.5, 0.0]]), backend)
+
+
+del _data  # no test draws from a generator shared by the module

@@ -9,9 +9,9 @@ import pytest
 import ivy_vision as vis
 from tests.helpers import check, native, numpy_of
 
-rng = np.random.default_rng(17)
-POINTS = rng.uniform(-0.5, 1.5, (2, 400, 3))
-FEATS = rng.standard_normal((2, 400, 2))
+_data = np.random.default_rng(17)  # constants only; tests: the rng fixture
+POINTS = _data.uniform(-0.5, 1.5, (2, 400, 3))
+FEATS = _data.standard_normal((2, 400, 2))
 BOUNDS = (0.0, -0.2, 0.1, 1.0, 1.2, 1.3)
 
 
@@ -107,3 +107,6 @@ def test_batched_bounds_and_unbatched_points(backend):
     )
     hist, _ = np.histogramdd(POINTS[0], bins=(2, 3, 4), range=list(zip(BOUNDS[:3], BOUNDS[3:])))
     np.testing.assert_array_equal(numpy_of(grid)[..., -1], hist)
+
+
+del _data  # no test draws from a generator shared by the module

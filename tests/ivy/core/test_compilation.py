@@ -22,13 +22,13 @@ from tests.helpers import is_native, native, numpy_of
 COMPILED_TOL = dict(rtol=1e-10, atol=1e-12)  # float64; XLA and graph mode may fuse differently
 
 
-rng = np.random.default_rng(3)
+_data = np.random.default_rng(3)  # constants only; tests: the rng fixture
 
 
-PARAMS = {"w": rng.normal(size=(3, 2)), "b": rng.normal(size=2) * 0.1}
+PARAMS = {"w": _data.normal(size=(3, 2)), "b": _data.normal(size=2) * 0.1}
 
 
-BATCH = (rng.normal(size=(8, 3)), rng.normal(size=(8, 2)))
+BATCH = (_data.normal(size=(8, 3)), _data.normal(size=(8, 2)))
 
 
 def loss_fn(v, x, y):
@@ -178,7 +178,7 @@ def test_torch_falls_back_to_eager_when_compile_cannot_run(request, monkeypatch)
     assert fn is torch.sin
 
 
-def test_tensorflow_calls_after_the_first_skip_argument_matching_and_stay_correct(request):
+def test_tensorflow_calls_after_the_first_skip_argument_matching_and_stay_correct(rng, request):
     """tensorflow's compile_fn calls a known trace's flat entry point directly from the second
     call of a signature on (see ivy/backends/tensorflow/compilation.py). Every kind of call
     must still give tf.function's results: new shapes and dtypes, changed static values,
@@ -233,7 +233,7 @@ def test_tensorflow_calls_after_the_first_skip_argument_matching_and_stay_correc
         np.testing.assert_allclose(numpy_of(out), expected(x_np, 2.0)[0]["y"], rtol=1e-5)
 
 
-def test_tensorflow_fast_calls_pack_outputs_as_tf_does(request):
+def test_tensorflow_fast_calls_pack_outputs_as_tf_does(rng, request):
     """Eager calls with no tape recording run the trace's flat entry point and pack its outputs
     with optree, once checked against tf's packing; outputs that optree would pack otherwise
     (composite tensors), or a tape that records, keep tf's own path. Results are tf.function's in every case."""
@@ -316,7 +316,7 @@ def _write_rows_reference(buffers, rows, values):
     return out
 
 
-BUFFERS = {"a": rng.normal(size=(6, 2)), "b": rng.normal(size=6)}
+BUFFERS = {"a": _data.normal(size=(6, 2)), "b": _data.normal(size=6)}
 ROWS, VALUES = np.array([4, 1]), {"a": np.ones((2, 2)), "b": np.array([7.0, 8.0])}
 
 
@@ -358,3 +358,6 @@ def test_donation_elsewhere_is_accepted_and_changes_nothing(backend):
         assert is_native(out[k], backend)
         np.testing.assert_array_equal(numpy_of(out[k]), expected[k])
         np.testing.assert_array_equal(numpy_of(buffers[k]), BUFFERS[k])  # still valid, unchanged
+
+
+del _data  # no test draws from a generator shared by the module

@@ -19,8 +19,8 @@ from tests.compilers import GRAPH_COUNTERS, native_compile
 from tests.conftest import capable, device_for, require
 from tests.helpers import check, native, numpy_of
 
-rng = np.random.default_rng(23)
-K = rng.normal(size=(2, 3))  # a model constant, float64
+_data = np.random.default_rng(23)  # constants only; tests: the rng fixture
+K = _data.normal(size=(2, 3))  # a model constant, float64
 
 
 # ----------------------------------------------------------------------------------------------
@@ -68,7 +68,7 @@ def test_constant_inside_fast_graph_compilers(graph_backend):
         assert len(traces) == 1
 
 
-def test_constant_inside_torch_compile_one_graph(backend):
+def test_constant_inside_torch_compile_one_graph(rng, backend):
     """A compiler that reports graph breaks (``torch.compile``): constants of two objects and
     repeated calls make one graph and no break."""
     if backend not in GRAPH_COUNTERS:
@@ -123,7 +123,7 @@ def _check_decay(result, h0, xs, backend):
     check(ys["norm"], norms, backend)
 
 
-def test_compiled_scan_equals_the_scan(backend, xp):
+def test_compiled_scan_equals_the_scan(rng, backend, xp):
     """Each backend where its compiler puts the boundary (torch: a host loop over the compiled
     body, its one compiled case here; jax, tensorflow: one compiled loop; numpy: eagerly)."""
     h0, xs = rng.normal(size=3), rng.normal(size=(5, 3))
@@ -142,7 +142,7 @@ def test_compiled_scan_equals_the_scan(backend, xp):
     check(ys, np.arange(4.0), backend)
 
 
-def test_compiled_scan_traces_a_kept_loop_once(graph_backend):
+def test_compiled_scan_traces_a_kept_loop_once(rng, graph_backend):
     """Where the compiler keeps loops, the whole scan is one compiled function: its body is
     traced a fixed number of times, whatever the number of steps, and not again."""
     xp = getattr(ivy, graph_backend)
@@ -173,3 +173,6 @@ def test_compiled_scan_checks_its_length(backend, xp):
     other = xp.compiled_scan(lambda c, x: (c + x, c), length=3)
     with pytest.raises(Exception, match="length"):
         other(native(np.float64(0.0), backend), native(np.ones(4), backend))
+
+
+del _data  # no test draws from a generator shared by the module

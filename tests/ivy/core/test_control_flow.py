@@ -30,7 +30,7 @@ TOL = dict(rtol=1e-12, atol=1e-12)
 COMPILED_TOL = dict(rtol=1e-10, atol=1e-12)  # XLA and graph mode may fuse differently
 
 
-rng = np.random.default_rng(12)
+_data = np.random.default_rng(12)  # constants only; tests: the rng fixture
 
 
 def _on(backend, tree):
@@ -48,7 +48,7 @@ def _assert_same(actual, expected, backend, tol=TOL):
         np.testing.assert_allclose(numpy_of(a), e, **tol)
 
 
-W_IN, W_REC = rng.normal(size=(4, 3)) * 0.5, rng.normal(size=(3, 3)) * 0.5
+W_IN, W_REC = _data.normal(size=(4, 3)) * 0.5, _data.normal(size=(3, 3)) * 0.5
 
 
 def cumulative(xp, consts):
@@ -90,13 +90,13 @@ def fibonacci(xp, consts):
 
 
 SCAN_CASES = {
-    "cumulative": (cumulative, (), np.float64(0.5), rng.normal(size=6), None),
-    "rnn": (rnn, (W_IN, W_REC), rng.normal(size=(2, 3)), rng.normal(size=(5, 2, 4)), None),
+    "cumulative": (cumulative, (), np.float64(0.5), _data.normal(size=6), None),
+    "rnn": (rnn, (W_IN, W_REC), _data.normal(size=(2, 3)), _data.normal(size=(5, 2, 4)), None),
     "particle": (
         particle,
         (),
-        {"pos": rng.normal(size=3), "vel": rng.normal(size=3)},
-        (rng.normal(size=(7, 3)), np.abs(rng.normal(size=(7, 1))) * 0.1),
+        {"pos": _data.normal(size=3), "vel": _data.normal(size=3)},
+        (_data.normal(size=(7, 3)), np.abs(_data.normal(size=(7, 1))) * 0.1),
         None,
     ),
     "fibonacci": (fibonacci, (), (np.float64(0.0), np.float64(1.0)), None, 9),
@@ -223,7 +223,7 @@ def test_compiled_scan_gradients_equal_eager(backend):
     assert (len(traces) < len(xs)) == capabilities(backend).compiled_loops, len(traces)
 
 
-RATES = rng.uniform(0.5, 1.5, size=6)
+RATES = _data.uniform(0.5, 1.5, size=6)
 
 
 def growth(xp, rates):
@@ -243,14 +243,14 @@ def reference_fori(lower, upper, x0):
 
 
 @pytest.mark.parametrize("lower,upper", [(0, 6), (2, 5), (3, 3)])
-def test_fori_loop_equals_a_python_loop(lower, upper, backend):
+def test_fori_loop_equals_a_python_loop(rng, lower, upper, backend):
     x0 = rng.normal(size=3)
     init = _on(backend, {"x": x0, "sum": np.zeros(3)})
     out = ivy.fori_loop(lower, upper, growth(getattr(ivy, backend), _on(backend, RATES)), init)
     _assert_same(out, reference_fori(lower, upper, x0), backend)
 
 
-def test_compiled_fori_loop_and_its_gradients(graph_backend):
+def test_compiled_fori_loop_and_its_gradients(rng, graph_backend):
     x0 = rng.normal(size=3)
     rates = _on(graph_backend, RATES)
     body = growth(getattr(ivy, graph_backend), rates)
@@ -263,7 +263,7 @@ def test_compiled_fori_loop_and_its_gradients(graph_backend):
     check_gradients(graph_backend, lambda x: run(x)["sum"], [x0])
 
 
-def test_fori_loop_gradients_equal_finite_differences(diff_backend):
+def test_fori_loop_gradients_equal_finite_differences(rng, diff_backend):
     xp = getattr(ivy, diff_backend)
 
     def fn(x0, rates):
@@ -295,7 +295,7 @@ def reference_newton(a, x0, limit=None):
 
 
 @pytest.mark.parametrize("limit", [None, 2, 10])
-def test_while_loop_equals_a_python_loop(limit, backend):
+def test_while_loop_equals_a_python_loop(rng, limit, backend):
     a, x0 = rng.uniform(1, 4, size=3), np.ones(3)
     keep_going, body = newton(getattr(ivy, backend), native(a, backend))
     init = (native(x0, backend), native(np.int64(0), backend))
@@ -304,7 +304,7 @@ def test_while_loop_equals_a_python_loop(limit, backend):
 
 
 @pytest.mark.parametrize("limit", [None, 2, 10])
-def test_compiled_while_loop_equals_a_python_loop(limit, graph_backend):
+def test_compiled_while_loop_equals_a_python_loop(rng, limit, graph_backend):
     a, x0 = rng.uniform(1, 4, size=3), np.ones(3)
     keep_going, body = newton(getattr(ivy, graph_backend), native(a, graph_backend))
 
@@ -315,7 +315,7 @@ def test_compiled_while_loop_equals_a_python_loop(limit, graph_backend):
     _assert_same(out, reference_newton(a, x0, limit), graph_backend, COMPILED_TOL)
 
 
-def test_while_loop_with_maximum_iterations_is_differentiable(diff_backend):
+def test_while_loop_with_maximum_iterations_is_differentiable(rng, diff_backend):
     xp = getattr(ivy, diff_backend)
 
     def fn(a, x0):
@@ -354,7 +354,7 @@ def branches(xp):
 
 
 @pytest.mark.parametrize("take", [True, False])
-def test_cond_takes_the_selected_branch(take, backend):
+def test_cond_takes_the_selected_branch(rng, take, backend):
     x, k = rng.normal(size=3), 1.7
     grow, shrink = branches(getattr(ivy, backend))
     expected = (branches(np)[0] if take else branches(np)[1])(x, {"k": k})
@@ -366,7 +366,7 @@ def test_cond_takes_the_selected_branch(take, backend):
     _assert_same(out, expected, backend)
 
 
-def test_compiled_cond_and_its_gradients(graph_backend):
+def test_compiled_cond_and_its_gradients(rng, graph_backend):
     grow, shrink = branches(getattr(ivy, graph_backend))
     x, k = rng.normal(size=3), np.float64(1.7)
 
@@ -502,3 +502,6 @@ def test_compile_without_a_compiler_warns_and_runs_loops_in_python(backend):
     assert float(carry) == 3.0
     assert any(f"{backend} has no compiler" in str(w.message) for w in caught)
     assert len(traces) == 3 and not capabilities(backend).compiled_loops
+
+
+del _data  # no test draws from a generator shared by the module

@@ -14,11 +14,9 @@ import pytest
 import ivy
 from tests.helpers import api, check, native, tolerance
 
-RNG = np.random.default_rng(77)
 
-
-def _image(shape, dtype="float32"):
-    return (RNG.standard_normal(shape) * 3).astype(dtype)
+def _image(rng, shape, dtype="float32"):
+    return (rng.standard_normal(shape) * 3).astype(dtype)
 
 
 def _bilinear_reference(image, warp):
@@ -46,9 +44,9 @@ def _batched_reference(images, warps):
 
 @pytest.mark.parametrize("dtype", ["float32", "float64"])
 @pytest.mark.parametrize("batch", [(), (2,), (2, 3)], ids=str)
-def test_bilinear_resample(backend, dtype, batch):
-    images = _image((*batch, 4, 5, 3), dtype)
-    inside = RNG.uniform([0, 0], [4, 3], (*batch, 6, 2))
+def test_bilinear_resample(rng, backend, dtype, batch):
+    images = _image(rng, (*batch, 4, 5, 3), dtype)
+    inside = rng.uniform([0, 0], [4, 3], (*batch, 6, 2))
     outside = np.array([[-1.5, 0.5], [4.5, 2.25], [2.0, -3.0], [9.0, 9.0]])  # clamped
     warps = np.concatenate([inside, np.broadcast_to(outside, (*batch, 4, 2))], axis=-2)
     warps = warps.astype(dtype)
@@ -74,8 +72,8 @@ def test_bilinear_resample_of_integer_images_takes_the_warp_dtype(backend):
         check(fn(native(image, backend), native(warp, backend)), np.array([[2.0]]), backend)
 
 
-def test_bilinear_resample_refuses_mismatched_shapes(backend):
-    image = native(_image((2, 4, 5, 3)), backend)
+def test_bilinear_resample_refuses_mismatched_shapes(rng, backend):
+    image = native(_image(rng, (2, 4, 5, 3)), backend)
     for warp_shape in [(3, 6, 2), (2, 6, 3)]:
         for fn in api(backend, "bilinear_resample"):
             with pytest.raises(ValueError, match="bilinear_resample"):
@@ -95,8 +93,8 @@ def _gradient_reference(images):
 
 @pytest.mark.parametrize("dtype", ["float32", "float64"])
 @pytest.mark.parametrize("shape", [(4, 5, 3), (2, 3, 4, 1), (1, 1, 2), (2, 2, 3, 4, 2)], ids=str)
-def test_gradient_image(backend, dtype, shape):
-    images = _image(shape, dtype)
+def test_gradient_image(rng, backend, dtype, shape):
+    images = _image(rng, shape, dtype)
     dy_ref, dx_ref = _gradient_reference(images)
     for fn in api(backend, "gradient_image"):
         dy, dx = fn(native(images, backend))
@@ -154,26 +152,26 @@ def _stack_reference(images, rows, cols):
 
 
 @pytest.mark.parametrize("case", list(GRIDS), ids=str)
-def test_stack_images(backend, case):
+def test_stack_images(rng, backend, case):
     count, h, w, ratio = case
-    images = [_image((2, h, w, 3)) for _ in range(count)]
+    images = [_image(rng, (2, h, w, 3)) for _ in range(count)]
     expected = _stack_reference(images, *GRIDS[case])
     for fn in api(backend, "stack_images"):
         out = fn([native(im, backend) for im in images], desired_aspect_ratio=ratio)
         check(out, expected, backend)
 
 
-def test_stack_images_defaults_to_square(backend):
-    images = [_image((3, 3, 1), "float64") for _ in range(4)]
+def test_stack_images_defaults_to_square(rng, backend):
+    images = [_image(rng, (3, 3, 1), "float64") for _ in range(4)]
     for fn in api(backend, "stack_images"):
         check(fn([native(im, backend) for im in images]), _stack_reference(images, 2, 2), backend)
 
 
-def test_stack_images_refuses_no_images_and_mixed_shapes(backend):
+def test_stack_images_refuses_no_images_and_mixed_shapes(rng, backend):
     for fn in api(backend, "stack_images"):
         with pytest.raises(ValueError, match="at least one"):
             fn([])
-    mixed = [native(_image((2, 2, 1)), backend), native(_image((3, 2, 1)), backend)]
+    mixed = [native(_image(rng, (2, 2, 1)), backend), native(_image(rng, (3, 2, 1)), backend)]
     for fn in api(backend, "stack_images"):
         with pytest.raises(ValueError, match="one shape"):
             fn(mixed)
