@@ -72,7 +72,8 @@ def takes(*names: str, **shapes):
         >>> w(np.zeros(3))
         Traceback (most recent call last):
         ...
-        ivy.checks.InputError: w: quaternion must be [..., 4]; got shape (3,).
+        ivy.checks.InputError: w: quaternion must be [..., 4]; got shape (3,). Quaternions are
+        scalar-last [x, y, z, w].
     """
     bases = {name: name.rstrip("0123456789") for name in names}
     specs = {name: SHAPES[base] for name, base in bases.items()}

@@ -95,6 +95,13 @@ def clip(x, /, min=None, max=None):  # noqa: A002 - the Array API names
         if low is not None:
             x = jnp.logical_or(x, low)
         return x if high is None else jnp.logical_and(x, high)
+    return _clamped(x, low, high)
+
+
+@jax.jit
+def _clamped(x, low, high):
+    """One compiled call (eager, the ``where`` of each bound would be dispatched one by one);
+    None bounds are static (a pytree without leaves)."""
     if low is not None:
         x = jnp.where(x < low, jnp.asarray(low, dtype=x.dtype), x)
     if high is not None:

@@ -16,12 +16,20 @@ _SQRT_HALF = math.sqrt(0.5)
 _SQRT_2_OVER_PI = math.sqrt(2 / math.pi)
 
 
+_ZEROS: dict = {}  # dtype -> a 0-d zero, made once
+
+
 def relu(x, /):
     """``max(0, x)``, with ``relu(-0) = +0`` as on every backend (``tf.nn.relu`` keeps ``-0``;
     ``ivy/backends/_signed_zeros.py``): tf's maximum returns its first operand at a tie, and
     its gradient at 0 is relu's, 0."""
-    x = tf.convert_to_tensor(x)
-    return tf.math.maximum(tf.zeros((), x.dtype), x)
+    if not isinstance(x, tf.Tensor):
+        x = tf.convert_to_tensor(x)
+    zero = _ZEROS.get(x.dtype)
+    if zero is None:
+        with tf.init_scope():  # (a constant of the program, also when first made in a trace)
+            zero = _ZEROS[x.dtype] = tf.zeros((), x.dtype)
+    return tf.math.maximum(zero, x)
 
 
 def sigmoid(x, /):

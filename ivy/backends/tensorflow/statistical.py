@@ -43,6 +43,8 @@ def _extremum(native, name: str):
         out = native(x, axis=axis, keepdims=keepdims)
         if not x.dtype.is_floating:
             return out
+        if tf.executing_eagerly() and not (out.numpy() == 0).any():
+            return out  # (eager: a test on the host is cheaper than the fix)
         # IEEE's sign of a zero result (``ivy/backends/_signed_zeros.py``): 1 / -0 is -inf
         lower = name == "min"
         signed = tf.math.reciprocal(x) < 0 if lower else tf.math.reciprocal(x) > 0

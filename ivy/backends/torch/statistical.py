@@ -67,6 +67,10 @@ def _signed_zero(x, out, dim, keepdim, lower: bool):
     (``ivy/backends/_signed_zeros.py``)."""
     if not out.is_floating_point():
         return out
+    if out.device.type == "cpu" and not torch.compiler.is_compiling():
+        # (eager on the CPU: a test is cheaper than the fix)
+        if (out.item() != 0) if out.numel() == 1 else not (out.detach().numpy() == 0).any():
+            return out
     signed = torch.signbit(x) if lower else torch.logical_not(torch.signbit(x))
     hits = torch.logical_and(x == 0, signed)
     found = torch.any(hits) if dim is None else torch.any(hits, dim=dim, keepdim=keepdim)
