@@ -65,7 +65,6 @@ _BEFORE_8 = np.triu(np.ones((8, 8)), 1)  # [j, i] = 1 where j < i
 _SLOTS_4 = np.arange(4.0)[:, None]
 _ENDS = np.array([1.0, -1.0])
 _FIRST_ONLY = np.array([True, False])
-_NEAREST_THEN_ENDS = (np.array([1.0, 0.0, 0.0]), np.array([0.0, -1.0, 1.0]))
 _SIN_60 = 0.8660254037844386  # sqrt(3) / 2
 
 
@@ -291,25 +290,20 @@ def _capsule_capsule(xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw:
     v = _dot(xp, axis2, dif)
     det = ma * mc - mb * mb
     parallel = xp.abs(det) < PARALLEL_SIN2 * ma * mc
-    # candidates on segment 1: the point of line 1 nearest to line 2 (general configuration),
-    # then its ends -z and +z (parallel axes)
+    # the contacts' points on segment 1: the point of line 1 nearest to line 2 (general
+    # configuration; the second contact unused), or its ends -z and +z (parallel axes)
     normal = xp.cross(axis1, axis2)
     safe_sqr = xp.where(parallel, xp.ones_like(det), _dot(xp, normal, normal))
     nearest = _dot(xp, xp.cross(-dif, axis2), normal) / safe_sqr
-    x1 = xp.clip(
-        nearest[..., None] * _const(xp, u, _NEAREST_THEN_ENDS[0])
-        + _const(xp, u, _NEAREST_THEN_ENDS[1]),
-        -1.0,
-        1.0,
-    )
+    first = xp.where(parallel, -xp.ones_like(nearest), xp.clip(nearest, -1.0, 1.0))
+    x1 = xp.stack([first, xp.ones_like(first)], axis=-1)
     # the nearest point of segment 2 to each; where that one is clipped, the nearest point of
     # segment 1 to it instead
-    x2 = (v[..., None] - mb[..., None] * x1) / mc[..., None]
+    ma, mb, mc, u, v = (a[..., None] for a in (ma, mb, mc, u, v))
+    x2 = (v - mb * x1) / mc
     outside = xp.logical_or(x2 > 1, x2 < -1)
     x2 = xp.clip(x2, -1.0, 1.0)
-    x1 = xp.where(
-        outside, xp.clip((u[..., None] - mb[..., None] * x2) / ma[..., None], -1.0, 1.0), x1
-    )
+    x1 = xp.where(outside, xp.clip((u - mb * x2) / ma, -1.0, 1.0), x1)
     dist, pos, normal, found = _raw_sphere_sphere(
         xp,
         pos1[..., None, :] + axis1[..., None, :] * x1[..., None],
@@ -320,23 +314,9 @@ def _capsule_capsule(xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw:
         size2[..., 0:1],
         _last(margin),
     )
-    # general: the first candidate twice (the second not found); parallel: the other two
-    par = parallel[..., None]
-    vectors = [
-        xp.where(par[..., None], v[..., 1:, :], xp.broadcast_to(v[..., :1, :], v[..., 1:, :].shape))
-        for v in (pos, normal)
-    ]
-    return _Raw(
-        dist=xp.where(par, dist[..., 1:], xp.broadcast_to(dist[..., :1], dist[..., 1:].shape)),
-        pos=vectors[0],
-        normal=vectors[1],
-        tangent=None,
-        found=xp.where(
-            par,
-            found[..., 1:],
-            xp.logical_and(found[..., :1], xp.constant(_FIRST_ONLY, device=xp.dev(found))),
-        ),
-    )
+    only_first = xp.constant(_FIRST_ONLY, device=xp.dev(found))
+    found = xp.logical_and(found, xp.logical_or(parallel[..., None], only_first))
+    return _Raw(dist, pos, normal, None, found)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -497,7 +477,7 @@ class PairKind:
         geom1, geom2: the pairs' geom ids (tuples of ints, MuJoCo's order).
         size1, size2: their sizes, numpy ``[npairs, 3]``.
         reach: numpy ``[npairs]``, margin + gap: the distance within which a contact is found.
-        index1, index2: ``geom1``, ``geom2`` as int64 numpy arrays.
+        index1, index2: ``geom1``, ``geom2`` as int32 numpy arrays (gather indices).
     """
 
     types: tuple
@@ -528,7 +508,7 @@ class ContactTable:
     leaves a found contact out of the constraints whatever its distance: its two bodies move
     with no dof apart; only explicit pairs can have it).
 
-    Structure: ``kinds`` (one :class:`PairKind` per pair kind present), ``order`` (int
+    Structure: ``kinds`` (one :class:`PairKind` per pair kind present), ``order`` (int32
     ``[ncon]``: for each candidate, its index in the concatenation of the kinds' candidates,
     pair by pair, contact by contact) and ``in_order`` (whether ``order`` is the identity).
     """
@@ -862,13 +842,13 @@ def _build_table(m, mujoco, pairs: list) -> ContactTable:
                 size1=np.array(m.geom_size[list(g1s)], np.float64),
                 size2=np.array(m.geom_size[list(g2s)], np.float64),
                 reach=np.array(reach, np.float64),
-                index1=np.array(g1s, np.int64),
-                index2=np.array(g2s, np.int64),
+                index1=np.array(g1s, np.int32),
+                index2=np.array(g2s, np.int32),
             )
         )
         offsets[types] = start
         start += ncon * len(group)
-    order = np.array([offsets[t] + i * PAIR_KINDS[t][1] + k for t, i, k in slots], np.int64)
+    order = np.array([offsets[t] + i * PAIR_KINDS[t][1] + k for t, i, k in slots], np.int32)
     return ContactTable(
         **{k: _as_array(k, v) for k, v in rows.items()},
         kinds=tuple(kinds),
