@@ -211,19 +211,19 @@ def solve(
     still = _rows(xp, _stopped(xp, flat), kinds)
     if options.solver == "newton":
         qacc, jar, iterations = _newton(xp, still, start, options)
-        zone = _zone(xp, still, jar)
-        force = _update(xp, still, jar)[0]
+        zones = _zones(xp, still, jar)
+        force = _forces(xp, still, jar, *zones)
         gauss = flat.qfrc_smooth
     else:
         force, iterations = _pgs(xp, still, start, options)
         qacc = still.qacc_smooth + _solve_M(xp, still.M, _matvec_T(xp, still.J, force))
-        zone = _zone_of_forces(xp, still, force)
+        zones = _zones_of_forces(xp, still, force)
         gauss = xp.matvec(flat.M, flat.qacc_smooth)
     rows = still
     if xp.capabilities.autodiff:
         rows = _rows(xp, flat, kinds)
         D = rows.D if options.solver == "newton" else 1.0 / rows.R  # the dual reads R, not D
-        qacc, force = _implicit(xp, rows, qacc, force, zone, gauss, D)
+        qacc, force = _implicit(xp, rows, qacc, force, zones, gauss, D)
     qfrc = _matvec_T(xp, rows.J, force)
     unflat = functools.partial(_unflatten, xp, batch)
     return ConstraintSolution(
@@ -245,12 +245,13 @@ class _Rows(NamedTuple):
     R: Array  # [B, n], one on inactive rows
     aref: Array  # [B, n]
     floss: Array  # [B, n], frictionloss on friction rows, else 0
-    low: Array  # [B, n] jar at or below it: linear zone, force +floss (-inf: none)
-    high: Array  # [B, n] jar at or above it: force -floss (0 on one-sided rows; inf: none)
+    low: Array  # [B, n] jar at or below it: the linear zone "below", force +floss (-inf: none)
+    high: Array  # [B, n] jar at or above it: the zone "above", force -floss (0 on one-sided
+    # rows: satisfied; inf: none)
+    high_force: Array  # [B, n] the force above: -floss, 0 on one-sided rows
     active: Array  # [B, n] bool
     friction: Array  # [B, n] bool: active friction rows
     one_sided: Array  # [B, n] bool: active one-sided rows
-    friction_slots: Array  # [f] int: the rows whose kind is friction (static)
 
 
 def _batch_shape(problem: ConstraintProblem, qacc_warmstart) -> tuple:
@@ -302,12 +303,10 @@ def _rows(xp, p: ConstraintProblem, kinds: np.ndarray) -> _Rows:
         floss=floss,
         low=xp.where(friction, -R * floss, -inf),
         high=xp.where(friction, R * floss, xp.where(one_sided, zero, inf)),
+        high_force=xp.where(friction, -floss, zero),
         active=active,
         friction=friction,
         one_sided=one_sided,
-        friction_slots=xp.constant(
-            np.flatnonzero(kinds == ROW_FRICTION).astype(np.int64), device=xp.dev(like)
-        ),
     )
 
 
@@ -320,40 +319,41 @@ def _solve_M(xp, M, rhs):
     return xp.linalg.solve(M, rhs[..., None])[..., 0]
 
 
-def _update(xp, rows: _Rows, jar):
-    """Forces, costs and zones of the rows at ``jar = J qacc - aref`` (MuJoCo's constraint
-    update): zone 0 linear at ``+floss``, 1 quadratic, 2 linear at ``-floss`` (satisfied
-    one-sided rows: force 0)."""
+def _zones(xp, rows: _Rows, jar):
+    """The rows' zones at ``jar = J qacc - aref`` (MuJoCo's constraint update): ``(below,
+    above)``, *[B, n]* bools; a row in neither is quadratic (force ``-D jar``); below, its force
+    is ``+frictionloss``; above, ``-frictionloss`` (0: a satisfied one-sided row)."""
     below = jar <= rows.low
-    above = xp.logical_and(jar >= rows.high, xp.logical_not(below))
+    return below, xp.logical_and(jar >= rows.high, xp.logical_not(below))
+
+
+def _forces(xp, rows: _Rows, jar, below, above):
     quadratic = xp.logical_not(xp.logical_or(below, above))
+    return xp.where(quadratic, -rows.D * jar, xp.where(below, rows.floss, rows.high_force))
+
+
+def _cost(xp, rows: _Rows, jar):
+    """The rows' cost at ``jar``, summed per batch element."""
+    below, above = _zones(xp, rows, jar)
     fl = rows.floss
-    force = xp.where(quadratic, -rows.D * jar, xp.where(below, fl, xp.zeros_like(fl) - fl))
-    linear_cost = -0.5 * rows.R * fl * fl + xp.where(below, -fl, fl) * jar
-    cost = xp.where(quadratic, 0.5 * rows.D * jar * jar, linear_cost)
-    return force, cost, quadratic, below, above
+    linear = -0.5 * rows.R * fl * fl + xp.where(below, -fl, fl) * jar
+    quadratic = xp.logical_not(xp.logical_or(below, above))
+    return xp.sum(xp.where(quadratic, 0.5 * rows.D * jar * jar, linear), axis=-1)
 
 
-def _zone(xp, rows: _Rows, jar):
-    """Zone codes (0, 1, 2) of the rows at ``jar``."""
-    _, _, _, below, above = _update(xp, rows, jar)
-    return xp.where(below, 0, xp.where(above, 2, 1))
-
-
-def _zone_of_forces(xp, rows: _Rows, force):
-    """Zones of dual forces: quadratic where the force is strictly inside its bounds."""
-    at_high = xp.logical_and(rows.friction, force >= rows.floss)
-    at_low = xp.logical_or(
+def _zones_of_forces(xp, rows: _Rows, force):
+    """The zones of dual forces: quadratic where a force lies strictly inside its bounds."""
+    below = xp.logical_and(rows.friction, force >= rows.floss)
+    above = xp.logical_or(
         xp.logical_and(rows.friction, force <= -rows.floss),
         xp.logical_and(rows.one_sided, force <= 0),
     )
-    return xp.where(at_high, 0, xp.where(at_low, 2, 1))
+    return below, above
 
 
 def _total_cost(xp, rows: _Rows, qacc):
     """MuJoCo's cost of ``qacc`` (constraint cost plus the Gauss term), per batch element."""
-    jar = xp.matvec(rows.J, qacc) - rows.aref
-    cost = xp.sum(_update(xp, rows, jar)[1], axis=-1)
+    cost = _cost(xp, rows, xp.matvec(rows.J, qacc) - rows.aref)
     Ma = xp.matvec(rows.M, qacc)
     return cost + 0.5 * xp.sum((Ma - rows.qfrc_smooth) * (qacc - rows.qacc_smooth), axis=-1)
 
@@ -368,7 +368,7 @@ def _newton(xp, rows: _Rows, start, options: SolverOptions):
     ``jar`` and the iterations per batch element."""
     qacc = rows.qacc_smooth
     if start is not None:  # the cheaper of qacc_warmstart and qacc_smooth
-        smooth_cost = xp.sum(_update(xp, rows, xp.matvec(rows.J, qacc) - rows.aref)[1], axis=-1)
+        smooth_cost = _cost(xp, rows, xp.matvec(rows.J, qacc) - rows.aref)
         worse = _total_cost(xp, rows, start) > smooth_cost
         qacc = xp.where(worse[:, None], qacc, start)
     jar = xp.matvec(rows.J, qacc) - rows.aref
@@ -378,28 +378,39 @@ def _newton(xp, rows: _Rows, start, options: SolverOptions):
     step = xp.zeros((), dtype=xp.int32, device=xp.dev(qacc))
 
     def keep_going(carry):
-        _, _, done, _, step = carry
+        done, step = carry[-3], carry[-1]
         return xp.logical_and(step < options.iterations, xp.any(xp.logical_not(done)))
 
     def iterate(carry):
-        qacc, jar, done, count, step = carry
-        new_qacc, new_jar, settled = _newton_step(xp, rows, qacc, jar)
-        qacc = xp.where(done[:, None], qacc, new_qacc)
-        jar = xp.where(done[:, None], jar, new_jar)
-        count = count + xp.astype(xp.logical_not(done), xp.int32)
-        return qacc, jar, xp.logical_or(done, settled), count, step + 1
+        qacc, jar, below, above, done, count, step = carry
+        new = _newton_step(xp, rows, qacc, jar, below, above)
+        new_qacc, new_jar, new_below, new_above = new
+        settled = xp.all(
+            xp.logical_and(new_below == below, new_above == above), axis=-1
+        )  # no row changed zone: the new point is the exact minimiser
+        keep = done[:, None]
+        return (
+            xp.where(keep, qacc, new_qacc),
+            xp.where(keep, jar, new_jar),
+            xp.where(keep, below, new_below),
+            xp.where(keep, above, new_above),
+            xp.logical_or(done, settled),
+            count + xp.astype(xp.logical_not(done), xp.int32),
+            step + 1,
+        )
 
-    qacc, jar, _, count, _ = xp.while_loop(keep_going, iterate, (qacc, jar, done, count, step))
+    carry = (qacc, jar, *_zones(xp, rows, jar), done, count, step)
+    qacc, *_, count, _ = xp.while_loop(keep_going, iterate, carry)
     # rows that exist in no batch element: MuJoCo's shortcut qacc = qacc_smooth
     qacc = xp.where(xp.any(rows.active, axis=-1)[:, None], qacc, rows.qacc_smooth)
-    jar = xp.matvec(rows.J, qacc) - rows.aref
-    return qacc, jar, count
+    return qacc, xp.matvec(rows.J, qacc) - rows.aref, count
 
 
-def _newton_step(xp, rows: _Rows, qacc, jar):
-    """One Newton step with an exact line search; also whether it left every row's zone as it
-    was (then the new point is the exact minimiser)."""
-    force, _, quadratic, _, _ = _update(xp, rows, jar)
+def _newton_step(xp, rows: _Rows, qacc, jar, below, above):
+    """One Newton step with an exact line search from ``qacc`` (its ``jar`` and zones given);
+    returns the new ``qacc``, ``jar`` and zones."""
+    quadratic = xp.logical_not(xp.logical_or(below, above))
+    force = xp.where(quadratic, -rows.D * jar, xp.where(below, rows.floss, rows.high_force))
     Ma = xp.matvec(rows.M, qacc)
     gauss = Ma - rows.qfrc_smooth
     grad = gauss - _matvec_T(xp, rows.J, force)
@@ -410,10 +421,8 @@ def _newton_step(xp, rows: _Rows, qacc, jar):
     slope0 = xp.sum(gauss * search, axis=-1)
     curvature = xp.sum(search * xp.matvec(rows.M, search), axis=-1)
     alpha = _line_search(xp, rows, jar, Jv, slope0, curvature)
-    new_qacc = qacc + alpha[:, None] * search
     new_jar = jar + alpha[:, None] * Jv
-    settled = xp.all(_zone(xp, rows, new_jar) == _zone(xp, rows, jar), axis=-1)
-    return new_qacc, new_jar, settled
+    return (qacc + alpha[:, None] * search, new_jar, *_zones(xp, rows, new_jar))
 
 
 def _directional(xp, rows: _Rows, jar, Jv, below, above):
@@ -431,10 +440,12 @@ def _line_search(xp, rows: _Rows, jar, Jv, slope0, curvature):
 
     The derivative along the line, ``slope0 + alpha curvature`` plus the rows' terms, is
     continuous, piecewise linear and increasing, with a kink where a row crosses a zone boundary
-    (one-sided rows at ``jar = 0``, friction rows at ``jar = -+R frictionloss``). The crossings
-    ahead are sorted and the changes of slope summed along them to find the segment where the
-    derivative vanishes; the root is then solved from the rows' zones inside that segment,
-    summed afresh (no accumulated rounding).
+    (one-sided rows at ``jar = 0``, friction rows at ``jar = -+R frictionloss``). The search
+    walks the segments between crossings from ``alpha = 0``: in each it solves the linear
+    derivative's root from the rows' zones there (summed afresh, no accumulated rounding), and
+    stops if the root lies before the next crossing, else moves to that crossing. The walk is
+    exact and takes one step per crossing passed: one or two in practice (a loop of batch-wide
+    steps while any element walks on; no sort).
 
     Args:
         jar: *[B, n]* ``J qacc - aref``; ``Jv``: *[B, n]* ``J search``.
@@ -443,60 +454,52 @@ def _line_search(xp, rows: _Rows, jar, Jv, slope0, curvature):
     inf = xp.full_like(jar, float("inf"))
     moving = Jv != 0
     step = xp.where(moving, Jv, xp.ones_like(Jv))
-    sign = xp.where(Jv > 0, xp.ones_like(Jv), -xp.ones_like(Jv))
+    up = Jv > 0
 
     def crossing(level):
         alpha = (level - jar) / step
         ahead = xp.logical_and(xp.logical_and(moving, xp.isfinite(level)), alpha > 0)
-        return xp.where(ahead, alpha, inf), ahead
+        return xp.where(ahead, alpha, inf)
 
-    # the change of each row's (a, b) where it crosses its low boundary (linear at +floss ->
-    # quadratic, when moving up) and its high boundary (quadratic -> linear at -floss or
-    # satisfied); only friction rows have a low boundary
-    quad_a, quad_b, linear = rows.D * jar * Jv, rows.D * Jv * Jv, rows.floss * Jv
-    at_low, low_ahead = crossing(rows.low)
-    at_high, high_ahead = crossing(rows.high)
-    slots = rows.friction_slots
-    crossings = xp.concat([xp.take(at_low, slots, axis=-1), at_high], axis=-1)
-    ahead = xp.concat([xp.take(low_ahead, slots, axis=-1), high_ahead], axis=-1)
-    da = xp.concat(
-        [xp.take(sign * (quad_a + linear), slots, axis=-1), sign * (linear - quad_a)], axis=-1
-    )
-    db = xp.concat([xp.take(sign * quad_b, slots, axis=-1), -sign * quad_b], axis=-1)
-    da, db = xp.where(ahead, da, xp.zeros_like(da)), xp.where(ahead, db, xp.zeros_like(db))
-
-    # zones just after alpha = 0 (a row on a boundary takes the side it moves to)
-    below = xp.logical_or(jar < rows.low, xp.logical_and(jar == rows.low, xp.logical_not(Jv > 0)))
+    at_low, at_high = crossing(rows.low), crossing(rows.high)
+    # zones just after alpha = 0 (0 below low, 1 between, 2 above high; a row on a boundary
+    # takes the side it moves to); a zone changes by one, in the direction of motion, at each
+    # crossing passed
+    below = xp.logical_or(jar < rows.low, xp.logical_and(jar == rows.low, xp.logical_not(up)))
     above = xp.logical_or(jar > rows.high, xp.logical_and(jar == rows.high, xp.logical_not(Jv < 0)))
-    a_rows, b_rows = _directional(
-        xp, rows, jar, Jv, below, xp.logical_and(above, xp.logical_not(below))
-    )
-    a0 = (slope0 + xp.sum(a_rows, axis=-1))[:, None]
-    b0 = (curvature + xp.sum(b_rows, axis=-1))[:, None]
+    start = xp.where(below, 0, xp.where(above, 2, 1))
 
-    # segment k runs from the k-th crossing (0 for k = 0) to the next (inf after the last)
-    order = xp.argsort(crossings, axis=-1)
-    ends = xp.take_along_axis(crossings, order, axis=-1)
-    a = xp.concat([a0, a0 + xp.cumsum(xp.take_along_axis(da, order, axis=-1), axis=-1)], axis=-1)
-    b = xp.concat([b0, b0 + xp.cumsum(xp.take_along_axis(db, order, axis=-1), axis=-1)], axis=-1)
-    upper = xp.concat([ends, inf[:, :1]], axis=-1)
-    lower = xp.concat([xp.zeros_like(a0), ends], axis=-1)
-    last = xp.isinf(upper)
-    rising = a + xp.where(last, xp.zeros_like(upper), upper) * b >= 0  # the root is before its end
-    segment = xp.argmax(xp.astype(xp.logical_or(last, rising), xp.int32), axis=-1)[:, None]
-    lo = xp.take_along_axis(lower, segment, axis=-1)[:, 0]
-    hi = xp.take_along_axis(upper, segment, axis=-1)[:, 0]
+    def segment(lo):
+        """The derivative's ``(a, b)`` on the segment starting at ``lo`` *[B]*, and its end."""
+        passed = xp.astype(at_low <= lo[:, None], start.dtype) + xp.astype(
+            at_high <= lo[:, None], start.dtype
+        )
+        zone = xp.where(up, start + passed, start - passed)
+        a_rows, b_rows = _directional(xp, rows, jar, Jv, zone == 0, zone == 2)
+        later = xp.minimum(
+            xp.where(at_low > lo[:, None], at_low, inf),
+            xp.where(at_high > lo[:, None], at_high, inf),
+        )
+        end = xp.min(later, axis=-1)
+        return slope0 + xp.sum(a_rows, axis=-1), curvature + xp.sum(b_rows, axis=-1), end
 
-    # the zones inside that segment, and the root of the derivative there
-    inside = jar + xp.where(xp.isinf(hi), 2.0 * lo + 1.0, 0.5 * (lo + hi))[:, None] * Jv
-    below = inside <= rows.low
-    above = xp.logical_and(inside >= rows.high, xp.logical_not(below))
-    a_rows, b_rows = _directional(xp, rows, jar, Jv, below, above)
-    a = slope0 + xp.sum(a_rows, axis=-1)
-    b = curvature + xp.sum(b_rows, axis=-1)
-    positive = b > 0
-    alpha = xp.where(positive, -a / xp.where(positive, b, xp.ones_like(b)), lo)
-    return xp.minimum(xp.maximum(alpha, lo), hi)
+    def walking(carry):
+        return xp.any(xp.logical_not(carry[2]))
+
+    def walk(carry):
+        lo, alpha, done = carry
+        a, b, end = segment(lo)
+        positive = b > 0
+        root = xp.where(positive, -a / xp.where(positive, b, xp.ones_like(b)), lo)
+        root = xp.maximum(root, lo)
+        found = xp.logical_and(xp.logical_not(done), root <= end)
+        alpha = xp.where(found, root, alpha)
+        lo = xp.where(xp.logical_or(done, found), lo, end)
+        return lo, alpha, xp.logical_or(done, found)
+
+    zero = xp.zeros_like(slope0)
+    done = xp.zeros(slope0.shape, dtype=xp.bool, device=xp.dev(slope0))
+    return xp.while_loop(walking, walk, (zero, zero, done))[1]
 
 
 # ----------------------------------------------------------------------------------------------
@@ -554,7 +557,8 @@ def _pgs(xp, rows: _Rows, start, options: SolverOptions):
     b = xp.matvec(rows.J, rows.qacc_smooth) - rows.aref
     force = xp.zeros_like(like)
     if start is not None:  # warm forces unless their dual cost is positive
-        warm = _update(xp, rows, xp.matvec(rows.J, start) - rows.aref)[0]
+        warm_jar = xp.matvec(rows.J, start) - rows.aref
+        warm = _forces(xp, rows, warm_jar, *_zones(xp, rows, warm_jar))
         dual = xp.sum(warm * b, axis=-1) + 0.5 * xp.sum(warm * xp.matvec(AR, warm), axis=-1)
         force = xp.where((dual > 0)[:, None], force, warm)
 
@@ -667,20 +671,21 @@ def _diagonal(xp, A):
 # ----------------------------------------------------------------------------------------------
 
 
-def _implicit(xp, rows: _Rows, qacc, force, zone, gauss, D):
+def _implicit(xp, rows: _Rows, qacc, force, zones, gauss, D):
     """``qacc`` and ``force`` unchanged in value, with the derivatives of the exact solution in
-    the given zones: one Newton step from the (stopped) solution, taken with gradients."""
+    the given zones: one Newton step from the (stopped) solution, taken with gradients.
+
+    ``gauss`` is the force the Gauss term pulls towards (``qfrc_smooth`` for Newton, as MuJoCo's
+    primal; ``M qacc_smooth`` for PGS, as its dual) and ``D`` the quadratic rows' stiffness
+    (``efc_D`` for Newton; ``1 / efc_R`` for PGS, whose dual reads R)."""
     qacc, force = xp.stop_gradient(qacc), xp.stop_gradient(force)
-    quadratic = zone == 1
-    fl = rows.floss
-    linear = xp.where(zone == 0, fl, xp.where(zone == 2, xp.zeros_like(fl) - fl, xp.zeros_like(fl)))
+    below, above = zones
+    quadratic = xp.logical_not(xp.logical_or(below, above))
+    linear = xp.where(below, rows.floss, rows.high_force)
     D = xp.where(quadratic, D, xp.zeros_like(D))
     jar = xp.matvec(rows.J, qacc) - rows.aref
-    grad = (
-        xp.matvec(rows.M, qacc)
-        - gauss
-        - _matvec_T(xp, rows.J, xp.where(quadratic, -D * jar, linear))
-    )
+    row_force = xp.where(quadratic, -D * jar, linear)
+    grad = xp.matvec(rows.M, qacc) - gauss - _matvec_T(xp, rows.J, row_force)
     H = rows.M + xp.matmul(xp.matrix_transpose(rows.J), D[..., None] * rows.J)
     stepped = qacc - xp.linalg.solve(H, grad[..., None])[..., 0]
     stepped_force = xp.where(quadratic, -D * (xp.matvec(rows.J, stepped) - rows.aref), linear)
