@@ -72,6 +72,12 @@ class Capabilities:
             tensorflow's pfor through a ``tf.while_loop`` (gigabytes), torch's batched backward
             pass (1.7x slower than replicated, on the double pendulum's swing-up); code that takes
             Jacobians of batched functions then uses ``method="replicate"``.
+        eager_compiles_ops: the eager mode compiles every operation for each new combination of
+            shapes and dtypes before running it (jax: tens of milliseconds each, so a first eager
+            call of a program of a thousand operations takes a minute, and an eager loop of
+            ``while_loop`` compiles its body at every call). Libraries whose kernels are large
+            run them through a cached ``ivy.compile_fn`` there, also when the user calls them
+            eagerly.
 
     Example:
         >>> ivy.framework_handler.capabilities("jax").compiled_loops
@@ -85,6 +91,7 @@ class Capabilities:
     float64: bool = True
     compiled_loops: bool = False
     vectorised_jacobian: bool = False
+    eager_compiles_ops: bool = False
 
 
 @dataclass(frozen=True)
@@ -122,6 +129,7 @@ _BACKENDS: dict[str, _BackendSpec] = {
             devices=("cpu", "gpu", "tpu"),
             compiled_loops=True,
             vectorised_jacobian=True,
+            eager_compiles_ops=True,
         ),
     ),
     "tensorflow": _BackendSpec(

@@ -97,12 +97,16 @@ def _donated(sig, donate_argnums):
 def compile_native(fn, /, *, static_argnums=None, static_argnames=None, donate_argnums=None):
     state = _random._state
 
+    traced = {"draws": True}  # whether the traced function draws random numbers
+
     def with_key(key_data, /, *args, **kwargs):
         saved = state.saved()
         # traced: draws inside the function come from the key passed in
         state.key = jax.random.wrap_key_data(key_data)
+        start = state.key
         try:
             out = fn(*args, **kwargs)
+            traced["draws"] = state.key is not start  # a draw replaces the key (next_key)
             return out, jax.random.key_data(state.key)
         finally:
             state.restore(saved)
@@ -120,14 +124,16 @@ def compile_native(fn, /, *, static_argnums=None, static_argnames=None, donate_a
 
     @functools.wraps(fn)
     def compiled(*args, **kwargs):
-        if state.data is None:  # never seeded: next_key seeds from the OS's entropy
-            state.next_key()
+        if state.data is None:  # never seeded: next_key seeds from the OS's entropy (concretely,
+            with jax.ensure_compile_time_eval():  # also when called inside a user's jax.jit)
+                state.next_key()
         data = state.data
         if not isinstance(data, _Tracer) and not data.committed:
             data = _committed_like(data, (args, kwargs))
         out, new_data = jitted(data, *args, **kwargs)
         if isinstance(new_data, _Tracer) and not isinstance(data, _Tracer):
-            state.next_key()  # under an outer trace: advance the key concretely (and warn)
+            if traced["draws"]:  # under an outer trace: advance the key concretely (and warn)
+                state.next_key()
         else:
             state.data = new_data
         return out

@@ -276,6 +276,25 @@ def test_tensorflow_fast_calls_pack_outputs_as_tf_does(rng, request):
     assert trace.out_checked and trace.out_spec is None  # tf packs: optree's leaves differ
 
 
+def test_jax_compiled_function_inside_jax_jit(request):
+    """An ivy-compiled function called inside a user's own ``jax.jit``: one that draws warns
+    (its numbers are fixed when traced), one that draws nothing stays silent, and both give the
+    eager result."""
+    if "jax" not in request.config.ivy_backends:
+        pytest.skip("jax not selected")
+    import jax
+
+    x = _on("jax", np.arange(3.0))
+    quiet = ivy.compile_fn(lambda x: ivy.sin(x) * 2.0, f="jax")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        out = jax.jit(lambda x: quiet(x) + 1.0)(x)
+    np.testing.assert_allclose(numpy_of(out), np.sin(np.arange(3.0)) * 2.0 + 1.0)
+    noisy = ivy.compile_fn(lambda x: x + ivy.random_uniform(shape=(3,), f="jax"), f="jax")
+    with pytest.warns(UserWarning, match="draw their numbers once"):
+        jax.jit(noisy)(x)
+
+
 @pytest.mark.parametrize("committed", [False, True])
 def test_jax_compiles_once_whether_or_not_arrays_are_placed(request, committed):
     """The PRNG key that compile_fn threads through follows its neighbours' placement, so a
