@@ -98,24 +98,25 @@ def _normalize(xp, v):
     return unit, xp.where(small, square, norm)[..., 0]
 
 
-def _contact_frame(xp, normal, tangent=None):
-    """The contact frame ``[..., 3, 3]`` (rows: normal, tangent1, tangent2) completed from a
-    unit normal and an optional first tangent as ``mju_makeFrame`` completes it: without a tangent
-    (or one shorter than 1/2), the y axis if the normal's y component is within (-1/2, 1/2),
-    else the z axis; then made orthogonal to the normal and normalised."""
-    ny = normal[..., 1:2]  # the normals of the kinds are unit vectors
-    default = xp.where(
-        xp.logical_and(ny < 0.5, ny > -0.5),
-        _const(xp, normal, _Y),
-        _const(xp, normal, _Z),
-    )
-    if tangent is None:
-        tangent = default
-    else:
-        short = _dot(xp, tangent, tangent)[..., None] < 0.25
-        tangent = xp.where(short, default, tangent)
-    tangent = tangent - normal * _dot(xp, normal, tangent)[..., None]
-    tangent, _ = _normalize(xp, tangent)
+def _default_tangent(xp, normal):
+    """``mju_makeFrame``'s first tangent where none is given, for unit normals: the y axis if
+    the normal's y component is within (-1/2, 1/2), else the z axis, made orthogonal to the
+    normal and normalised (never degenerate: the axis is at least 30 degrees off the normal)."""
+    ny, nz = normal[..., 1:2], normal[..., 2:3]
+    use_y = xp.abs(ny) < 0.5
+    along = xp.where(use_y, ny, nz)
+    axis = xp.where(use_y, _const(xp, normal, _Y), _const(xp, normal, _Z))
+    return (axis - normal * along) / xp.sqrt(1 - along * along)
+
+
+def _given_tangent(xp, normal, tangent):
+    """``mju_makeFrame``'s first tangent from a given unit one: made orthogonal to the normal
+    and normalised (``[1, 0, 0]`` where it is parallel to the normal)."""
+    return _normalize(xp, tangent - normal * _dot(xp, normal, tangent)[..., None])[0]
+
+
+def _contact_frame(xp, normal, tangent):
+    """The contact frame ``[..., 3, 3]``: rows normal, tangent, normal x tangent."""
     return xp.stack([normal, tangent, xp.cross(normal, tangent)], axis=-2)
 
 
@@ -142,7 +143,8 @@ def _last(value):
 
 class _Raw(NamedTuple):
     """Candidate contacts of one pair kind before their frames are completed: dist
-    ``[..., K]``, pos and normal ``[..., K, 3]``, tangent ``[..., K, 3]`` or None (none given),
+    ``[..., K]``, pos and normal ``[..., K, 3]`` (unit), the frame's first tangent ``[..., K,
+    3]`` or None (MuJoCo's default),
     found ``[..., K]``."""
 
     dist: Any
@@ -179,7 +181,8 @@ def _raw_sphere_sphere(xp, pos1, z1, r1, pos2, z2, r2, margin):
 
 def _finish(xp, raw: _Raw):
     """(dist, pos, frame, found) from raw candidates: the frames completed."""
-    return raw.dist, raw.pos, _contact_frame(xp, raw.normal, raw.tangent), raw.found
+    tangent = _default_tangent(xp, raw.normal) if raw.tangent is None else raw.tangent
+    return raw.dist, raw.pos, _contact_frame(xp, raw.normal, tangent), raw.found
 
 
 # ----------------------------------------------------------------------------------------------
@@ -202,8 +205,13 @@ def _plane_capsule(xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw:
     dist, pos, found = _raw_plane_sphere(
         xp, pos1[..., None, :], normal, ends, size2[..., 0:1], _last(margin)
     )
+    tangent = _given_tangent(xp, normal, axis)  # the same for both ends
     return _Raw(
-        dist, pos, xp.broadcast_to(normal, pos.shape), xp.broadcast_to(axis, pos.shape), found
+        dist,
+        pos,
+        xp.broadcast_to(normal, pos.shape),
+        xp.broadcast_to(tangent, pos.shape),
+        found,
     )
 
 
@@ -957,7 +965,7 @@ def collide(xp, table: ContactTable, geom_xpos, geom_xmat) -> Contacts:
         )
         tangent = raw.tangent
         if tangents and tangent is None:
-            tangent = xp.zeros_like(raw.normal)  # no tangent given: MuJoCo's default
+            tangent = _default_tangent(xp, raw.normal)
         for part, value, tail in zip(
             parts, (raw.dist, raw.pos, raw.normal, tangent, raw.found), ((), (3,), (3,), (3,), ())
         ):
@@ -969,6 +977,8 @@ def collide(xp, table: ContactTable, geom_xpos, geom_xmat) -> Contacts:
     include = _constant(xp, table.includemargin, geom_xpos)
     acts = xp.constant(table.acts, device=dev)
     active = xp.logical_and(xp.logical_and(found, dist < include), acts)
+    if tangent is None:
+        tangent = _default_tangent(xp, normal)
     return Contacts(dist, pos, _contact_frame(xp, normal, tangent), found, active)
 
 
