@@ -204,8 +204,12 @@ class KinematicTree:
         """
         xp = ivy.get_framework(qpos, f=f)
         self._check_qpos(xp, qpos)
-        kin = kinematics(xp, self.physics, qpos)
-        return _homogeneous(xp, kin["xmat"], kin["xpos"])
+
+        def poses(qpos):
+            kin = kinematics(xp, self.physics, qpos)
+            return _homogeneous(xp, kin["xmat"], kin["xpos"])
+
+        return fw.compiled(xp, self.physics, "poses", poses)(qpos)
 
     def site_poses(self, qpos: Array, *, f: Framework = None) -> Array:
         """World poses of every site (``site_xpos``, ``site_xmat``).
@@ -223,8 +227,12 @@ class KinematicTree:
         """
         xp = ivy.get_framework(qpos, f=f)
         self._check_qpos(xp, qpos)
-        kin = kinematics(xp, self.physics, qpos)
-        return _homogeneous(xp, kin["site_xmat"], kin["site_xpos"])
+
+        def poses(qpos):
+            kin = kinematics(xp, self.physics, qpos)
+            return _homogeneous(xp, kin["site_xmat"], kin["site_xpos"])
+
+        return fw.compiled(xp, self.physics, "site poses", poses)(qpos)
 
     def transform_points(
         self, qpos: Array, bodies: Sequence[int | str], points: Array, *, f: Framework = None
@@ -247,12 +255,16 @@ class KinematicTree:
         """
         xp = ivy.get_framework(qpos, f=f)
         self._check_qpos(xp, qpos)
-        ids = np.asarray([self.body_id(b) for b in bodies], dtype=np.int64)
-        kin = kinematics(xp, self.physics, qpos)
+        where = mt.gather([self.body_id(b) for b in bodies], self.nbody)
         points = _to_backend(xp, points, qpos)
-        rot = xp.take(kin["xmat"], _index(xp, ids, qpos), axis=-3)
-        pos = xp.take(kin["xpos"], _index(xp, ids, qpos), axis=-2)
-        return pos + xp.sum(rot * points[..., None, :], axis=-1)
+
+        def transform(qpos, points):
+            kin = kinematics(xp, self.physics, qpos)
+            rot = mt.take(xp, kin["xmat"], where, axis=-3)
+            return mt.take(xp, kin["xpos"], where, axis=-2) + mt.mv(xp, rot, points)
+
+        key = ("points", tuple(where.indices.tolist()))
+        return fw.compiled(xp, self.physics, key, transform)(qpos, points)
 
     def jacobian(
         self,
@@ -288,23 +300,26 @@ class KinematicTree:
         if (body is None) == (site is None):
             raise ValueError("KinematicTree.jacobian: give exactly one of body= or site=")
         model = self.physics
-        kin = kinematics(xp, model, qpos)
-        com = com_pos(xp, model, kin)
-        if site is not None:
-            s = self.site_id(site)
-            b = int(model.site_body[s])
-            frame_pos, frame_rot = kin["site_xpos"][..., s, :], kin["site_xmat"][..., s, :, :]
-        else:
-            b = self.body_id(body)
-            frame_pos, frame_rot = kin["xpos"][..., b, :], kin["xmat"][..., b, :, :]
-        target = frame_pos
-        if point is not None:
-            point = _to_backend(xp, point, qpos)
-            target = frame_pos + xp.sum(frame_rot * point[..., None, :], axis=-1)
-        bodies, chain = self._body_points[b]
-        jacp, jacr = point_jacobians(xp, model, com["cdof"], com["origin"], bodies, chain,
-                                     target[..., None, :])  # fmt: skip
-        return xp.swapaxes(xp.concat([jacp[..., 0, :, :], jacr[..., 0, :, :]], axis=-1), -1, -2)
+        s = self.site_id(site) if site is not None else None
+        b = int(model.site_body[s]) if s is not None else self.body_id(body)
+        point = None if point is None else _to_backend(xp, point, qpos)
+
+        def jacobian(qpos, point):
+            kin = kinematics(xp, model, qpos)
+            com = com_pos(xp, model, kin)
+            if s is not None:
+                frame_pos, frame_rot = kin["site_xpos"][..., s, :], kin["site_xmat"][..., s, :, :]
+            else:
+                frame_pos, frame_rot = kin["xpos"][..., b, :], kin["xmat"][..., b, :, :]
+            target = frame_pos if point is None else frame_pos + mt.mv(xp, frame_rot, point)
+            bodies, chain = self._body_points[b]
+            jacp, jacr = point_jacobians(xp, model, com["cdof"], com["origin"], bodies, chain,
+                                         target[..., None, :])  # fmt: skip
+            stacked = xp.concat([jacp[..., 0, :, :], jacr[..., 0, :, :]], axis=-1)
+            return xp.swapaxes(stacked, -1, -2)
+
+        key = ("jacobian", b, s, point is None)
+        return fw.compiled(xp, model, key, jacobian)(qpos, point)
 
     def collision_spheres(
         self, spacing: float = 0.05, *, bodies: Sequence[str | int] | None = None
@@ -452,8 +467,12 @@ class KinematicTree:
         xp = ivy.get_framework(qpos, f=f)
         model = self._dynamics()
         self._check(xp, qpos=qpos)
-        com = com_pos(xp, model, kinematics(xp, model, qpos))
-        return smooth.mass_matrix(xp, model, com["cinert"], com["cdof"])
+
+        def mass(qpos):
+            com = com_pos(xp, model, kinematics(xp, model, qpos))
+            return smooth.mass_matrix(xp, model, com["cinert"], com["cdof"])
+
+        return fw.compiled(xp, model, "mass matrix", mass)(qpos)
 
     def bias_forces(self, qpos: Array, qvel: Array, *, f: Framework = None) -> Array:
         """Coriolis, centrifugal and gravity forces (MuJoCo's ``qfrc_bias``).
@@ -511,7 +530,11 @@ class KinematicTree:
         xp = ivy.get_framework(qpos, qvel, f=f)
         model = self._dynamics()
         qpos, qvel, ctrl = self._check(xp, qpos=qpos, qvel=qvel, ctrl=ctrl)
-        return smooth.actuation(xp, model, qpos, qvel, ctrl)[1]
+
+        def actuation(qpos, qvel, ctrl):
+            return smooth.actuation(xp, model, qpos, qvel, ctrl)[1]
+
+        return fw.compiled(xp, model, "actuation", actuation)(qpos, qvel, ctrl)
 
     def inverse_dynamics(
         self, qpos: Array, qvel: Array, qacc: Array, *, f: Framework = None
@@ -660,10 +683,14 @@ class KinematicTree:
         """
         xp = ivy.get_framework(qpos, f=f)
         self._check_qpos(xp, qpos)
-        contacts = fw.collide(xp, self.physics, kinematics(xp, self.physics, qpos))
-        if contacts is None:
-            return qpos[..., 0] > np.inf
-        return xp.any(contacts.active, axis=-1)
+
+        def touching(qpos):
+            contacts = fw.collide(xp, self.physics, kinematics(xp, self.physics, qpos))
+            if contacts is None:
+                return qpos[..., 0] > np.inf
+            return xp.any(contacts.active, axis=-1)
+
+        return fw.compiled(xp, self.physics, "contacts", touching)(qpos)
 
     def constraint_free(self, qpos: Array, *, f: Framework = None) -> Array:
         """Whether a state has no active constraint (no contact, no joint at a limit, no friction
@@ -702,14 +729,18 @@ class KinematicTree:
         xp = ivy.get_framework(qpos, qvel, f=f)
         model = self._dynamics()
         qpos, qvel = self._check(xp, qpos=qpos, qvel=qvel)
-        kin = kinematics(xp, model, qpos)
-        com = com_pos(xp, model, kin)
-        cvel, cdof_dot = smooth.velocities(xp, model, com["cdof"], qvel)
-        passive = smooth.passive_forces(xp, model, qpos, qvel, kin, cvel, com["origin"],
-                                        com["cdof"])  # fmt: skip
-        bias = smooth.bias_forces(xp, model, com["cinert"], cvel, com["cdof"], cdof_dot, qvel)
-        mass = smooth.mass_matrix(xp, model, com["cinert"], com["cdof"]) if with_mass else None
-        return Data(qpos=qpos, qvel=qvel, qfrc_bias=bias, qfrc_passive=passive, qM=mass)
+
+        def forces(qpos, qvel):
+            kin = kinematics(xp, model, qpos)
+            com = com_pos(xp, model, kin)
+            cvel, cdof_dot = smooth.velocities(xp, model, com["cdof"], qvel)
+            passive = smooth.passive_forces(xp, model, qpos, qvel, kin, cvel, com["origin"],
+                                            com["cdof"])  # fmt: skip
+            bias = smooth.bias_forces(xp, model, com["cinert"], cvel, com["cdof"], cdof_dot, qvel)
+            mass = smooth.mass_matrix(xp, model, com["cinert"], com["cdof"]) if with_mass else None
+            return Data(qpos=qpos, qvel=qvel, qfrc_bias=bias, qfrc_passive=passive, qM=mass)
+
+        return fw.compiled(xp, model, ("smooth", with_mass), forces)(qpos, qvel)
 
     def _check_qpos(self, xp, qpos) -> None:
         shape = tuple(qpos.shape)
@@ -788,10 +819,6 @@ def _homogeneous(xp, rot, pos):
     top = xp.concat([rot, pos[..., None]], axis=-1)
     bottom = xp.concat([bottom, xp.ones_like(bottom[..., 0:1])], axis=-1)
     return xp.concat([top, bottom], axis=-2)
-
-
-def _index(xp, values, like):
-    return xp.asarray(np.asarray(values, dtype=np.int64), device=xp.dev(like))
 
 
 def _to_backend(xp, value, like):

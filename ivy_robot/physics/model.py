@@ -19,7 +19,7 @@ What MuJoCo's ``mj_forward`` would compute and the pipeline does not model is li
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -164,6 +164,9 @@ class Model:
     smooth: Any = None  # ivy_robot.physics.smooth.Plan
     rows: Any = None  # ivy_robot.physics.constraints.Layout
     fwd: Any = None  # ivy_robot.physics.pipeline.Plan
+    #: compiled kernels, made on first use where the backend's eager mode compiles op by op
+    #: (:func:`ivy_robot.physics.pipeline.compiled`)
+    compiled: dict = field(default_factory=dict, repr=False)
 
     def check_dynamics(self) -> None:
         """Raise ``NotImplementedError`` naming what the model uses and the dynamics do not
@@ -488,4 +491,11 @@ def _unsupported(m, mujoco, disabled, enabled, contacts) -> tuple:
         out.append("adhesive geoms")
     if isinstance(contacts, NotImplementedError):
         out.append(str(contacts))
+    elif contacts is not None and contacts.ncon:
+        dims = sorted({int(d) for d in np.asarray(contacts.condim)} - {1, 3})
+        if dims:
+            out.append(
+                f"contacts with condim {dims} (torsional or rolling friction; give the geoms "
+                "condim 1 or 3)"
+            )
     return tuple(out)

@@ -248,6 +248,22 @@ def fwd_constraint(xp, model: Model, data: Data) -> Data:
     )
 
 
+def compiled(xp, model: Model, key, fn):
+    """``fn`` itself, or, on a backend whose eager mode compiles every operation on first use
+    (``xp.capabilities.eager_compiles_ops``: jax), ``ivy.compile_fn(fn)`` made once per
+    ``key`` and kept with the model: a first eager call of the pipeline then compiles one
+    program (seconds) instead of each of its operations (a minute), and its solver's loop is
+    not compiled again at every call. Inside a user's compiled function the inner compiled
+    function is inlined (jax's nested ``jit``)."""
+    capabilities = getattr(xp, "capabilities", None)
+    if not getattr(capabilities, "eager_compiles_ops", False):
+        return fn
+    full_key = (key, xp.__name__)
+    if full_key not in model.compiled:
+        model.compiled[full_key] = xp.compile_fn(fn)
+    return model.compiled[full_key]
+
+
 def forward(xp, model: Model, data: Data) -> Data:
     """MuJoCo's ``mj_forward``: every stage, in order (see the module docstring).
 
@@ -260,6 +276,10 @@ def forward(xp, model: Model, data: Data) -> Data:
         The data with every field of the forward dynamics filled in.
     """
     model.check_dynamics()
+    return compiled(xp, model, "forward", lambda d: _forward(xp, model, d))(data)
+
+
+def _forward(xp, model: Model, data: Data) -> Data:
     data = fwd_position(xp, model, data)
     data = fwd_velocity(xp, model, data)
     data = fwd_actuation(xp, model, data)
@@ -398,8 +418,12 @@ def step(xp, model: Model, data: Data) -> Data:
         forward dynamics of the last evaluation, and ``cfrc_ext``.
     """
     model.check_dynamics()
+    return compiled(xp, model, "step", lambda d: _step(xp, model, d))(data)
+
+
+def _step(xp, model: Model, data: Data) -> Data:
     if model.integrator == "Euler":
-        data = forward(xp, model, data)
+        data = _forward(xp, model, data)
         qacc = _euler_acceleration(xp, model, data)
         qvel = data.qvel + model.timestep * qacc
         qpos = integrate_positions(xp, model, data.qpos, qvel, model.timestep)
@@ -431,7 +455,7 @@ def _runge_kutta(xp, model: Model, data: Data) -> Data:
         fraction, weight = x
         qpos = integrate_positions(xp, model, qpos0, fraction * velocity, h)
         qvel = qvel0 + (h * fraction) * acceleration
-        evaluated = forward(xp, model, data.replace(qpos=qpos, qvel=qvel))
+        evaluated = _forward(xp, model, data.replace(qpos=qpos, qvel=qvel))
         corrected = _munthe_kaas(xp, model, qvel, (h * fraction) * velocity)
         carry = (
             corrected,
