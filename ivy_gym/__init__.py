@@ -19,10 +19,14 @@ import sys
 
 from ivy_gym import (
     acrobot,
+    ant,
     cartpole,
+    humanoid,
     inverted_double_pendulum,
     inverted_pendulum,
+    locomotion,
     mountain_car,
+    mujoco_env,
     optimise,
     pendulum,
     reacher,
@@ -32,11 +36,15 @@ from ivy_gym import (
     swimmer,
 )
 from ivy_gym.acrobot import *  # noqa: F403
+from ivy_gym.ant import *  # noqa: F403
 from ivy_gym.base import Env
 from ivy_gym.cartpole import *  # noqa: F403
+from ivy_gym.humanoid import *  # noqa: F403
 from ivy_gym.inverted_double_pendulum import *  # noqa: F403
 from ivy_gym.inverted_pendulum import *  # noqa: F403
+from ivy_gym.locomotion import *  # noqa: F403
 from ivy_gym.mountain_car import *  # noqa: F403
+from ivy_gym.mujoco_env import *  # noqa: F403
 from ivy_gym.optimise import *  # noqa: F403
 from ivy_gym.pendulum import *  # noqa: F403
 from ivy_gym.reacher import *  # noqa: F403
@@ -67,6 +75,10 @@ __all__ = [
     *inverted_pendulum.__all__,
     *reacher_mujoco.__all__,
     *inverted_double_pendulum.__all__,
+    *mujoco_env.__all__,
+    *locomotion.__all__,
+    *ant.__all__,
+    *humanoid.__all__,
     *rollouts.__all__,
     *optimise.__all__,
     *rendering.__all__,

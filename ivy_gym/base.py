@@ -32,6 +32,12 @@ everything here is public and stable):
   follow the state's device and dtype; ``reward`` and ``terminated`` (bool) are ``(*B,)``.
 - ``kernel_initial(xp, state) -> state``: maps a draw from the reset box to an initial state
   (identity unless a task overrides it); :meth:`Env.reset` and the facades both apply it.
+- ``kernel_step_info(xp, state, action) -> (state, obs, reward, terminated, info)`` and
+  ``kernel_reset_info(xp, state) -> info``: Gymnasium's ``info`` of a step and of a reset as a
+  dict of arrays (empty by default); ``reward_type`` and ``info_types`` give the Python or
+  numpy types that Gymnasium's own task returns, which the facades convert to.
+- ``gymnasium_dtype``, ``gymnasium_action_dtype``: the facades' default dtypes (Gymnasium's
+  MuJoCo tasks: float64 observations, float32 actions).
 - ``action_box(xp, dtype=..., device=...) -> (low, high)``: the action space as arrays that
   every compiler traces as constants; ``squash(xp, logits)``: unbounded logits to actions in
   the box, ``mid + half_width * tanh(logits)``.
@@ -87,6 +93,16 @@ class Env:
     render_fps: ClassVar[int] = 30
     #: The core actions of a facade's discrete actions (None: CartPole's push left, right).
     discrete_actions: ClassVar[tuple[tuple[float, ...], ...] | None] = None
+    #: The Gymnasium facades' default dtype of the core and the observations, and of the
+    #: action space (None: the same).
+    gymnasium_dtype: ClassVar[str] = "float32"
+    gymnasium_action_dtype: ClassVar[str | None] = None
+    #: The type of the reward in the Gymnasium facades (Gymnasium's own task's type).
+    reward_type: ClassVar[Any] = float
+    #: The types of the values of ``info`` in the Gymnasium facades where they are not
+    #: ``np.float64`` (vectors: float64 arrays): ``float``, ``int``, ``np.float64``, or
+    #: ``"action"`` (a numpy scalar of the action's dtype).
+    info_types: ClassVar[dict[str, Any]] = {}
 
     def __init__(self, **params: Any) -> None:
         self.params = self.Params(**params)
@@ -276,6 +292,17 @@ class Env:
     def kernel_initial(self, xp, state: Array) -> Array:
         """The initial state from a draw of the reset box (identity; no checks)."""
         return state
+
+    def kernel_step_info(self, xp, state: Array, action: Array) -> tuple:
+        """One step with Gymnasium's ``info``: ``(state, observation, reward, terminated,
+        info)``, ``info`` a dict of arrays ``(*B,)`` or ``(*B, k)`` (empty unless the task has
+        one; no checks)."""
+        return (*self.kernel_step(xp, state, action), {})
+
+    def kernel_reset_info(self, xp, state: Array) -> dict:
+        """Gymnasium's ``info`` of a reset to ``state`` (a dict of arrays; empty unless the task
+        has one; no checks)."""
+        return {}
 
     # ------------------------------------------------------------------------------------------
     # The checked calls

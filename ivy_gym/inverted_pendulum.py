@@ -1,41 +1,27 @@
-"""InvertedPendulum: Gymnasium's InvertedPendulum-v5 on the kinematic tree of its own MJCF model.
+"""InvertedPendulum: Gymnasium's InvertedPendulum-v5 on ``ivy_robot.physics``.
 
-The dynamics are :class:`ivy_robot.KinematicTree`'s (``step``: MuJoCo's integrator as the model
-asks, RK4 with ``timestep = 0.02``), run ``frame_skip = 2`` times per environment step as
-Gymnasium does, with the action held as the motor's control (clamped to its control range by the
-actuator, as MuJoCo clamps ``ctrl``). Joint limits and contacts are out of the tree's scope: the
-cart's slider has range [-1, 1], and a state that reaches it (``tree.constraint_free`` is False)
-is where MuJoCo would add a limit force that these dynamics leave out. The pole's hinge range
-(+-90 degrees) lies far beyond the termination angle (0.2 rad), and the model's geoms do not
-collide.
+Gymnasium's ``inverted_pendulum.xml`` (a cart on a slider of range [-1, 1], a pole on a hinge of
+range +-90 degrees, RK4 with ``timestep = 0.02``) on :class:`ivy_gym.MuJoCoEnv`: ``frame_skip =
+2`` calls of ``mj_step`` per environment step, with the action held as the motor's control
+(clamped to its control range by the actuator, as MuJoCo clamps ``ctrl``). The slider's limit is
+MuJoCo's soft limit constraint (Newton's solver), so a cart driven into the end of its rail stops
+there as in Gymnasium; the model's geoms do not collide.
 """
 
 from __future__ import annotations
 
-import functools
 from dataclasses import dataclass
 
 import numpy as np
 
-from ivy_gym.base import Env, cast_like
+from ivy_gym.mujoco_env import MuJoCoEnv, gymnasium_asset, mujoco_tree
 
 __all__ = ["InvertedPendulum", "InvertedPendulumParams", "inverted_pendulum_tree"]
 
-
-def _gymnasium_asset(name: str) -> str:
-    import importlib.util
-    import os
-
-    spec = importlib.util.find_spec("gymnasium")
-    if spec is None or spec.origin is None:
-        raise ImportError(
-            f"ivy_gym's MuJoCo tasks read Gymnasium's model {name!r}: install gymnasium "
-            "(pip install 'ivy[gym]')."
-        )
-    return os.path.join(os.path.dirname(spec.origin), "envs", "mujoco", "assets", name)
+#: The earlier name of :func:`ivy_gym.gymnasium_asset`.
+_gymnasium_asset = gymnasium_asset
 
 
-@functools.cache
 def inverted_pendulum_tree():
     """The :class:`ivy_robot.KinematicTree` of Gymnasium's ``inverted_pendulum.xml``, parsed
     once (through MuJoCo).
@@ -45,29 +31,28 @@ def inverted_pendulum_tree():
         >>> tree.nq, tree.nv, tree.nu
         (2, 2, 1)
     """
-    from ivy_robot import KinematicTree
-
-    return KinematicTree.from_mjcf(_gymnasium_asset("inverted_pendulum.xml"))
+    return mujoco_tree("inverted_pendulum.xml")
 
 
 @dataclass(frozen=True)
 class InvertedPendulumParams:
     """Gymnasium's InvertedPendulum-v5 arguments."""
 
+    xml_file: str = "inverted_pendulum.xml"
     frame_skip: int = 2
     reset_noise_scale: float = 0.01
 
 
-class InvertedPendulum(Env):
+class InvertedPendulum(MuJoCoEnv):
     """Gymnasium's InvertedPendulum-v5, step for step: balance a pole on a cart.
 
     State ``[slider, hinge, slider_vel, hinge_vel]`` (MuJoCo's ``qpos`` then ``qvel``), which is
     also the observation. The action (the motor's control, in [-3, 3]) is held for
-    ``frame_skip`` steps of the model's integrator. Reward 1 while not terminated; terminated
-    when the state is not finite or ``|hinge| > 0.2``. Initial state: the model's ``qpos0``
-    and zero velocity plus noise uniform in ``[-reset_noise_scale, reset_noise_scale]``.
-    Time limit (registered task): 1000 steps. Faithful while ``tree.constraint_free`` holds
-    (the cart within its slider's range), see the module's docstring.
+    ``frame_skip`` steps of the model's integrator. Reward 1 while not terminated (an ``int``
+    in the Gymnasium facades, as Gymnasium's); terminated when the state is not finite or
+    ``|hinge| > 0.2``. Info: ``reward_survive``, the reward. Initial state: the model's
+    ``qpos0`` and zero velocity plus noise uniform in ``[-reset_noise_scale,
+    reset_noise_scale]``. Time limit (registered task): 1000 steps.
 
     Args:
         **params: fields of :class:`InvertedPendulumParams`.
@@ -79,46 +64,29 @@ class InvertedPendulum(Env):
     """
 
     Params = InvertedPendulumParams
-    state_names = ("slider", "hinge", "slider_vel", "hinge_vel")
-    observation_names = state_names
     can_terminate = True
     max_episode_steps = 1000
-    render_fps = 25
+    reward_type = int
+    info_types = {"reward_survive": int}
+    view_width = 3.0
 
-    def __init__(self, **params) -> None:
-        self.tree = inverted_pendulum_tree()
-        super().__init__(**params)
-        if int(self.params.frame_skip) < 1:
-            raise ValueError(
-                f"InvertedPendulum: frame_skip must be an integer >= 1, got "
-                f"{self.params.frame_skip!r}."
-            )
+    def _observation_names(self):
+        return ("slider", "hinge", "slider_vel", "hinge_vel")
 
-    def reset_bounds(self):
-        tree, noise = self.tree, float(self.params.reset_noise_scale)
-        qpos0 = np.asarray(tree.qpos0, dtype=np.float64).reshape(tree.nq)
-        centre = np.concatenate([qpos0, np.zeros(tree.nv)])
-        return centre - noise, centre + noise
+    @property
+    def state_names(self):  # type: ignore[override]
+        return ("slider", "hinge", "slider_vel", "hinge_vel")
 
-    def action_bounds(self):
-        return np.array([-3.0]), np.array([3.0])
+    def observation(self, xp, data):
+        return xp.concat([data.qpos, data.qvel], axis=-1)
 
-    def kernel_observe(self, xp, state):
-        return state
-
-    def kernel_step(self, xp, state, action):
-        tree = self.tree
-        nq = tree.nq
-        qpos, qvel = state[..., :nq], state[..., nq:]
-        ctrl = cast_like(xp, action, state)
-        for _ in range(int(self.params.frame_skip)):
-            qpos, qvel = tree.step(qpos, qvel, ctrl, f=xp)
-        state = xp.concat([qpos, qvel], axis=-1)
-        finite = xp.all(xp.isfinite(state), axis=-1)
-        upright = xp.abs(qpos[..., 1]) <= 0.2
+    def reward(self, xp, t):
+        obs = self.observation(xp, t.data)
+        finite = xp.all(xp.isfinite(obs), axis=-1)
+        upright = xp.abs(obs[..., 1]) <= 0.2
         terminated = xp.logical_not(xp.logical_and(finite, upright))
-        reward = cast_like(xp, xp.logical_not(terminated), state)
-        return state, state, reward, terminated
+        reward = xp.astype(xp.logical_not(terminated), obs.dtype)
+        return reward, terminated, {"reward_survive": reward}
 
     def _view(self, s):
         return (-1.5, 1.5, -0.6, 1.2)

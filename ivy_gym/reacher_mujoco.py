@@ -1,42 +1,33 @@
-"""ReacherMuJoCo: Gymnasium's Reacher-v5 on the kinematic tree of its own MJCF model.
+"""ReacherMuJoCo: Gymnasium's Reacher-v5 on ``ivy_robot.physics``.
 
-Gymnasium's ``reacher.xml`` is a two-link planar arm (hinges ``joint0``, ``joint1``, each with
-armature 1 and damping 1, driven by motors of gear 200 whose controls are clamped to [-1, 1]) and
-a target body on two slide joints (``target_x``, ``target_y``: no armature, damping or stiffness,
-so a target at rest stays where the reset put it). The model asks for MuJoCo's RK4 integrator
-with ``timestep = 0.01``; Gymnasium runs ``frame_skip = 2`` of them per environment step.
+Gymnasium's ``reacher.xml`` is a two-link planar arm (hinges ``joint0``, unlimited, and
+``joint1``, the elbow, limited to [-3, 3] rad; each with armature 1 and damping 1, driven by
+motors of gear 200 whose controls are clamped to [-1, 1]) and a target body on two slide joints
+(``target_x``, ``target_y``, limited to [-0.27, 0.27]; no armature, damping or stiffness, so a
+target at rest stays where the reset put it). The model asks for MuJoCo's RK4 integrator with
+``timestep = 0.01``; Gymnasium runs ``frame_skip = 2`` of them per environment step, and so does
+:class:`ivy_gym.MuJoCoEnv`. The elbow's limit is MuJoCo's soft limit constraint (Newton's
+solver): an arm driven into it stops there as in Gymnasium. The model's geoms do not collide
+(``contype`` 0 throughout).
 
-The dynamics are :class:`ivy_robot.KinematicTree`'s (``forward_dynamics``), integrated with
-MuJoCo's four-stage Runge-Kutta here rather than with ``tree.step``, because Gymnasium's
-observation and reward read more than the new state: after ``mj_step`` with RK4, MuJoCo's body
-positions (``data.xpos``, Gymnasium's ``get_body_com``) are those its last stage computed, at
-``qpos + timestep * v3`` (``v3`` the third stage's velocity), not at the new ``qpos``. Gymnasium's
-``fingertip - target`` (in the observation and in the distance cost, both after the step) is
-that stale vector, and so is this core's; :meth:`ReacherMuJoCo.observe` of a state computes it
-at the state itself (as Gymnasium's reset does, after ``mj_forward``).
-
-Scope: the elbow ``joint1`` has the range [-3, 3] rad. While it stays inside
-(``tree.constraint_free``), the dynamics here equal MuJoCo's; at the range MuJoCo adds a limit
-force that these dynamics leave out, and the arm goes on past it. Random actions reach the range
-in 7 of 12 of Gymnasium's 50-step episodes (seeds 0 to 11, at steps 16 to 41). Reaching a
-target needs it only within 0.018 of the shoulder (links 0.1 and 0.11 long: the fingertip is
-farther from the shoulder while the elbow bends less than 3 rad), 0.8% of the goal's disc;
-a policy that swings the arm may still get there. The model's geoms do not collide (``contype``
-0 throughout).
+Gymnasium's observation and reward read more than the new state: after ``mj_step`` with RK4,
+MuJoCo's body positions (``data.xpos``, Gymnasium's ``get_body_com``) are those its last stage
+computed, at ``qpos + timestep * v3`` (``v3`` the third stage's velocity), not at the new
+``qpos``. Gymnasium's ``fingertip - target`` (in the observation and in the distance cost, both
+after the step) is that stale vector, and so is this core's; :meth:`ReacherMuJoCo.observe` of a
+state computes it at the state itself (as Gymnasium's reset does, after ``mj_forward``).
 """
 
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
 import ivy
-from ivy_gym.base import Env, _is_number, _shape
-from ivy_gym.inverted_double_pendulum import rk4_step_with_last_stage
-from ivy_gym.inverted_pendulum import _gymnasium_asset
+from ivy_gym.base import _shape
+from ivy_gym.mujoco_env import MuJoCoEnv, control_cost, mujoco_tree
 
 __all__ = ["ReacherMuJoCo", "ReacherMuJoCoParams", "reacher_tree"]
 
@@ -44,7 +35,6 @@ __all__ = ["ReacherMuJoCo", "ReacherMuJoCoParams", "reacher_tree"]
 _FINGERTIP, _TARGET = "fingertip", "target"
 
 
-@functools.cache
 def reacher_tree():
     """The :class:`ivy_robot.KinematicTree` of Gymnasium's ``reacher.xml``, parsed once
     (through MuJoCo).
@@ -54,9 +44,7 @@ def reacher_tree():
         >>> tree.nq, tree.nv, tree.nu, tree.integrator
         (4, 4, 2, 'RK4')
     """
-    from ivy_robot import KinematicTree
-
-    return KinematicTree.from_mjcf(_gymnasium_asset("reacher.xml"))
+    return mujoco_tree("reacher.xml")
 
 
 @dataclass(frozen=True)
@@ -65,6 +53,7 @@ class ReacherMuJoCoParams:
     its code, where the control weight is 1 although its docstring says 0.1), and the constants
     its reset hard-codes (noise half-widths, the goal's disc radius)."""
 
+    xml_file: str = "reacher.xml"
     frame_skip: int = 2
     reward_dist_weight: float = 1.0
     reward_control_weight: float = 1.0
@@ -73,7 +62,7 @@ class ReacherMuJoCoParams:
     velocity_noise_scale: float = 0.005  # arm velocities: U(-0.005, 0.005); the target's: 0
 
 
-class ReacherMuJoCo(Env):
+class ReacherMuJoCo(MuJoCoEnv):
     """Gymnasium's Reacher-v5, step for step: a two-link arm reaches a target.
 
     State ``[joint0, joint1, target_x, target_y, joint0_vel, joint1_vel, target_x_vel,
@@ -92,8 +81,8 @@ class ReacherMuJoCo(Env):
     uniform in the disc of radius 0.2 (Gymnasium draws it by rejection from the square, which the
     Gymnasium facades repeat draw for draw; :meth:`reset` maps uniform draws onto the disc, the
     same distribution), arm velocities ``U(-0.005, 0.005)``, the target's 0.
-    :meth:`reset_bounds` is the bounding box of that set. Faithful while the elbow stays in its
-    range (``self.tree.constraint_free(qpos)``; see the module's docstring).
+    :meth:`reset_bounds` is the bounding box of that set. Info (Gymnasium's): ``reward_dist,
+    reward_ctrl``.
 
     Args:
         **params: fields of :class:`ReacherMuJoCoParams`.
@@ -105,44 +94,33 @@ class ReacherMuJoCo(Env):
     """
 
     Params = ReacherMuJoCoParams
-    state_names = (
-        "joint0",
-        "joint1",
-        "target_x",
-        "target_y",
-        "joint0_vel",
-        "joint1_vel",
-        "target_x_vel",
-        "target_y_vel",
-    )
-    observation_names = (
-        "cos_joint0",
-        "cos_joint1",
-        "sin_joint0",
-        "sin_joint1",
-        "target_x",
-        "target_y",
-        "joint0_vel",
-        "joint1_vel",
-        "fingertip_minus_target_x",
-        "fingertip_minus_target_y",
-    )
     max_episode_steps = 50
-    render_fps = 50
+    data_fields = ("xpos",)
+    reset_stage = "kinematics"
+    info_types = {"reward_ctrl": "action"}
 
     def __init__(self, **params) -> None:
-        self.tree = tree = reacher_tree()
+        super().__init__(**params)
+        tree = self.tree
         if tree.integrator != "RK4" or set(tree.joint_types) - {"hinge", "slide"}:
             raise ValueError(
                 "ReacherMuJoCo: the model must integrate with RK4 and have only hinge and slide "
                 f"joints (Gymnasium's reacher.xml); got {tree.integrator}, {tree.joint_types}."
             )
-        super().__init__(**params)
-        if int(self.params.frame_skip) < 1:
-            raise ValueError(
-                f"ReacherMuJoCo: frame_skip must be an integer >= 1, got "
-                f"{self.params.frame_skip!r}."
-            )
+
+    def _observation_names(self):
+        return (
+            "cos_joint0",
+            "cos_joint1",
+            "sin_joint0",
+            "sin_joint1",
+            "target_x",
+            "target_y",
+            "joint0_vel",
+            "joint1_vel",
+            "fingertip_minus_target_x",
+            "fingertip_minus_target_y",
+        )
 
     # ------------------------------------------------------------------------------------------
     # Boxes and resets
@@ -157,12 +135,6 @@ class ReacherMuJoCo(Env):
             dtype=np.float64,
         )
         return centre - half, centre + half
-
-    def action_bounds(self):
-        ranges = np.array(self.tree.physics.actuator_ctrlrange, dtype=np.float64)
-        if not np.isfinite(ranges).all():
-            raise ValueError("ReacherMuJoCo: every motor of the model needs a ctrlrange.")
-        return ranges[:, 0], ranges[:, 1]
 
     def _reset_scales(self):
         """``(centre, half)`` of the initial box: qpos then qvel (see :meth:`narrowed`)."""
@@ -220,40 +192,27 @@ class ReacherMuJoCo(Env):
     # Kernels
     # ------------------------------------------------------------------------------------------
 
-    def _fingertip_minus_target(self, xp, qpos):
-        """``fingertip - target`` in the world (3 components), from the tree's kinematics."""
-        points = self.tree.transform_points(qpos, (_FINGERTIP, _TARGET), np.zeros((2, 3)), f=xp)
-        return points[..., 0, :] - points[..., 1, :]
+    def _fingertip_minus_target(self, xp, data):
+        """``fingertip - target`` in the world (3 components) from the data's body positions."""
+        fingertip, target = (self.tree.body_id(b) for b in (_FINGERTIP, _TARGET))
+        return data.xpos[..., fingertip, :] - data.xpos[..., target, :]
 
-    def _observation(self, xp, qpos, qvel, vec):
+    def observation(self, xp, data):
+        qpos, vec = data.qpos, self._fingertip_minus_target(xp, data)
         angles = qpos[..., :2]
         return xp.concat(
-            [xp.cos(angles), xp.sin(angles), qpos[..., 2:], qvel[..., :2], vec[..., :2]], axis=-1
+            [xp.cos(angles), xp.sin(angles), qpos[..., 2:], data.qvel[..., :2], vec[..., :2]],
+            axis=-1,
         )
 
-    def kernel_observe(self, xp, state):
-        nq = self.tree.nq
-        qpos, qvel = state[..., :nq], state[..., nq:]
-        return self._observation(xp, qpos, qvel, self._fingertip_minus_target(xp, qpos))
-
-    def kernel_step(self, xp, state, action):
-        p, nq = self.params, self.tree.nq
-        batch = np.broadcast_shapes(tuple(state.shape[:-1]), tuple(action.shape[:-1]))
-        if tuple(state.shape[:-1]) != batch:  # the loops' carries keep one shape
-            state = xp.broadcast_to(state, (*batch, self.state_dim))
-        qpos, qvel = state[..., :nq], state[..., nq:]
-
-        def frame(carry, _):
-            return rk4_step_with_last_stage(xp, self.tree, carry[0], carry[1], action), None
-
-        (qpos, qvel, stale), _ = xp.scan(frame, (qpos, qvel, qpos), None, length=int(p.frame_skip))
-        vec = self._fingertip_minus_target(xp, stale)
-        obs = self._observation(xp, qpos, qvel, vec)
+    def reward(self, xp, t):
+        p = self.params
+        vec = self._fingertip_minus_target(xp, t.data)
         # Gymnasium: -|vec| * w_dist + (-sum(action^2) * w_control)
-        dist = xp.safe_norm(vec, axis=-1) * p.reward_dist_weight
-        reward = -dist - _control_cost(xp, action, p.reward_control_weight, dist)
-        state = xp.concat([qpos, qvel], axis=-1)
-        return state, obs, reward, xp.zeros_like(reward) > 1.0
+        dist = -xp.safe_norm(vec, axis=-1) * p.reward_dist_weight
+        ctrl = -control_cost(xp, t.action, p.reward_control_weight, dist)
+        info = {"reward_dist": dist, "reward_ctrl": ctrl}
+        return dist + ctrl, dist > np.inf, info
 
     # ------------------------------------------------------------------------------------------
     # Rendering
@@ -273,36 +232,3 @@ class ReacherMuJoCo(Env):
         canvas.line(xy["body1"], xy[_FINGERTIP], 0.02, (0, 102, 153))
         canvas.disc(xy[_FINGERTIP], 0.01, (0, 204, 153))
         canvas.disc(xy["body0"], 0.011, (230, 102, 153))
-
-
-def _control_cost(xp, action, weight, like):
-    """``sum(action^2) * weight`` as Gymnasium computes it, in the action's dtype, then in
-    ``like``'s dtype.
-
-    A float32 action with a float64 ``like`` (Gymnasium's samples on a float64 core) rounds to
-    float32 after each operation, as numpy does: the squares, sums and products of float32
-    numbers are computed exactly in float64 and then rounded to float32 by arithmetic
-    (:func:`_round32`), not by casts, which XLA's CPU compiler drops (it then computes
-    ``a0 * a0 + a1 * a1`` unrounded, one float32 unit, 1.5e-8, away from Gymnasium's)."""
-    if action.dtype == xp.float32 and like.dtype == xp.float64:
-        wide = xp.astype(action, "float64")
-        squares = _round32(wide * wide)
-        total = squares[..., 0]
-        for i in range(1, squares.shape[-1]):
-            total = _round32(total + squares[..., i])
-        if _is_number(weight):
-            return _round32(total * float(np.float32(weight)))
-        return _round32(total * _round32(xp.astype(weight, "float64")))
-    cost = xp.sum(action * action, axis=-1) * weight
-    return cost if cost.dtype == like.dtype else xp.astype(cost, like.dtype)
-
-
-_SPLITTER = 2.0**29 + 1.0  # Veltkamp's constant: 53 - 29 = 24 significant bits remain
-
-
-def _round32(x):
-    """A float64 ``x`` rounded to float32's 24 significant bits (to nearest), as float64, by
-    Veltkamp's splitting ``c - (c - x)``, ``c = x (2^29 + 1)``: exact arithmetic that compilers
-    keep, with gradient 1 (the cast's straight-through). Valid for ``|x| < 1e300``."""
-    c = x * _SPLITTER
-    return c - (c - x)

@@ -8,10 +8,18 @@ The core owns the physics, run on any backend:
     envs = gymnasium.make_vec("ivy_gym/CartPole-v1", num_envs=1024,
                               vectorization_mode="vector_entry_point", framework="jax")
 
-Observations are numpy arrays of the chosen dtype; ``env.unwrapped.state`` reads and writes
-the state as a float64 numpy array in the core's layout (Gymnasium's, for the faithful tasks).
-Actions are checked against the action space; float32 and float64 actions keep their dtype (the
-faithful tasks compute with them as Gymnasium does). ``device=`` places the core's arrays.
+Observations are numpy arrays of the chosen dtype (by default the core's
+``gymnasium_dtype``: float64 for the MuJoCo tasks, as Gymnasium's, float32 otherwise; the
+action space's dtype is the core's ``gymnasium_action_dtype``: float32 for the MuJoCo tasks);
+``env.unwrapped.state`` reads and writes the state as a float64 numpy array in the core's layout
+(Gymnasium's, for the faithful tasks). Actions are checked against the action space; float32 and
+float64 actions keep their dtype (the faithful tasks compute with them as Gymnasium does).
+Rewards and ``info`` (the core's ``kernel_step_info``) have the types Gymnasium's own task
+returns (the core's ``reward_type`` and ``info_types``); the vector facade stacks ``info`` as
+Gymnasium's vector environments do (``info[key]`` an array, ``info["_" + key]`` its mask).
+``set_state(qpos, qvel)`` is Gymnasium's ``MujocoEnv.set_state`` for the MuJoCo tasks.
+``device=`` places the core's arrays; ``compile=`` runs the step (and the reset's kernels)
+through ``ivy.compile_fn``.
 """
 
 from __future__ import annotations
@@ -35,6 +43,23 @@ _FLOATS = ("float32", "float64")
 _KEPT_ACTION_DTYPES = (np.dtype("float32"), np.dtype("float64"))
 
 
+def _default_dtype(core: Env, xp) -> str:
+    """The core's ``gymnasium_dtype``, or float32 (with a warning) where the backend cannot
+    hold float64 now (jax without x64)."""
+    name = core.gymnasium_dtype
+    if name == "float64":
+        try:
+            xp.float64  # noqa: B018  (jax without x64 raises)
+        except Exception:  # ivy's UnavailableDtypeError
+            gymnasium.logger.warn(
+                f"ivy_gym: {type(core).__name__}'s observations are float64 in Gymnasium, but "
+                f"{xp.backend} cannot hold float64 now (for jax: jax.config.update("
+                "'jax_enable_x64', True)); using float32."
+            )
+            return "float32"
+    return name
+
+
 def _dtype_name(dtype: Dtype) -> str:
     try:
         name = np.dtype(dtype).name  # names, numpy and jax dtypes
@@ -53,7 +78,13 @@ class _Facade:
     """What the single and the vector facades share: the core, its backend and the spaces."""
 
     def _setup(
-        self, core: Env, framework: Framework, dtype: Dtype, discrete: bool, device: str | None
+        self,
+        core: Env,
+        framework: Framework,
+        dtype: Dtype | None,
+        discrete: bool,
+        device: str | None,
+        compile: bool | None,
     ) -> None:
         if not isinstance(core, Env):
             raise TypeError(f"ivy_gym facade: expected an ivy_gym.Env, got {type(core)!r}.")
@@ -63,7 +94,8 @@ class _Facade:
         self.device = device
         self._to_numpy = self.xp.to_numpy  # the backend's own: no dispatch at every step
         self.framework = self.xp.backend
-        self.dtype = _dtype_name(dtype)
+        self.dtype = _dtype_name(_default_dtype(core, self.xp) if dtype is None else dtype)
+        self.action_dtype = _dtype_name(core.gymnasium_action_dtype or self.dtype)
         self.discrete = bool(discrete)
         low, high = core.action_bounds()
         if self.discrete:
@@ -80,20 +112,105 @@ class _Facade:
             self._discrete_actions = np.array(table, self.dtype)
             self._single_action_space = spaces.Discrete(len(table))
         else:
-            self._single_action_space = _box(low, high, self.dtype)
+            self._single_action_space = _box(low, high, self.action_dtype)
         self._single_observation_space = _box(*core.observation_bounds(), self.dtype)
-        self._action_low, self._action_high = low.astype(self.dtype), high.astype(self.dtype)
-        # The step, resolved once: the core's kernel on the facade's namespace (the facade
-        # checks and converts the actions, so ``Env.step``'s look-up of the backend and its
-        # checks are not needed at every step).
-        self._step = functools.partial(core.kernel_step, self.xp)
+        self._action_low = low.astype(self.action_dtype)
+        self._action_high = high.astype(self.action_dtype)
+        # The step and the reset's kernels, resolved once: the core's kernels on the facade's
+        # namespace (the facade checks and converts the actions, so ``Env.step``'s look-up of
+        # the backend and its checks are not needed at every step).
+        if compile is None:
+            # compilers that keep loops (jax, tensorflow) also start in about a second;
+            # torch.compile takes ~20 s, more than most runs of an environment gain
+            caps = self.xp.capabilities
+            compile = caps.compilation and caps.compiled_loops
+        self.compiled = bool(compile)
+        self._step = functools.partial(core.kernel_step_info, self.xp)
+        self._fresh = functools.partial(_fresh, core, self.xp)
+        if self.compiled:
+            self._step = ivy.compile_fn(self._step, f=self.xp)
+            self._fresh = ivy.compile_fn(self._fresh, f=self.xp)
 
     def _to_backend(self, states: np.ndarray):
+        """Draws of the reset box as initial states: ``(state, observation, reset info)``."""
         x = self.xp.asarray(np.asarray(states, np.float64), dtype=self.dtype, device=self.device)
-        return self.core.kernel_initial(self.xp, x)
+        return self._fresh(x)
 
     def _numpy(self, x) -> np.ndarray:
         return np.asarray(self._to_numpy(x), dtype=self.dtype)
+
+    def _reward(self, value) -> Any:
+        """A reward as the type of Gymnasium's own task."""
+        return self.core.reward_type(value)
+
+    def _info(self, info: dict, action_dtype) -> dict:
+        """The core's info arrays (of one environment) as Gymnasium's own task's values."""
+        types = self.core.info_types
+        out = {}
+        for key, value in info.items():
+            value = np.asarray(self._to_numpy(value))
+            if value.ndim:
+                out[key] = np.array(value, dtype=np.float64)
+                continue
+            kind = types.get(key, np.float64)
+            out[key] = np.dtype(action_dtype).type(value) if kind == "action" else kind(value)
+        return out
+
+    def _vector_info(self, info: dict, action_dtype, masks=None) -> dict:
+        """The core's info arrays (``(num_envs, ...)``) as Gymnasium's vector environments
+        stack the ``info`` of their environments: each value's array in the dtype of the
+        single environment's value, and its mask under ``"_" + key`` (``masks[key]``; all True
+        by default)."""
+        types = self.core.info_types
+        out = {}
+        for key, value in info.items():
+            value = np.asarray(self._to_numpy(value))
+            kind = types.get(key, np.float64)
+            if value.ndim > 1:
+                dtype = np.float64
+            elif kind == "action":
+                dtype = np.dtype(action_dtype)
+            else:
+                dtype = np.dtype(kind)  # float -> float64, int -> int64
+            out[key] = np.array(value, dtype=dtype)
+            mask = None if masks is None else masks.get(key)
+            out["_" + key] = np.ones(len(value), bool) if mask is None else mask
+        return out
+
+    def set_state(self, qpos, qvel) -> None:
+        """Gymnasium's ``MujocoEnv.set_state``: set ``qpos`` and ``qvel`` (of every copy, for
+        the vector facade: ``(num_envs, nq)``); what MuJoCo keeps (the solver's warm start)
+        is kept, what ``mj_forward`` recomputes (the tracked position) is recomputed."""
+        setter = getattr(self.core, "kernel_set_state", None)
+        if setter is None:
+            raise TypeError(f"{self._name}: set_state is for the MuJoCo tasks; set .state instead.")
+        if self._state is None:
+            raise RuntimeError(f"{self._name}: call reset() before set_state().")
+        batch = tuple(self._state.shape[:-1])
+        nq, nv = self.core.model.nq, self.core.model.nv
+        qpos, qvel = np.asarray(qpos, np.float64), np.asarray(qvel, np.float64)
+        if qpos.shape != (*batch, nq) or qvel.shape != (*batch, nv):
+            raise ValueError(
+                f"{self._name}: set_state expects qpos {(*batch, nq)} and qvel {(*batch, nv)}, "
+                f"got {qpos.shape} and {qvel.shape}."
+            )
+
+        def backend(x):
+            return self.xp.asarray(x, dtype=self.dtype, device=self.device)
+
+        self._state = setter(self.xp, self._state, backend(qpos), backend(qvel))
+
+    def state_vector(self) -> np.ndarray:
+        """``[qpos, qvel]`` (Gymnasium's ``MujocoEnv.state_vector``) of the MuJoCo tasks."""
+        if self._state is None:
+            raise RuntimeError(f"{self._name}: call reset() before state_vector().")
+        nq, nv = self.core.model.nq, self.core.model.nv
+        return np.asarray(ivy.to_numpy(self._state), np.float64)[..., : nq + nv]
+
+    @property
+    def dt(self) -> float:
+        """Seconds per step (the MuJoCo tasks': ``timestep * frame_skip``)."""
+        return self.core.dt
 
     def _checked_actions(self, action, batch: tuple[int, ...]):
         """The action(s) as core actions ``(*batch, action_dim)`` of the backend and the
@@ -142,18 +259,27 @@ class _Facade:
         return f"ivy_gym {type(self.core).__name__} ({self.framework})"
 
 
+def _fresh(core: Env, xp, draws) -> tuple:
+    """Initial states from draws of the reset box, their observations and reset infos."""
+    state = core.kernel_initial(xp, draws)
+    return state, core.kernel_observe(xp, state), core.kernel_reset_info(xp, state)
+
+
 class GymnasiumEnv(_Facade, gymnasium.Env):
     """A Gymnasium ``Env`` over one state of an ivy_gym core, on any backend.
 
     Args:
         core: the environment's core (an :class:`ivy_gym.Env`).
         framework: the backend that runs the physics.
-        dtype: ``'float32'`` or ``'float64'``: the core's dtype and the observations'.
+        dtype: ``'float32'`` or ``'float64'``: the core's dtype and the observations' (None:
+            the core's ``gymnasium_dtype``, Gymnasium's: float64 for the MuJoCo tasks).
         render_mode: None or ``'rgb_array'``.
         discrete: Gymnasium's discrete actions instead of the core's continuous one: indices
             into the core's ``discrete_actions`` table (MountainCar's and Acrobot's {0, 1, 2}),
             else CartPole's {0, 1} (push left/right).
         device: where the core's arrays live (``'gpu:0'``; None: the backend's default).
+        compile: run the step and the reset's kernels through ``ivy.compile_fn``; by default
+            where the compiler keeps loops (jax, tensorflow).
 
     Example:
         >>> env = GymnasiumEnv(ivy_gym.Pendulum(), framework="jax", dtype="float64")
@@ -166,12 +292,13 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
         core: Env,
         *,
         framework: Framework = "numpy",
-        dtype: Dtype = "float32",
+        dtype: Dtype | None = None,
         render_mode: str | None = None,
         discrete: bool = False,
         device: str | None = None,
+        compile: bool | None = None,
     ) -> None:
-        self._setup(core, framework, dtype, discrete, device)
+        self._setup(core, framework, dtype, discrete, device, compile)
         self.metadata = {"render_modes": ["rgb_array"], "render_fps": core.render_fps}
         if render_mode not in (None, "rgb_array"):
             raise ValueError(
@@ -199,21 +326,21 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
         super().reset(seed=seed)
-        self._state = self._to_backend(self.core.draw_initial(self.np_random))
-        return self._numpy(self.core.kernel_observe(self.xp, self._state)), {}
+        self._state, obs, info = self._to_backend(self.core.draw_initial(self.np_random))
+        return self._numpy(obs), self._info(info, self.action_dtype)
 
     def step(self, action):
         if self._state is None:
             raise RuntimeError(f"{self._name}: call reset() before step().")
         a = self._checked_actions(action, ())
-        state, obs, reward, terminated = self._step(self._state, a)
+        state, obs, reward, terminated, info = self._step(self._state, a)
         self._state = state
         return (
             self._numpy(obs),
-            float(self._to_numpy(reward)),
+            self._reward(self._to_numpy(reward)),
             bool(self._to_numpy(terminated)),
             False,
-            {},
+            self._info(info, _numpy_dtype(a)),
         )
 
     def render(self):
@@ -242,9 +369,9 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         num_envs: number of copies.
         framework, dtype, render_mode, discrete, device: as for :class:`GymnasiumEnv`.
         max_episode_steps: time limit per episode (None: none).
-        compile: run the batched step through ``ivy.compile_fn``; by default where the
-            compiler keeps loops (jax, tensorflow: they also start in a second; torch.compile
-            takes ~20 s).
+        compile: run the batched step (and the reset's kernels) through ``ivy.compile_fn``; by
+            default where the compiler keeps loops (jax, tensorflow: they also start in a
+            second; torch.compile takes ~20 s).
 
     Example:
         >>> envs = GymnasiumVectorEnv(ivy_gym.CartPole(), 1024, framework="jax", discrete=True)
@@ -258,14 +385,14 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         num_envs: int = 1,
         *,
         framework: Framework = "numpy",
-        dtype: Dtype = "float32",
+        dtype: Dtype | None = None,
         max_episode_steps: int | None = None,
         render_mode: str | None = None,
         discrete: bool = False,
         compile: bool | None = None,
         device: str | None = None,
     ) -> None:
-        self._setup(core, framework, dtype, discrete, device)
+        self._setup(core, framework, dtype, discrete, device, compile)
         if int(num_envs) < 1:
             raise ValueError(f"ivy_gym: num_envs must be at least 1, got {num_envs}.")
         if render_mode not in (None, "rgb_array"):
@@ -284,13 +411,6 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         self.single_observation_space = self._single_observation_space
         self.action_space = batch_space(self.single_action_space, self.num_envs)
         self.observation_space = batch_space(self.single_observation_space, self.num_envs)
-        if compile is None:
-            # compilers that keep loops (jax, tensorflow) also start in about a second;
-            # torch.compile takes ~20 s, more than most runs of a vector environment gain
-            caps = self.xp.capabilities
-            compile = caps.compilation and caps.compiled_loops
-        if compile:
-            self._step = ivy.compile_fn(self._step, f=self.xp)
         self._state = None
         self._steps = np.zeros(self.num_envs, np.int64)
         self._prev_done = np.zeros(self.num_envs, bool)
@@ -302,18 +422,20 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
         super().reset(seed=seed)
-        self._state = self._to_backend(self.core.draw_initial(self.np_random, self.num_envs))
+        draws = self.core.draw_initial(self.np_random, self.num_envs)
+        self._state, obs, info = self._to_backend(draws)
         self._steps[:] = 0
         self._prev_done[:] = False
-        return self._numpy(self.core.kernel_observe(self.xp, self._state)), {}
+        return self._numpy(obs), self._vector_info(info, self.action_dtype)
 
     def step(self, actions):
         if self._state is None:
             raise RuntimeError(f"{self._name}: call reset() before step().")
         a = self._checked_actions(actions, (self.num_envs,))
-        state, obs, reward, terminated = self._step(self._state, a)
+        state, obs, reward, terminated, info = self._step(self._state, a)
         state_np, obs, reward = self._numpy(state), self._numpy(obs), self._numpy(reward)
         terminated = np.asarray(self._to_numpy(terminated), bool)
+        info = self._vector_info(info, _numpy_dtype(a))
         steps = self._steps
         steps += 1
         if self.max_episode_steps is None:
@@ -323,24 +445,41 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         restart = self._prev_done
         restarts = np.count_nonzero(restart)
         if restarts:
-            # Gymnasium's next-step autoreset, in place on numpy copies of this step's outputs
-            fresh = self._to_backend(self.core.draw_initial(self.np_random, restarts))
+            # Gymnasium's next-step autoreset, in place on numpy copies of this step's outputs;
+            # the fresh draws (only the restarting copies draw) go through the reset's kernels
+            # with the whole batch, so that a compiled reset keeps one shape
             if not state_np.flags.writeable or state_np is self._to_numpy(self._state):
                 state_np = state_np.copy()
-            state_np[restart] = self._numpy(fresh)
+            draws = state_np.astype(np.float64)
+            draws[restart] = self.core.draw_initial(self.np_random, restarts)
+            fresh, fresh_obs, fresh_info = self._to_backend(draws)
+            state_np[restart] = self._numpy(fresh)[restart]
             state = self.xp.asarray(state_np, device=self.device)
             if not obs.flags.writeable:
                 obs = obs.copy()
-            obs[restart] = self._numpy(self.core.kernel_observe(self.xp, fresh))
+            obs[restart] = self._numpy(fresh_obs)[restart]
             reward[restart] = 0.0
             terminated[restart] = False
             truncated[restart] = False
             steps[restart] = 0
+            info = self._restart_info(info, fresh_info, restart)
         if np.may_share_memory(obs, state_np):
             obs = obs.copy()  # the caller's to change: not a view of the state
         self._state = state
         self._prev_done = terminated | truncated
-        return obs, reward, terminated, truncated, {}
+        return obs, reward, terminated, truncated, info
+
+    def _restart_info(self, info: dict, fresh_info: dict, restart: np.ndarray) -> dict:
+        """The step's info with the restarting copies' entries replaced by their reset info
+        (as Gymnasium's vector environments give it), masked out where a key has none."""
+        fresh = self._vector_info(fresh_info, self.action_dtype)
+        for key in [k for k in info if not k.startswith("_")]:
+            if key in fresh:
+                info[key][restart] = fresh[key][restart]
+            else:
+                info[key][restart] = 0
+                info["_" + key] = ~restart
+        return info
 
     def render(self):
         if self.render_mode != "rgb_array":
@@ -351,3 +490,9 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         if self._state is None:
             raise RuntimeError(f"{self._name}: call reset() before render().")
         return [self._frame(row) for row in self.state]
+
+
+def _numpy_dtype(action) -> np.dtype:
+    """The numpy dtype of an action array of any backend."""
+    name = getattr(action.dtype, "name", None) or str(action.dtype).rpartition(".")[2]
+    return np.dtype(name)

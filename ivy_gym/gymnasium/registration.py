@@ -17,10 +17,13 @@ import gymnasium
 
 from ivy.typing import Dtype, Framework
 from ivy_gym.acrobot import Acrobot
+from ivy_gym.ant import Ant
 from ivy_gym.cartpole import CartPole, CartPoleSwingUp
 from ivy_gym.gymnasium.facades import GymnasiumEnv, GymnasiumVectorEnv
+from ivy_gym.humanoid import Humanoid
 from ivy_gym.inverted_double_pendulum import InvertedDoublePendulum
 from ivy_gym.inverted_pendulum import InvertedPendulum
+from ivy_gym.locomotion import HalfCheetah, Hopper, SwimmerMuJoCo, Walker2d
 from ivy_gym.mountain_car import MountainCar, MountainCarContinuous, MountainCarShaped
 from ivy_gym.pendulum import Pendulum, PendulumSmooth
 from ivy_gym.reacher import Reacher
@@ -45,6 +48,12 @@ TASKS: dict[str, tuple[type, bool, float | None]] = {
     "InvertedPendulum-v5": (InvertedPendulum, False, 950.0),
     "Reacher-v5": (ReacherMuJoCo, False, -3.75),
     "InvertedDoublePendulum-v5": (InvertedDoublePendulum, False, 9100.0),
+    "Hopper-v5": (Hopper, False, 3800.0),
+    "Walker2d-v5": (Walker2d, False, None),
+    "HalfCheetah-v5": (HalfCheetah, False, 4800.0),
+    "Ant-v5": (Ant, False, 6000.0),
+    "Humanoid-v5": (Humanoid, False, None),
+    "Swimmer-v5": (SwimmerMuJoCo, False, 360.0),
 }
 
 
@@ -52,15 +61,17 @@ def make_env(
     task: str,
     *,
     framework: Framework = "numpy",
-    dtype: Dtype = "float32",
+    dtype: Dtype | None = None,
     render_mode: str | None = None,
     device: str | None = None,
+    compile: bool | None = None,
     **core_kwargs: Any,
 ) -> GymnasiumEnv:
     """The Gymnasium entry point of ``ivy_gym/<task>``.
 
     Example:
         >>> env = make_env("Pendulum-v1", framework="jax", g=9.81)
+        >>> env = make_env("Hopper-v5", framework="torch", healthy_reward=2.0)  # float64
     """
     cls, discrete, _ = TASKS[task]
     return GymnasiumEnv(
@@ -70,6 +81,7 @@ def make_env(
         render_mode=render_mode,
         discrete=discrete,
         device=device,
+        compile=compile,
     )
 
 
@@ -78,7 +90,7 @@ def make_vector_env(
     num_envs: int = 1,
     *,
     framework: Framework = "numpy",
-    dtype: Dtype = "float32",
+    dtype: Dtype | None = None,
     render_mode: str | None = None,
     max_episode_steps: int | None = None,
     compile: bool | None = None,
