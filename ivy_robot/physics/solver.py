@@ -440,66 +440,126 @@ def _line_search(xp, rows: _Rows, jar, Jv, slope0, curvature):
 
     The derivative along the line, ``slope0 + alpha curvature`` plus the rows' terms, is
     continuous, piecewise linear and increasing, with a kink where a row crosses a zone boundary
-    (one-sided rows at ``jar = 0``, friction rows at ``jar = -+R frictionloss``). The search
-    walks the segments between crossings from ``alpha = 0``: in each it solves the linear
-    derivative's root from the rows' zones there (summed afresh, no accumulated rounding), and
-    stops if the root lies before the next crossing, else moves to that crossing. The walk is
-    exact and takes one step per crossing passed: one or two in practice (a loop of batch-wide
-    steps while any element walks on; no sort).
+    (one-sided rows at ``jar = 0``, friction rows at ``jar = -+R frictionloss``). The segment
+    between two crossings where it vanishes is found, then the root is solved there from the
+    rows' zones in that segment, summed afresh (no accumulated rounding). Finding the segment:
+
+    - where the backend compiles loops (``xp.capabilities.compiled_loops``: jax, tensorflow), a
+      walk over the segments from ``alpha = 0`` that stops at the first whose root lies before
+      its end: one step per crossing passed, a loop while any batch element walks on (few
+      steps in practice, each a pass over the rows; no sort, which is slow on XLA's CPU);
+    - elsewhere (torch, numpy), in one pass: the crossings sorted, the changes of slope summed
+      along them, the first segment whose end has a non-negative derivative (no loop, which
+      would break torch.compile's graph at every step).
 
     Args:
         jar: *[B, n]* ``J qacc - aref``; ``Jv``: *[B, n]* ``J search``.
         slope0, curvature: *[B]* the Gauss term's derivative at 0 and second derivative.
     """
-    inf = xp.full_like(jar, float("inf"))
-    moving = Jv != 0
-    step = xp.where(moving, Jv, xp.ones_like(Jv))
-    up = Jv > 0
+    line = _Line(xp, rows, jar, Jv, slope0, curvature)
+    if xp.capabilities.compiled_loops:
+        return line.walk()
+    return line.root(line.sorted_segment())[0]
 
-    def crossing(level):
-        alpha = (level - jar) / step
-        ahead = xp.logical_and(xp.logical_and(moving, xp.isfinite(level)), alpha > 0)
-        return xp.where(ahead, alpha, inf)
 
-    at_low, at_high = crossing(rows.low), crossing(rows.high)
-    # zones just after alpha = 0 (0 below low, 1 between, 2 above high; a row on a boundary
-    # takes the side it moves to); a zone changes by one, in the direction of motion, at each
-    # crossing passed
-    below = xp.logical_or(jar < rows.low, xp.logical_and(jar == rows.low, xp.logical_not(up)))
-    above = xp.logical_or(jar > rows.high, xp.logical_and(jar == rows.high, xp.logical_not(Jv < 0)))
-    start = xp.where(below, 0, xp.where(above, 2, 1))
+class _Line:
+    """The cost along a search direction: its zone crossings and the derivative's segments."""
 
-    def segment(lo):
-        """The derivative's ``(a, b)`` on the segment starting at ``lo`` *[B]*, and its end."""
-        passed = xp.astype(at_low <= lo[:, None], start.dtype) + xp.astype(
-            at_high <= lo[:, None], start.dtype
+    def __init__(self, xp, rows: _Rows, jar, Jv, slope0, curvature):
+        self.xp, self.rows, self.jar, self.Jv = xp, rows, jar, Jv
+        self.slope0, self.curvature = slope0, curvature
+        self.inf = xp.full_like(jar, float("inf"))
+        moving = Jv != 0
+        self.step = xp.where(moving, Jv, xp.ones_like(Jv))
+        self.up = Jv > 0
+
+        def crossing(level):
+            alpha = (level - jar) / self.step
+            ahead = xp.logical_and(xp.logical_and(moving, xp.isfinite(level)), alpha > 0)
+            return xp.where(ahead, alpha, self.inf)
+
+        self.at_low, self.at_high = crossing(rows.low), crossing(rows.high)
+        # zones just after alpha = 0 (0 below, 1 quadratic, 2 above; a row on a boundary takes
+        # the side it moves to); a zone changes by one in the direction of motion at each
+        # crossing passed
+        below = xp.logical_or(
+            jar < rows.low, xp.logical_and(jar == rows.low, xp.logical_not(self.up))
         )
-        zone = xp.where(up, start + passed, start - passed)
-        a_rows, b_rows = _directional(xp, rows, jar, Jv, zone == 0, zone == 2)
+        above = xp.logical_or(
+            jar > rows.high, xp.logical_and(jar == rows.high, xp.logical_not(Jv < 0))
+        )
+        self.start = xp.where(below, 0, xp.where(above, 2, 1))
+
+    def segment(self, lo):
+        """The derivative ``a + alpha b`` on the segment that starts at ``lo`` *[B]*, and the
+        segment's end: ``(a, b, end)``."""
+        xp, lo = self.xp, self.xp.reshape(lo, (-1, 1))
+        passed = xp.astype(self.at_low <= lo, self.start.dtype) + xp.astype(
+            self.at_high <= lo, self.start.dtype
+        )
+        zone = xp.where(self.up, self.start + passed, self.start - passed)
+        a_rows, b_rows = _directional(xp, self.rows, self.jar, self.Jv, zone == 0, zone == 2)
         later = xp.minimum(
-            xp.where(at_low > lo[:, None], at_low, inf),
-            xp.where(at_high > lo[:, None], at_high, inf),
+            xp.where(self.at_low > lo, self.at_low, self.inf),
+            xp.where(self.at_high > lo, self.at_high, self.inf),
         )
-        end = xp.min(later, axis=-1)
-        return slope0 + xp.sum(a_rows, axis=-1), curvature + xp.sum(b_rows, axis=-1), end
+        a = self.slope0 + xp.sum(a_rows, axis=-1)
+        return a, self.curvature + xp.sum(b_rows, axis=-1), xp.min(later, axis=-1)
 
-    def walking(carry):
-        return xp.any(xp.logical_not(carry[2]))
-
-    def walk(carry):
-        lo, alpha, done = carry
-        a, b, end = segment(lo)
+    def root(self, lo):
+        """The root of the derivative in the segment starting at ``lo``, within the segment;
+        also whether it lies there: ``(alpha, inside)``."""
+        xp = self.xp
+        a, b, end = self.segment(lo)
         positive = b > 0
         root = xp.where(positive, -a / xp.where(positive, b, xp.ones_like(b)), lo)
-        root = xp.maximum(root, lo)
-        found = xp.logical_and(xp.logical_not(done), root <= end)
-        alpha = xp.where(found, root, alpha)
-        lo = xp.where(xp.logical_or(done, found), lo, end)
-        return lo, alpha, xp.logical_or(done, found)
+        return xp.minimum(xp.maximum(root, lo), end), root <= end
 
-    zero = xp.zeros_like(slope0)
-    done = xp.zeros(slope0.shape, dtype=xp.bool, device=xp.dev(slope0))
-    return xp.while_loop(walking, walk, (zero, zero, done))[1]
+    def walk(self):
+        xp = self.xp
+
+        def walking(carry):
+            return xp.any(xp.logical_not(carry[2]))
+
+        def step(carry):
+            lo, alpha, done = carry
+            root, inside = self.root(lo)
+            found = xp.logical_and(xp.logical_not(done), inside)
+            _, _, end = self.segment(lo)
+            alpha = xp.where(found, root, alpha)
+            lo = xp.where(xp.logical_or(done, found), lo, end)
+            return lo, alpha, xp.logical_or(done, found)
+
+        zero = xp.zeros_like(self.slope0)
+        done = xp.zeros(self.slope0.shape, dtype=xp.bool, device=xp.dev(zero))
+        return xp.while_loop(walking, step, (zero, zero, done))[1]
+
+    def sorted_segment(self):
+        """The start of the segment where the derivative vanishes, from the sorted crossings:
+        the first segment whose derivative at its end is non-negative."""
+        xp, rows, jar, Jv = self.xp, self.rows, self.jar, self.Jv
+        sign = xp.where(self.up, xp.ones_like(Jv), -xp.ones_like(Jv))
+        quad_a, quad_b, linear = rows.D * jar * Jv, rows.D * Jv * Jv, rows.floss * Jv
+        # change of (a, b) at a crossing of the low boundary (below <-> quadratic) and of the
+        # high one (quadratic <-> above), moving in the direction of sign
+        da = xp.concat([sign * (quad_a + linear), sign * (linear - quad_a)], axis=-1)
+        db = xp.concat([sign * quad_b, -sign * quad_b], axis=-1)
+        crossings = xp.concat([self.at_low, self.at_high], axis=-1)
+        ahead = xp.isfinite(crossings)
+        da, db = xp.where(ahead, da, xp.zeros_like(da)), xp.where(ahead, db, xp.zeros_like(db))
+        a0, b0, _ = self.segment(xp.zeros_like(self.slope0))
+        order = xp.argsort(crossings, axis=-1)
+        ends = xp.take_along_axis(crossings, order, axis=-1)
+        # segment k runs from the k-th crossing (0 for k = 0) to the next (inf after the last)
+        a = a0[:, None] + xp.cumsum(xp.take_along_axis(da, order, axis=-1), axis=-1)
+        b = b0[:, None] + xp.cumsum(xp.take_along_axis(db, order, axis=-1), axis=-1)
+        a, b = xp.concat([a0[:, None], a], axis=-1), xp.concat([b0[:, None], b], axis=-1)
+        ends = xp.concat([ends, self.inf[:, :1]], axis=-1)
+        last = xp.isinf(ends)
+        rising = xp.logical_or(last, a + xp.where(last, xp.zeros_like(ends), ends) * b >= 0)
+        first = xp.argmax(xp.astype(rising, xp.int32), axis=-1)[:, None]
+        starts = xp.concat([xp.zeros_like(ends[:, :1]), ends[:, :-1]], axis=-1)
+        return xp.take_along_axis(starts, first, axis=-1)[:, 0]
 
 
 # ----------------------------------------------------------------------------------------------
