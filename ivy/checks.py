@@ -141,6 +141,33 @@ def _matcher(spec, what: str, hint: str = ""):
     return match
 
 
+def _shared_names(shapes: dict) -> dict:
+    """``{name: {argument: axis}}`` for the dimension names that several specs share (their
+    sizes must agree), the axis counted from the end."""
+    where: dict = {}
+    for key, spec in shapes.items():
+        dims = spec[1:] if spec and spec[0] == "..." else spec
+        for i, entry in enumerate(dims):
+            if isinstance(entry, str):
+                where.setdefault(entry, {})[key] = i - len(dims)
+    return {name: args for name, args in where.items() if len(args) > 1}
+
+
+def _same_named_sizes(shared: dict, arrays: dict) -> None:
+    """Raise an :class:`InputError` unless the dimensions that share a name have one size."""
+    for name, axes in shared.items():
+        sizes = {}
+        for key, axis in axes.items():
+            shape = shape_of(arrays[key]) if key in arrays else None
+            if shape is not None and len(shape) >= -axis and shape[axis] is not None:
+                sizes[key] = shape[axis]
+        if len(set(sizes.values())) > 1:
+            listed = ", ".join(f"{key} {shape_of(arrays[key])}" for key in sizes)
+            raise InputError(
+                f"the dimension {name} must have one size in every argument; got {listed}."
+            )
+
+
 def _batch_shapes_broadcast(batches: dict) -> None:
     """Raise an :class:`InputError` unless the batch shapes ``{argument: shape}`` broadcast
     (numpy's rules, aligned on the right)."""
@@ -221,6 +248,7 @@ def _checked(fn, exact: frozenset, broadcast: bool, hints: dict, shapes: dict):
     numeric = ({p.name for p in params if "Array" in str(p.annotation)} | set(shapes)) - exact
     slots = [(i, key) for i, key in enumerate(positional) if key in numeric]
     matchers = {key: _matcher(spec, key, hints.get(key, "")) for key, spec in shapes.items()}
+    shared = _shared_names(shapes)
 
     def prepare(args: list, kwargs: dict) -> None:
         """Check and convert the arguments in place."""
@@ -254,6 +282,8 @@ def _checked(fn, exact: frozenset, broadcast: bool, hints: dict, shapes: dict):
                     batches[key] = batch
         if broadcast and len(batches) > 1:
             _batch_shapes_broadcast(batches)
+        if shared:
+            _same_named_sizes(shared, {key: holder[where] for key, holder, where in found})
         _to_one_floating_dtype(xp, found, kwargs.get("f"))
 
     @functools.wraps(fn)

@@ -154,7 +154,8 @@ def affine(xp, coords, mat, what: str = "coords", matrix_what: str = "the matrix
         return transform(xp, coords, mat, what, matrix_what)
     linear = transform(xp, coords, mat[..., :, : n1 - 1], what, matrix_what)
     ni = len(shape_of(xp, linear)) - len(shape_of(xp, mat)) + 1
-    offset = xp.reshape(mat[..., :, n1 - 1], (*shape_of(xp, mat)[:-2], *(1,) * ni, -1))
+    rows = shape_of(xp, mat)[-2]  # (not -1: an empty batch leaves it undetermined)
+    offset = xp.reshape(mat[..., :, n1 - 1], (*shape_of(xp, mat)[:-2], *(1,) * ni, rows))
     return linear + offset
 
 

@@ -175,7 +175,7 @@ def sample_images(
     return out
 
 
-@checked
+@checked(broadcast=True, density=("...",), inter_sample_distance=("...",))
 def sampled_volume_density_to_occupancy_probability(
     density: Array, inter_sample_distance: Array, *, f: Framework = None
 ) -> Array:
@@ -197,7 +197,7 @@ def sampled_volume_density_to_occupancy_probability(
     return -xp.expm1(-density * inter_sample_distance)
 
 
-@checked
+@checked(broadcast=True, density=("...", "n"), inter_sample_distance=("...", "n"))
 def ray_termination_probabilities(
     density: Array, inter_sample_distance: Array, *, f: Framework = None
 ) -> Array:
@@ -222,7 +222,7 @@ def ray_termination_probabilities(
     return -xp.expm1(-optical_depth) * transmittance
 
 
-@checked
+@checked(broadcast=True, starts=("...",), ends=("...",))
 def stratified_sample(
     starts: Array, ends: Array, num_samples: int, *, f: Framework = None
 ) -> Array:
@@ -253,7 +253,7 @@ def stratified_sample(
     return left + u * bins
 
 
-@checked
+@checked(broadcast=True, ray_term_probs=("...", "n"), features=("...", "n", "c"))
 def render_rays_via_termination_probabilities(
     ray_term_probs: Array, features: Array, render_variance: bool = False, *, f: Framework = None
 ) -> Array | tuple:

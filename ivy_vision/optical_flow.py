@@ -289,7 +289,8 @@ def project_cam_coords_with_object_transformations(
     # every object's transformation applied to every pixel: [*B, h, w, num_obj, 3]
     trans = xp.reshape(obj_trans, (*tshape[:nb], 1, 1, tshape[-3], 3, 4))
     moved = xp.matvec(trans[..., 0:3], points[..., None, :]) + trans[..., 3]
-    ids = xp.reshape(obj_ids[..., 0], (*C.shape_of(xp, obj_ids)[:-2], 1, 1, -1))
+    ids_shape = C.shape_of(xp, obj_ids)  # (no -1: an empty batch leaves it undetermined)
+    ids = xp.reshape(obj_ids[..., 0], (*ids_shape[:-2], 1, 1, ids_shape[-2]))
     selected = xp.astype(xp.equal(ids, id_image), xp.dtype(moved))  # [*B, h, w, num_obj]
     motion_mask = xp.sum(selected, axis=-1, keepdims=True) > 0
     object_motion = xp.sum(moved * selected[..., None], axis=-2)

@@ -135,15 +135,28 @@ def solve_homogeneous_dlt(A: Array, *, f: Framework = None) -> Array:
         f: framework name or namespace; inferred from the inputs if None.
 
     Returns:
-        Unit solutions *[batch_shape, d]* (the sign is arbitrary).
+        Unit solutions *[batch_shape, d]*, with the sign that makes the largest component (the
+        first of those equal to it within 1e-6) positive: the same on every backend (each
+        SVD picks its own sign). NaN for a system holding NaN or inf.
 
     Example:
-        >>> x = solve_homogeneous_dlt(np.array([[1., 0, 0], [0, 1, 0], [0, 0, 0]]))
-        >>> np.abs(x)
+        >>> solve_homogeneous_dlt(np.array([[1., 0, 0], [0, 1, 0], [0, 0, 0]]))
         array([0., 0., 1.])
     """
     xp = ivy.get_framework(A, f=f)
     shape = C.shape_of(xp, A)
     if len(shape) < 2:
         raise InputError(f"A must be [..., k, d]; got shape {shape}.")
-    return xp.svd(A, full_matrices=True)[2][..., -1, :]
+    # a system with NaN or inf has no solution: NaN on every backend (numpy's and torch's SVD
+    # raise, jax's and tensorflow's return NaN)
+    finite = xp.all(xp.isfinite(A), axis=(-2, -1))
+    A = xp.where(finite[..., None, None], A, xp.zeros_like(A))
+    x = xp.svd(A, full_matrices=True)[2][..., -1, :]
+    x = xp.where(finite[..., None], x, xp.full_like(x, float("nan")))
+    # the first component within rounding of the largest magnitude (exact ties differ by
+    # backend in their last bits)
+    size = xp.abs(x)
+    near = size >= xp.max(size, axis=-1, keepdims=True) * (1.0 - 1e-6)
+    first = xp.argmax(xp.astype(near, "int8"), axis=-1, keepdims=True)
+    pivot = xp.take_along_axis(x, first, axis=-1)
+    return x * xp.stop_gradient(xp.where(pivot < 0, -xp.ones_like(pivot), xp.ones_like(pivot)))

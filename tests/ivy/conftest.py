@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.conftest import BACKENDS
+from tests.conftest import BACKENDS, capable
 
 IVY_OPT_IN_BACKENDS = ("array_api_strict",)
 
@@ -64,6 +64,33 @@ KNOWN_TENSORFLOW_GAPS["test_det_of_a_singular_matrix_keeps_its_gradient[tensorfl
 KNOWN_GAPS = {"array_api_strict": KNOWN_STRICT_GAPS, "tensorflow": KNOWN_TENSORFLOW_GAPS}
 
 
+_64_BIT = ("float64", "complex128", "int64", "uint64")
+# Tests of the 64-bit dtypes themselves (they make or name int64, uint64, float64 or complex128
+# arrays, or expect int64 as the default integer), which jax cannot hold while its 64-bit types
+# are off: there ivy refuses them by name (UnsupportedError, UnavailableDtypeError), as
+# tests/ivy/core/test_data_type.py checks.
+_OF_64_BIT_DTYPES = frozenset(
+    "test_asarray_from_python_objects_uses_default_dtypes test_meshgrid_with_f_and_no_arrays "
+    "test_python_ints_beyond_int64_with_dtype_uint64 test_astype_keeps_the_shape_of_0d_and_empty_arrays "
+    "test_astype_with_copy_false test_result_type_follows_the_table_on_every_backend "
+    "test_can_cast_within_kinds_on_every_backend test_can_cast_from_an_array "
+    "test_can_cast_never_crosses_kinds test_can_cast_never_narrows_nor_drops_the_imaginary_part "
+    "test_isdtype_kinds test_isdtype_tuples_and_dtypes".split()
+)
+
+
+def _is_64_bit(value) -> bool:
+    """A test parameter naming a 64-bit dtype (alone or in a tuple), which jax cannot make while
+    its 64-bit types are off (``--jax-x64 off``)."""
+    if isinstance(value, str):
+        return value in _64_BIT
+    if isinstance(value, (tuple, list)):
+        return any(_is_64_bit(v) for v in value)
+    if isinstance(value, dict):
+        return any(_is_64_bit(v) for v in value.values())
+    return False
+
+
 def pytest_collection_modifyitems(config, items):
     for item in items:
         params = getattr(getattr(item, "callspec", None), "params", {})
@@ -74,6 +101,10 @@ def pytest_collection_modifyitems(config, items):
             isinstance(v, str) and v == "float16" for v in params.values()
         ):
             item.add_marker(pytest.mark.skip(reason=f"{backend} has no float16"))
+        if not capable(backend, "float64") and (
+            any(_is_64_bit(v) for v in params.values()) or item.originalname in _OF_64_BIT_DTYPES
+        ):
+            item.add_marker(pytest.mark.skip(reason=f"{backend} runs without 64-bit types"))
         reason = KNOWN_GAPS.get(backend, {}).get(item.name)
         if reason:
             item.add_marker(pytest.mark.xfail(reason=reason, strict=True))

@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 import ivy_vision as vis
+from tests.conftest import capable
 
 
 def _device(xp, target_device):
@@ -14,11 +15,12 @@ def _device(xp, target_device):
     return target_device if target_device.split(":")[0] in xp.capabilities.devices else "cpu"
 
 
-def test_results_stay_on_the_inputs_device(xp, target_device):
+def test_results_stay_on_the_inputs_device(backend, xp, target_device):
     device = _device(xp, target_device)
+    dtype = np.float64 if capable(backend, "float64") else np.float32
 
     def on(x):
-        return xp.asarray(np.asarray(x, dtype=np.float64), device=device)
+        return xp.asarray(np.asarray(x, dtype=dtype), device=device)
 
     camera = vis.Camera.from_focal_lengths(
         on([4.0, 4.0]), on([2.0, 1.5]), on(np.eye(3)), on([0.0, 0.0, -3.0])

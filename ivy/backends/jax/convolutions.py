@@ -36,6 +36,8 @@ def conv_general(x, filters, strides, padding, dilations, /, *, groups=1, transp
             rhs_dilation=dilations,
             dimension_numbers=_dimension_numbers(nd, "OI"),
         )
+    if groups > 1 and dtype == jnp.float64:
+        return _grouped_one_by_one(x, filters, strides, padding, dilations, groups)
     return lax.conv_general_dilated(
         x,
         filters,
@@ -45,3 +47,24 @@ def conv_general(x, filters, strides, padding, dilations, /, *, groups=1, transp
         dimension_numbers=_dimension_numbers(nd, "IO"),
         feature_group_count=groups,
     )
+
+
+def _grouped_one_by_one(x, filters, strides, padding, dilations, groups):
+    """A grouped float64 convolution as one convolution per group: XLA's grouped float64
+    convolution on the CPU lets a NaN (or inf) of one group reach the outputs of every other
+    (NaN times the zeros between groups), where numpy, torch and tensorflow keep the groups
+    apart; in float32 it does not."""
+    nd = len(strides)
+    cin, cout = x.shape[-1] // groups, filters.shape[-1] // groups
+    parts = [
+        lax.conv_general_dilated(
+            x[..., g * cin : (g + 1) * cin],
+            filters[..., g * cout : (g + 1) * cout],
+            strides,
+            padding,
+            rhs_dilation=dilations,
+            dimension_numbers=_dimension_numbers(nd, "IO"),
+        )
+        for g in range(groups)
+    ]
+    return jnp.concatenate(parts, axis=-1)
