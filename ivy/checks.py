@@ -36,7 +36,7 @@ import inspect
 from ivy.core._floats import common_floating
 from ivy.errors import IvyError
 
-__all__ = ["InputError", "checked", "check_shape", "describe", "shape_of"]
+__all__ = ["InputError", "checked", "check_shape", "check_floating_dtype", "describe", "shape_of"]
 
 _PYTHON_SCALARS = (bool, int, float, complex)
 
@@ -109,6 +109,21 @@ def check_shape(shape: tuple, spec, what: str, hint: str = "") -> dict:
             f"{what} must be {describe(spec)}; got shape {shape}." + (f" {hint}" if hint else "")
         )
     return named
+
+
+def check_floating_dtype(dtype, what: str = "dtype") -> None:
+    """Raise an :class:`InputError` unless ``dtype`` (a name or a framework's dtype) is a
+    floating one: a function of real values given an integer dtype would answer with values
+    rounded to integers, plausible and wrong.
+
+    Example:
+        >>> check_floating_dtype("int32")
+        Traceback (most recent call last):
+        ...
+        ivy.checks.InputError: dtype must be a floating dtype (float32, float64); got 'int32'.
+    """
+    if dtype is not None and not _is_floating(dtype):
+        raise InputError(f"{what} must be a floating dtype (float32, float64); got {dtype!r}.")
 
 
 def _matcher(spec, what: str, hint: str = ""):

@@ -183,11 +183,17 @@ def pixel_grid(xp, image_dims, dtype, device, homogeneous_coords=True):
 
 
 def image_dims_of(image_dims, what: str = "image_dims") -> tuple:
-    """``(H, W)`` as Python ints, or an InputError."""
+    """``(H, W)`` as Python ints, or an InputError (also for sizes that are not whole numbers,
+    which ``int`` would round down to a plausible image size)."""
     try:
         h, w = (int(d) for d in image_dims)
+        whole = all(float(d) == int(d) for d in image_dims)
     except (TypeError, ValueError):
         raise InputError(f"{what} must be (height, width); got {image_dims!r}.") from None
+    if not whole:
+        raise InputError(
+            f"{what} must be whole numbers of pixels (height, width); got {image_dims!r}."
+        )
     if h <= 0 or w <= 0:
         raise InputError(f"{what} must be positive (height, width); got {(h, w)}.")
     return h, w

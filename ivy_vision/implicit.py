@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 
 import ivy
+from ivy.checks import check_floating_dtype
 from ivy.typing import Array, Device, Dtype, Framework, Shape
 from ivy_vision import _common as C
 from ivy_vision._checks import InputError, checked
@@ -101,6 +102,7 @@ def create_sampled_pixel_coords_image(
     xp = ivy.get_framework(f=f)
     h, w = C.image_dims_of(image_dims)
     rows, cols = C.image_dims_of(samples_per_dim, "samples_per_dim")
+    check_floating_dtype(dtype)  # (integer coordinates would round the samples)
     batch = tuple(batch_shape or ())
     cell = (w / cols, h / rows)
     grid = C.pixel_grid(xp, (rows, cols), dtype, device, False)

@@ -27,6 +27,7 @@ Example:
 from __future__ import annotations
 
 import ivy
+from ivy.checks import check_floating_dtype
 from ivy.typing import Array, Device, Dtype, Framework, Shape
 from ivy_vision import _common as C
 from ivy_vision._checks import InputError, checked
@@ -88,7 +89,8 @@ def create_uniform_pixel_coords_image(
         batch_shape: leading batch dimensions to broadcast to (none by default).
         normalized: divide ``x`` by the width and ``y`` by the height (values in ``[0, 1)``).
         homogeneous: append the homogeneous 1 (3 channels) or not (2 channels).
-        dtype: floating dtype of the result.
+        dtype: floating dtype of the result (an integer dtype raises: normalised coordinates
+            would round to zeros).
         device: device of the result (the backend's default if None).
         f: framework name or namespace; the global framework if None.
 
@@ -101,6 +103,7 @@ def create_uniform_pixel_coords_image(
     """
     xp = ivy.get_framework(f=f)
     h, w = C.image_dims_of(image_dims)
+    check_floating_dtype(dtype)  # (integer pixel coordinates, normalised, would be zeros)
     grid = C.pixel_grid(xp, (h, w), dtype, device, homogeneous_coords=homogeneous)
     if normalized:
         scale = [1.0 / w, 1.0 / h] + ([1.0] if homogeneous else [])

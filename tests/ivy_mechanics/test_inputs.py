@@ -86,3 +86,15 @@ def test_lists_are_arrays_of_the_chosen_framework(backend):
     assert_close(out, np.eye(3), "float32")
     with pytest.raises(InputError, match="rot_vec must be"):
         mech.rot_vec_to_rot_mat([0.0, 0.0], f=backend)
+
+
+@pytest.mark.parametrize(
+    "name", ["get_random_quaternion", "get_random_rot_mat", "get_random_euler"]
+)
+def test_random_rotations_refuse_integer_dtypes(backend, name):
+    """Integer draws rounded the normal samples (quaternions of zeros and ones, NaN rotation
+    vectors) on three backends and raised on jax."""
+    import ivy
+
+    with pytest.raises(ivy.DtypeError, match="draws real numbers"):
+        getattr(mech, name)((2,), dtype="int32", f=backend)

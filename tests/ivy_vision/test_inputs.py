@@ -7,6 +7,7 @@ on whole pixels (jax's clip halved it there)."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 import ivy
 import ivy_vision as vis
@@ -111,3 +112,17 @@ def test_inverse_warp_gradient_at_whole_pixel_projections_agrees(diff_backend):
             expected[r, c] = (numpy_warp_sum(bumped) - numpy_warp_sum(depth0)) / eps
     np.testing.assert_allclose(grad, expected, rtol=1e-5, atol=1e-6)
     assert np.abs(grad[:, 1]).max() > 0.1  # the border's edge column has a gradient
+
+
+def test_settings_that_would_round_to_a_plausible_answer_are_refused(backend):
+    """An integer dtype for pixel coordinates (normalised, they rounded to zeros) and an image
+    size that is not a whole number of pixels (int() rounded it down)."""
+    from ivy.checks import InputError
+
+    with pytest.raises(InputError, match="dtype must be a floating dtype"):
+        vis.create_uniform_pixel_coords_image((2, 3), normalized=True, dtype="int32", f=backend)
+    with pytest.raises(InputError, match="dtype must be a floating dtype"):
+        vis.create_sampled_pixel_coords_image((4, 4), (2, 2), dtype="int64", f=backend)
+    with pytest.raises(InputError, match="whole numbers of pixels"):
+        vis.create_uniform_pixel_coords_image((2.5, 3), f=backend)
+    assert numpy_of(vis.create_uniform_pixel_coords_image((2.0, 3), f=backend)).shape == (2, 3, 3)
