@@ -205,6 +205,13 @@ def pytest_report_header(config):
     return None
 
 
+def pytest_terminal_summary(terminalreporter, config):
+    """The shuffle's seed also at the end (``-q`` hides the header)."""
+    seed = getattr(config, "ivy_shuffle", None)
+    if seed is not None and getattr(config, "workerinput", None) is None:
+        terminalreporter.write_line(f"tests shuffled with seed {seed} (repeat: --shuffle {seed})")
+
+
 @pytest.hookimpl(trylast=True)
 def pytest_collection_modifyitems(config, items):
     seed = getattr(config, "ivy_shuffle", None)
