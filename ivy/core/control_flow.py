@@ -9,8 +9,10 @@ backend, with jax's semantics (``jax.lax.scan`` and friends):
 - tensorflow: eagerly, a Python loop (what ``tf.while_loop`` does itself in eager mode); inside a
   graph (``ivy.compile_fn``, ``tf.function``), ``tf.while_loop`` (``scan`` stacks its outputs in
   ``TensorArray`` s) and ``tf.cond``.
-- torch: a Python loop and a Python ``if``; ``torch.compile`` unrolls the loop into one graph
-  (torch's own ``scan``/``while_loop``/``cond`` operators are still prototypes in 2.13).
+- torch: a Python loop and a Python ``if``; ``torch.compile`` unrolls the loop into one graph,
+  or, for loops declared ``pure=True``, keeps it as torch's own ``scan``/``while_loop``
+  operator, tracing the body once (torch requires such bodies to have no Python side effects
+  and not to close over two views of one tensor, hence the opt-in).
 - numpy: a Python loop and a Python ``if``.
 
 Carries, inputs and outputs are nests (dicts, lists, tuples of arrays; see :mod:`ivy.nest`). As
@@ -50,6 +52,7 @@ def scan(
     length: int | None = None,
     unroll: int | bool = 1,
     *,
+    pure: bool = False,
     f: Framework = None,
 ) -> tuple[Nest, Nest]:
     """Loop ``carry, y = fn(carry, x)`` over the leading axis of ``xs``, stacking the ``y`` s.
@@ -71,6 +74,10 @@ def scan(
             leading axis of ``xs``.
         unroll: steps per iteration of the compiled loop (jax, tensorflow graphs), or True for a
             fully unrolled loop; the result is the same.
+        pure: ``fn`` has no Python side effects (no appends, no counters outside the loop)
+            and closes over no two views of one array: ``torch.compile`` may then keep the loop
+            (torch's ``scan`` operator) and trace ``fn`` once instead of once per step. jax and
+            tensorflow always trace it once; eager loops are Python loops either way.
         f: framework name or namespace; by default inferred from ``init`` and ``xs``.
 
     Returns:
@@ -91,6 +98,7 @@ def fori_loop(
     body_fun: Callable[[Any, Nest], Nest],
     init_val: Nest,
     *,
+    pure: bool = False,
     f: Framework = None,
 ) -> Nest:
     """``val = body_fun(i, val)`` for ``i`` from ``lower`` to ``upper - 1``; returns ``val``.
@@ -105,6 +113,7 @@ def fori_loop(
         upper: one past the last index.
         body_fun: ``body_fun(i, val) -> val`` with ``val``'s structure, shapes and dtypes.
         init_val: the initial value, a nest of arrays.
+        pure: as for :func:`scan` (torch.compile then keeps the loop as a scan).
         f: framework name or namespace; by default inferred from ``init_val``.
 
     Returns:
@@ -123,6 +132,7 @@ def while_loop(
     init_val: Nest,
     *,
     maximum_iterations: int | None = None,
+    pure: bool = False,
     f: Framework = None,
 ) -> Nest:
     """``while cond_fun(val): val = body_fun(val)``; returns ``val``.
@@ -139,6 +149,8 @@ def while_loop(
         body_fun: ``body_fun(val) -> val`` with ``val``'s structure, shapes and dtypes.
         init_val: the initial value, a nest of arrays.
         maximum_iterations: the most steps to run, or None for no limit.
+        pure: as for :func:`scan` (torch.compile then keeps the loop as torch's
+            ``while_loop`` operator, where no carried array requires gradients).
         f: framework name or namespace; by default inferred from ``init_val``.
 
     Returns:

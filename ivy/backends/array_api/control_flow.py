@@ -23,15 +23,15 @@ def _ops():
     )
 
 
-def scan(fn, init, xs=None, length=None, unroll=1):
+def scan(fn, init, xs=None, length=None, unroll=1, *, pure=False):
     return python_scan(_ops(), fn, init, xs, length, unroll)
 
 
-def fori_loop(lower, upper, body_fun, init_val):
+def fori_loop(lower, upper, body_fun, init_val, *, pure=False):
     return python_fori_loop(_ops(), lower, upper, body_fun, init_val)
 
 
-def while_loop(cond_fun, body_fun, init_val, *, maximum_iterations=None):
+def while_loop(cond_fun, body_fun, init_val, *, maximum_iterations=None, pure=False):
     return python_while_loop(_ops(), cond_fun, body_fun, init_val, maximum_iterations)
 
 

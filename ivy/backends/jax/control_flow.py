@@ -98,7 +98,7 @@ class _Threaded:
             _state.data = key_after
 
 
-def scan(fn, init, xs=None, length=None, unroll=1):
+def scan(fn, init, xs=None, length=None, unroll=1, *, pure=False):
     if not _use_lax(init, xs):
         return python_scan(_OPS, fn, init, xs, length, unroll)
     threaded = _Threaded()
@@ -114,7 +114,7 @@ def scan(fn, init, xs=None, length=None, unroll=1):
     return carry, ys
 
 
-def fori_loop(lower, upper, body_fun, init_val):
+def fori_loop(lower, upper, body_fun, init_val, *, pure=False):
     if not _use_lax(init_val, lower, upper):
         return python_fori_loop(_OPS, lower, upper, body_fun, init_val)
     threaded = _Threaded()
@@ -129,7 +129,7 @@ def fori_loop(lower, upper, body_fun, init_val):
     return val
 
 
-def while_loop(cond_fun, body_fun, init_val, *, maximum_iterations=None):
+def while_loop(cond_fun, body_fun, init_val, *, maximum_iterations=None, pure=False):
     if not _use_lax(init_val):
         return python_while_loop(_OPS, cond_fun, body_fun, init_val, maximum_iterations)
     threaded = _Threaded()

@@ -57,7 +57,7 @@ def _tensors(nest):
     return [_asarray(a) for a in leaves], spec
 
 
-def scan(fn, init, xs=None, length=None, unroll=1):
+def scan(fn, init, xs=None, length=None, unroll=1, *, pure=False):
     if tf.executing_eagerly():
         return python_scan(_OPS, fn, init, xs, length, unroll)
     xs_leaves, xs_spec = _tensors(xs)
@@ -114,7 +114,7 @@ def scan(fn, init, xs=None, length=None, unroll=1):
     return carry, unflatten_nest(y_spec, [ta.stack() for ta in arrays])
 
 
-def fori_loop(lower, upper, body_fun, init_val):
+def fori_loop(lower, upper, body_fun, init_val, *, pure=False):
     if tf.executing_eagerly():
         return python_fori_loop(_OPS, lower, upper, body_fun, init_val)
     leaves, spec = _tensors(init_val)
@@ -139,7 +139,7 @@ def fori_loop(lower, upper, body_fun, init_val):
     return unflatten_nest(spec, leaves)
 
 
-def while_loop(cond_fun, body_fun, init_val, *, maximum_iterations=None):
+def while_loop(cond_fun, body_fun, init_val, *, maximum_iterations=None, pure=False):
     if tf.executing_eagerly():
         return python_while_loop(_OPS, cond_fun, body_fun, init_val, maximum_iterations)
     leaves, spec = _tensors(init_val)
