@@ -126,16 +126,15 @@ def make_data(xp, model: Model, qpos, qvel, ctrl=None, qfrc_applied=None, qacc_w
     Returns:
         The data.
     """
-    zero_v = qvel * 0.0
-    batch = qpos[..., :1] * 0.0
     if ctrl is None:
-        ctrl = batch * const(xp, model.fwd.no_ctrl, qpos)
+        ctrl = qpos[..., :1] * 0.0 + const(xp, model.fwd.no_ctrl, qpos)
+    # distinct zeros (one array in two fields would alias where loops lift them as inputs)
     return Data(
         qpos=qpos,
         qvel=qvel,
         ctrl=ctrl,
-        qfrc_applied=zero_v if qfrc_applied is None else qfrc_applied,
-        qacc_warmstart=zero_v if qacc_warmstart is None else qacc_warmstart,
+        qfrc_applied=qvel * 0.0 if qfrc_applied is None else qfrc_applied,
+        qacc_warmstart=qvel * 0.0 if qacc_warmstart is None else qacc_warmstart,
     )
 
 
