@@ -46,7 +46,13 @@ def astype(
     f: Framework = None,
 ) -> Array:
     """``x`` converted to ``dtype`` (and moved to ``device`` if given). Example:
-    ``ivy.astype(x, 'float64')``."""
+    ``ivy.astype(x, 'float64')``.
+
+    Floats that an integer dtype cannot hold (NaN, infinities, values beyond its range) have
+    no integer value: the Array API leaves the result undefined, and the backends differ (numpy,
+    torch and tensorflow give the dtype's minimum, jax saturates). ivy does not check (that would
+    cost a pass over every cast, and compiled code has no values to check): clean such values
+    first (``ivy.nan_to_num``, ``ivy.clip``) where they can occur."""
 
 
 cast = alias("cast", astype)
