@@ -33,6 +33,19 @@ def _flags(xp, flags, like):
     return xp.astype(flags, like.dtype)
 
 
+def _check_fractions(function: str, **values) -> None:
+    """``discount`` (γ) and ``trace_decay`` (λ) are fractions in [0, 1], as the agents' settings
+    say (``ivy_rl/agents/defaults.py``): outside, the returns grow or change sign with the
+    horizon, numbers that look like returns and are none. Arrays are not read (that would
+    cost a transfer from the device, and compiled code has no values)."""
+    for name, value in values.items():
+        if isinstance(value, (int, float)) and not 0.0 <= value <= 1.0:
+            raise ValueError(
+                f"{function}: {name} must be in [0, 1], got {value!r} (a {name} outside it "
+                "makes returns that grow or alternate with the horizon)."
+            )
+
+
 def _check(rewards, *others):
     shape = tuple(rewards.shape)
     if len(shape) < 1 or shape[0] < 1:
@@ -97,6 +110,7 @@ def lambda_returns(
         >>> ivy_rl.lambda_returns(r, nv, resets, terms, discount=0.99, trace_decay=0.95)
     """
     xp = ivy.get_framework(rewards, f=f)
+    _check_fractions("lambda_returns", discount=discount, trace_decay=trace_decay)
     _check(
         rewards, ("next_values", next_values), ("resets", resets), ("terminations", terminations)
     )
@@ -149,6 +163,7 @@ def generalized_advantages(
         >>> adv = ivy_rl.generalized_advantages(r, v, nv, resets, terms, discount=0.99)
     """
     xp = ivy.get_framework(rewards, f=f)
+    _check_fractions("generalized_advantages", discount=discount, trace_decay=trace_decay)
     _check(
         rewards,
         ("values", values),
@@ -201,6 +216,7 @@ def n_step_returns(
     """
     if int(steps) != steps or steps < 1:
         raise ValueError(f"n_step_returns: steps must be an integer >= 1, got {steps!r}")
+    _check_fractions("n_step_returns", discount=discount)
     xp = ivy.get_framework(rewards, f=f)
     _check(
         rewards, ("next_values", next_values), ("resets", resets), ("terminations", terminations)

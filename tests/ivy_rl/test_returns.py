@@ -110,3 +110,16 @@ def test_bad_shapes_and_steps_are_refused():
         ivy_rl.lambda_returns(np.ones((3, 2)), np.ones((3, 1)), np.zeros((3, 2)), np.zeros((3, 2)))
     with pytest.raises(ValueError, match="steps must be an integer"):
         ivy_rl.n_step_returns(np.ones(3), np.ones(3), np.zeros(3), np.zeros(3), steps=0)
+
+
+@pytest.mark.parametrize("setting", [{"discount": 1.5}, {"discount": -0.1}, {"trace_decay": 2.0}])
+def test_discount_and_trace_decay_outside_zero_one_are_refused(backend, setting):
+    """They gave numbers that look like returns and are none (growing with the horizon)."""
+    r, z = native(np.ones((3, 2)), backend), native(np.zeros((3, 2)), backend)
+    with pytest.raises(ValueError, match=f"{next(iter(setting))} must be in \\[0, 1\\]"):
+        ivy_rl.lambda_returns(r, r, z, z, **setting)
+    with pytest.raises(ValueError, match="must be in \\[0, 1\\]"):
+        ivy_rl.generalized_advantages(r, r, r, z, z, **setting)
+    if "discount" in setting:
+        with pytest.raises(ValueError, match="discount must be in \\[0, 1\\]"):
+            ivy_rl.n_step_returns(r, r, z, z, **setting)
