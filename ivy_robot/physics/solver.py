@@ -15,19 +15,22 @@ zero on one-sided rows with ``jar >= 0``, and Huber-like on friction-loss rows (
 ``|jar| >= R frictionloss``); the row forces are ``efc_force = -ds_i/djar``.
 
 - ``"newton"``: Newton's method on ``qacc`` with the Hessian ``M + J' diag(D) J`` of the rows
-  in their quadratic zone and an *exact* line search: the cost along the search direction is a
-  piecewise quadratic whose breakpoints are known, so the minimiser is found by sorting them and
-  accumulating the slopes, without iteration. It stops once a step leaves every row in its zone,
-  which makes that step the exact minimiser (the cost is strictly convex), so the result is
-  MuJoCo's to rounding whatever path either takes. Batch elements that are done stop changing;
-  the loop ends when all are done (``while_loop``: a compiled loop on jax and tensorflow, a
-  Python loop on numpy and torch).
-- ``"pgs"``: MuJoCo's projected Gauss-Seidel on the dual, iterate for iterate: its Nesterov
-  momentum with gradient restarts, its row order (a Fisher-Yates shuffle of the rows at every
-  sweep, drawn from its PCG32 generator with its fixed seed), its rejection of updates that
-  raise the cost by more than ``1e-10``, and its stopping rule (scaled improvement below the
-  tolerance). The shuffles depend only on the number of active rows; they are tabulated once
-  per ``(rows, iterations)`` in numpy.
+  in their quadratic zone and an *exact* line search (the cost along the search direction is a
+  piecewise quadratic with known breakpoints; see :func:`_line_search`). It stops once a step
+  leaves every row in its zone, which makes that step the exact minimiser (the cost is strictly
+  convex): the result is MuJoCo's to rounding whatever path either takes, and ``tolerance``
+  does not enter. Batch elements that are done stop changing; the loop ends when all are done
+  (``while_loop``: a compiled loop on jax and tensorflow; a Python loop on numpy and torch,
+  where torch.compile breaks the graph at its test once per iteration and compiles the body
+  once).
+- ``"pgs"``: MuJoCo 4.0.1's projected Gauss-Seidel on the dual, iterate for iterate (it stops
+  unconverged): its Nesterov momentum with gradient restarts, its row order (a Fisher-Yates
+  shuffle of the rows at every sweep, drawn from its PCG32 generator with its fixed seed), its
+  rejection of updates that raise the cost by more than ``1e-10``, and its stopping rule
+  (improvement over the constrained dofs' inertia below the tolerance). The shuffles depend
+  only on the number of active rows; they are tabulated once per ``(rows, iterations)`` in
+  numpy. MuJoCo runs PGS per constraint island: this is its iteration for one island (one
+  kinematic tree, as Gymnasium's robots, or islands disabled).
 
 Gradients: the iterations run under ``stop_gradient``; the outputs are differentiated
 implicitly, by one Newton step taken with gradients from the solution, with the rows' zones held
@@ -92,10 +95,17 @@ class ConstraintSolution(NamedTuple):
 
 
 class SolverOptions(NamedTuple):
-    """The solver's settings, as in ``mjModel.opt`` (and ``mjModel.stat.meaninertia``).
+    """The solver's settings, as in ``mjModel.opt``.
 
-    ``ls_iterations`` and ``ls_tolerance`` are accepted for completeness: the Newton line search
-    here is exact and has no iterations. ``warmstart=False`` is MuJoCo's ``mjDSBL_WARMSTART``.
+    ``warmstart=False`` is MuJoCo's ``mjDSBL_WARMSTART``, ``islands=False`` its
+    ``mjDSBL_ISLAND``. PGS's stopping rule scales its improvement by the inverse of the
+    constrained dofs' inertia, as MuJoCo 4.0.1 does: ``1 / sum(diag(M))`` over the dofs of the
+    kinematic trees that active rows touch (``dof_tree``: each dof's tree, MuJoCo's
+    ``dof_treeid``; None: one tree) when ``islands``, over every dof otherwise.
+
+    Newton stops at the exact minimiser, so ``tolerance`` (and ``ls_iterations``,
+    ``ls_tolerance``: its line search is exact) do not change its result; ``meaninertia``
+    (``mjModel.stat.meaninertia``, MuJoCo 3's PGS scale) is kept for reference only.
     """
 
     solver: str = "newton"  # "newton" or "pgs"
@@ -105,6 +115,8 @@ class SolverOptions(NamedTuple):
     ls_tolerance: float = 0.01
     meaninertia: float = 1.0
     warmstart: bool = True
+    islands: bool = True
+    dof_tree: tuple[int, ...] | None = None
 
     @classmethod
     def from_mujoco(cls, model: Any) -> SolverOptions:
@@ -141,6 +153,8 @@ class SolverOptions(NamedTuple):
             ls_tolerance=float(opt.ls_tolerance),
             meaninertia=float(model.stat.meaninertia),
             warmstart=not int(opt.disableflags) & int(mujoco.mjtDisableBit.mjDSBL_WARMSTART),
+            islands=not int(opt.disableflags) & int(mujoco.mjtDisableBit.mjDSBL_ISLAND),
+            dof_tree=tuple(int(t) for t in model.dof_treeid),
         )
 
 
@@ -636,7 +650,8 @@ def _pgs(xp, rows: _Rows, start, options: SolverOptions):
     )
     table = xp.constant(_shuffle_table(n, options.iterations), device=xp.dev(like))
     positions = xp.arange(n, device=xp.dev(like))
-    scale = 1.0 / (options.meaninertia * max(1, rows.M.shape[-1]))
+    inertia = _island_inertia(xp, rows, options)
+    scale = 1.0 / xp.where(inertia > 0, inertia, xp.ones_like(inertia))
     most = xp.max(count)
 
     def sweep(force, step):
@@ -706,6 +721,28 @@ def _pgs(xp, rows: _Rows, start, options: SolverOptions):
     carry = (force, force, zeros_int, done, zeros_int, step0)
     force, _, _, _, iterations, _ = xp.while_loop(keep_going, iterate, carry)
     return force, iterations
+
+
+def _island_inertia(xp, rows: _Rows, options: SolverOptions):
+    """The sum of the inertia matrix's diagonal over the constrained dofs *[B]*: the dofs of
+    the trees that active rows touch (MuJoCo's island, where there is one) or every dof."""
+    diagonal = _diagonal(xp, rows.M)
+    if not options.islands:
+        return xp.sum(diagonal, axis=-1)
+    nv = rows.M.shape[-1]
+    tree = np.zeros(nv, np.int64) if options.dof_tree is None else np.asarray(options.dof_tree)
+    if tree.shape != (nv,):
+        raise ValueError(f"constraint solver: dof_tree has {tree.shape[0]} dofs, expected {nv}")
+    # dof -> tree incidence (a tree of -1, a static dof, is no tree)
+    incidence = xp.constant(
+        (tree[:, None] == np.arange(max(int(tree.max()) + 1, 1))[None, :]).astype(np.float64),
+        dtype=diagonal.dtype,
+        device=xp.dev(diagonal),
+    )
+    touched = xp.astype(xp.sum(xp.abs(rows.J), axis=-2) > 0, diagonal.dtype)  # [B, nv]
+    trees = xp.astype(xp.matmul(touched, incidence) > 0, diagonal.dtype)  # [B, trees]
+    island = xp.matmul(trees, xp.matrix_transpose(incidence)) > 0  # [B, nv]
+    return xp.sum(xp.where(island, diagonal, xp.zeros_like(diagonal)), axis=-1)
 
 
 def _project(xp, rows: _Rows, force):
