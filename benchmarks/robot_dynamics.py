@@ -1,23 +1,26 @@
-"""Forward dynamics and a full step of Gymnasium's Hopper: ivy_robot's KinematicTree dynamics,
-compiled on jax and torch, against MuJoCo on the CPU (``mujoco.rollout``: ``mj_step`` looped in C
-over the batch; a Python loop of ``mj_forward`` for forward dynamics) and, where it imports,
-MJX (``jax.vmap`` of ``mjx.forward`` / ``mjx.step``, jitted), measured in the same run.
+"""A step of Gymnasium's Hopper and Ant with contacts: ivy_robot.physics (MuJoCo's pipeline
+written once), compiled on jax and torch, against MuJoCo on the CPU (``mujoco.rollout``:
+``mj_step`` looped in C over the batch, one thread) and, where it imports, MJX (``jax.vmap`` of
+``mjx.step``, jitted), with the same physics on every side: collision detection, contacts, joint
+limits and the Newton solver, measured in the same run.
 
-The Hopper (Gymnasium's ``hopper.xml``: 6 dofs, 3 motors, RK4, h = 0.002 s) starts from random
-states lifted above the floor (no contacts: MuJoCo still runs its collision detection, which
-ivy_robot does not have). Every implementation is first checked against MuJoCo (1e-9 on qacc
-and the stepped state), then timed after a warm-up that compiles (the compile time, wall clock,
-is reported). The implementations of one batch size take turns (benchmarks/_timing.py:
+The states come from MuJoCo itself: each starts at the model's reference pose with Gymnasium's
+reset noise and runs 100 to 300 steps of random controls, so the robots stand, fall and lie on
+their floor with their contacts and limits active as in training (the full state, the solver's
+warm start included, is MuJoCo's ``mjSTATE_INTEGRATION``). Every implementation is first checked
+against ``mujoco.rollout``'s next state (1e-8), then timed after a warm-up that compiles (its
+wall time is reported). The implementations of one batch size take turns (benchmarks/_timing.py:
 interleaved, shuffled repeats); the minimum per call and per state is reported, with the ratio
-to MuJoCo's (< 1: faster).
+to MuJoCo's (< 1: faster). ``--memory`` runs each compiled step again in a fresh process and
+reports its peak resident memory above the same process at batch 1.
 
 MJX is not a dependency of the project: point ``--mjx-path`` at a folder where ``mujoco-mjx``
 (and its requirements ``etils``, ``trimesh``) are installed, e.g. ``pip install --no-deps
 --target /tmp/mjxpkg mujoco-mjx etils trimesh``; it is appended to ``sys.path``.
 
 Usage:
-    .venv/bin/python benchmarks/robot_dynamics.py [--batches 1,1000,100000] [--repeats 5]
-        [--backends jax,torch] [--torch-threads 1] [--clock wall|cpu] [--mjx-path DIR]
+    .venv/bin/python benchmarks/robot_dynamics.py [--models hopper,ant] [--batches 1000,4096]
+        [--repeats 5] [--backends jax,torch] [--torch-threads 1] [--mjx-path DIR] [--memory]
 """
 
 from __future__ import annotations
@@ -25,6 +28,7 @@ from __future__ import annotations
 import argparse
 import importlib.util
 import os
+import subprocess
 import sys
 import time
 import timeit
@@ -38,155 +42,200 @@ sys.path[:0] = [_HERE, os.path.join(_HERE, "..")]
 from _timing import interleaved_samples  # noqa: E402
 
 import ivy  # noqa: E402
-import ivy_robot  # noqa: E402
+from ivy_robot import physics  # noqa: E402
 
 
-def hopper_path() -> str:
+def model_path(name: str) -> str:
     import gymnasium
 
     folder = os.path.join(os.path.dirname(gymnasium.__file__), "envs", "mujoco", "assets")
-    return os.path.join(folder, "hopper.xml")
+    return os.path.join(folder, f"{name}.xml")
 
 
-def random_states(model, batch, rng):
-    """Lifted hopper states inside the joint ranges, random velocities and controls, kept where
-    MuJoCo finds no contact (the folded leg can touch the torso) and no constraint."""
+def sample_states(model, batch: int, rng):
+    """``(qpos, qvel, qacc_warmstart, ctrl, states)``: ``batch`` states reached by MuJoCo from
+    noisy reference poses under random controls (``mujoco.rollout``, then one last ``mj_step``
+    each for its warm start), their MuJoCo states (``mjSTATE_FULLPHYSICS``) and a control."""
     import mujoco
+    from mujoco import rollout
 
+    spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
     data = mujoco.MjData(model)
-    kept = []
-    while len(kept) < batch:
-        q = model.qpos0.copy()
-        for j in range(model.njnt):
-            if model.jnt_limited[j]:
-                lo, hi = model.jnt_range[j]
-                q[model.jnt_qposadr[j]] = rng.uniform(lo + 0.2 * (hi - lo), hi - 0.2 * (hi - lo))
-        q[1] = 2.0  # rootz: above the floor
-        data.qpos[:] = q
-        mujoco.mj_forward(model, data)
-        if data.ncon == 0 and data.nefc == 0:
-            kept.append(q)
-    v = rng.normal(scale=0.5, size=(batch, model.nv))
-    u = rng.uniform(-1.0, 1.0, size=(batch, model.nu))
-    return np.stack(kept), v, u
+    size = mujoco.mj_stateSize(model, spec)
+    start = np.zeros((batch, size))
+    for k in range(batch):
+        mujoco.mj_resetData(model, data)
+        data.qpos[:] = model.qpos0 + rng.uniform(-0.1, 0.1, size=model.nq)
+        data.qvel[:] = 0.1 * rng.normal(size=model.nv)
+        mujoco.mj_getState(model, data, start[k], spec)
+    steps = int(rng.integers(100, 300))
+    low, high = model.actuator_ctrlrange.T
+    controls = rng.uniform(low, high, size=(batch, steps, model.nu))
+    states, _ = rollout.rollout(model, data, start, controls)
+    qpos, qvel = np.zeros((batch, model.nq)), np.zeros((batch, model.nv))
+    warm, final = np.zeros((batch, model.nv)), np.zeros((batch, size))
+    for k in range(batch):
+        mujoco.mj_setState(model, data, states[k, -1], spec)
+        data.ctrl[:] = rng.uniform(low, high)
+        mujoco.mj_step(model, data)  # the warm start of the next step, as training carries it
+        qpos[k], qvel[k], warm[k] = data.qpos, data.qvel, data.qacc_warmstart
+        mujoco.mj_getState(model, data, final[k], spec)
+    ctrl = rng.uniform(low, high, size=(batch, model.nu))
+    return qpos, qvel, warm, ctrl, final
 
 
-def mujoco_reference(model, q, v, u):
-    """MuJoCo's qacc and next state; the step with contacts and limits disabled, since a step
-    from a constraint-free state may reach one (the Hopper's foot can touch its torso)."""
-    import mujoco
-
-    smooth = mujoco.MjModel.from_xml_path(hopper_path())
-    for bit in (mujoco.mjtDisableBit.mjDSBL_CONTACT, mujoco.mjtDisableBit.mjDSBL_LIMIT):
-        smooth.opt.disableflags |= int(bit)
-    data, smooth_data = mujoco.MjData(model), mujoco.MjData(smooth)
-    qacc, nxt = [], []
-    for qi, vi, ui in zip(q, v, u):
-        data.qpos[:], data.qvel[:], data.ctrl[:] = qi, vi, ui
-        mujoco.mj_forward(model, data)
-        assert data.ncon == 0 and data.nefc == 0, "a state with contacts or limits"
-        qacc.append(data.qacc.copy())
-        smooth_data.qpos[:], smooth_data.qvel[:], smooth_data.ctrl[:] = qi, vi, ui
-        mujoco.mj_step(smooth, smooth_data)
-        nxt.append(np.concatenate([smooth_data.qpos, smooth_data.qvel]))
-    return np.stack(qacc), np.stack(nxt)
-
-
-def mujoco_runs(model, q, v, u):
+def mujoco_run(model, states, warm, ctrl):
+    """One ``mj_step`` per state, looped in C (``mujoco.rollout``, one thread)."""
     import mujoco
     from mujoco import rollout
 
     data = mujoco.MjData(model)
+    control = ctrl[:, None, :]
+    out = np.zeros((len(states), 1, states.shape[1]))
+
+    def step():
+        return rollout.rollout(
+            model, data, states, control, nstep=1, state=out, initial_warmstart=warm
+        )[0]
+
+    return step
+
+
+def mujoco_next(model, states, warm, ctrl):
+    import mujoco
+    from mujoco import rollout
+
+    data = mujoco.MjData(model)
+    nxt, _ = rollout.rollout(model, data, states, ctrl[:, None, :], initial_warmstart=warm)
     spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
-    states = np.zeros((len(q), mujoco.mj_stateSize(model, spec)))
-    for k, (qi, vi) in enumerate(zip(q, v)):
-        data.qpos[:], data.qvel[:] = qi, vi
-        mujoco.mj_getState(model, data, states[k], spec)
-    control = u[:, None, :]
-    out = np.zeros((len(q), 1, states.shape[1]))
-
-    def forward_loop():
-        for qi, vi, ui in zip(q, v, u):
-            data.qpos[:], data.qvel[:], data.ctrl[:] = qi, vi, ui
-            mujoco.mj_forward(model, data)
-        return data.qacc
-
-    def step_rollout():
-        return rollout.rollout(model, data, states, control, nstep=1, state=out)
-
-    return {
-        "MuJoCo mj_forward (Python loop)": forward_loop,
-        "MuJoCo rollout (C loop)": step_rollout,
-    }
+    qpos = np.zeros((len(states), model.nq))
+    qvel = np.zeros((len(states), model.nv))
+    for k in range(len(states)):
+        mujoco.mj_setState(model, data, nxt[k, -1], spec)
+        qpos[k], qvel[k] = data.qpos, data.qvel
+    return np.concatenate([qpos, qvel], axis=-1)
 
 
-def ivy_runs(tree, backend, q, v, u, want_qacc, want_next, compile_times):
+def ivy_step(model, backend):
     xp = getattr(ivy, backend)
-    x = [xp.asarray(a) for a in (q, v, u)]
-    sync = (lambda out: out.block_until_ready()) if backend == "jax" else (lambda out: out)
 
-    def step(qpos, qvel, ctrl):
-        qpos1, qvel1 = tree.step(qpos, qvel, ctrl)
-        return xp.concat([qpos1, qvel1], axis=-1)
+    def step(qpos, qvel, warm, ctrl):
+        data = physics.step(xp, model, physics.make_data(xp, model, qpos, qvel, ctrl, None, warm))
+        return xp.concat([data.qpos, data.qvel], axis=-1)
 
-    runs = {}
-    for label, fn, want in (
-        ("forward dynamics", tree.forward_dynamics, want_qacc),
-        ("step", step, want_next),
-    ):
-        compiled = ivy.compile_fn(fn)
-        start = time.perf_counter()
-        got = sync(compiled(*x))
-        compile_times[f"ivy {backend} {label}"] = time.perf_counter() - start
-        got = ivy.to_numpy(got)
-        np.testing.assert_allclose(got[: len(want)], want, rtol=1e-9, atol=1e-9, err_msg=label)
-        runs[f"ivy {backend} compiled: {label}"] = lambda c=compiled: sync(c(*x))
-    return runs
+    return ivy.compile_fn(step)
 
 
-def mjx_runs(model, q, v, u, want_qacc, want_next, compile_times):
+def mjx_step(mjmodel):
     import jax
     from mujoco import mjx
 
-    mx = mjx.put_model(model)
+    mx = mjx.put_model(mjmodel)
     base = mjx.make_data(mx)
 
-    def make(qi, vi, ui):
-        return base.replace(qpos=qi, qvel=vi, ctrl=ui)
+    def one(q, v, w, u):
+        d = mjx.step(mx, base.replace(qpos=q, qvel=v, qacc_warmstart=w, ctrl=u))
+        return jax.numpy.concatenate([d.qpos, d.qvel])
 
-    forward = jax.jit(jax.vmap(lambda a, b, c: mjx.forward(mx, make(a, b, c)).qacc))
-    step = jax.jit(
-        jax.vmap(
-            lambda a, b, c: (lambda d: jax.numpy.concatenate([d.qpos, d.qvel]))(
-                mjx.step(mx, make(a, b, c))
-            )
-        )
-    )
-    x = [jax.numpy.asarray(a) for a in (q, v, u)]
-    runs = {}
-    for label, fn, want in (("forward dynamics", forward, want_qacc), ("step", step, want_next)):
+    return jax.jit(jax.vmap(one))
+
+
+def _sync(out):
+    return out.block_until_ready() if hasattr(out, "block_until_ready") else out
+
+
+def measure(args, name, batch, backends, use_mjx):
+    import mujoco
+
+    mjmodel = mujoco.MjModel.from_xml_path(model_path(name))
+    model = physics.read_model(mjmodel)
+    rng = np.random.default_rng(batch)
+    q, v, w, u, states = sample_states(mjmodel, batch, rng)
+    want = mujoco_next(mjmodel, states, w, u)
+    runs = {"MuJoCo rollout (C loop, 1 thread)": mujoco_run(mjmodel, states, w, u)}
+    compile_times, errors = {}, {}
+    for backend in backends:
+        xp = getattr(ivy, backend)
+        x = [xp.asarray(a) for a in (q, v, w, u)]
+        compiled = ivy_step(model, backend)
         start = time.perf_counter()
-        got = np.asarray(fn(*x).block_until_ready())
-        compile_times[f"MJX {label}"] = time.perf_counter() - start
-        error = float(np.abs(got[: len(want)] - want).max())
-        compile_times[f"MJX {label} max |error| vs MuJoCo"] = error
-        runs[f"MJX (jax.vmap, jit): {label}"] = lambda f=fn: f(*x).block_until_ready()
-    return runs
+        got = ivy.to_numpy(_sync(compiled(*x)))
+        compile_times[f"ivy {backend}"] = time.perf_counter() - start
+        errors[f"ivy {backend}"] = float(np.abs(got - want).max())
+        np.testing.assert_allclose(got, want, rtol=1e-8, atol=1e-8, err_msg=backend)
+        runs[f"ivy {backend} compiled"] = lambda c=compiled, x=x: _sync(c(*x))
+    if use_mjx:
+        import jax.numpy as jnp
+
+        fn = mjx_step(mjmodel)
+        x = [jnp.asarray(a) for a in (q, v, w, u)]
+        start = time.perf_counter()
+        got = np.asarray(_sync(fn(*x)))
+        compile_times["MJX"] = time.perf_counter() - start
+        errors["MJX"] = float(np.abs(got - want).max())
+        runs["MJX (vmap, jit)"] = lambda f=fn, x=x: _sync(f(*x))
+    for fn in runs.values():  # warm-up
+        fn(), fn()
+    number = max(1, min(20, int(2e3 // batch)))
+    samples = interleaved_samples(
+        {k: timeit.Timer(fn) for k, fn in runs.items()}, number, args.repeats
+    )
+    best = {k: min(s) for k, s in samples.items()}
+    reference = best["MuJoCo rollout (C loop, 1 thread)"]
+    print(f"\n{name}, batch {batch:,}: {number} calls per sample, {args.repeats} samples (min)")
+    print(f"{'implementation':36s} {'per call':>12s} {'per state':>12s} {'/ MuJoCo':>9s}")
+    for k, t in best.items():
+        print(f"{k:36s} {t * 1e3:10.2f}ms {t / batch * 1e6:10.2f}us {t / reference:9.2f}")
+    for k, t in compile_times.items():
+        print(f"  first call (trace and compile) {k}: {t:.1f} s; max |error| {errors[k]:.1e}")
+
+
+def memory(args, name, backend, batch):
+    """Peak resident memory (MB) of a process that compiles and runs the step once."""
+    root = os.path.join(_HERE, "..")
+    code = (
+        f"import sys, resource; sys.path[:0] = [{_HERE!r}, {root!r}]; "
+        f"import robot_dynamics as b; b._memory_child({name!r}, {backend!r}, {batch}); "
+        "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    if out.returncode:
+        raise RuntimeError(out.stderr[-2000:])
+    return int(out.stdout.strip().splitlines()[-1]) / 1024
+
+
+def _memory_child(name, backend, batch):
+    import mujoco
+
+    if backend == "jax":
+        import jax
+
+        jax.config.update("jax_enable_x64", True)
+    warnings.filterwarnings("ignore")
+    mjmodel = mujoco.MjModel.from_xml_path(model_path(name))
+    model = physics.read_model(mjmodel)
+    xp = getattr(ivy, backend)
+    x = [
+        xp.asarray(np.tile(a, (batch, 1)))
+        for a in (mjmodel.qpos0, np.zeros(mjmodel.nv), np.zeros(mjmodel.nv), np.zeros(mjmodel.nu))
+    ]
+    compiled = ivy_step(model, backend)
+    for _ in range(2):
+        _sync(compiled(*x))
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--batches", default="1,1000,100000")
+    parser.add_argument("--models", default="hopper,ant")
+    parser.add_argument("--batches", default="1000,4096")
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--backends", default="jax,torch")
     parser.add_argument("--torch-threads", type=int, default=1)
-    parser.add_argument("--clock", choices=("wall", "cpu"), default="wall")
     parser.add_argument("--mjx-path", default=None)
+    parser.add_argument("--memory", action="store_true")
     args = parser.parse_args()
     if args.mjx_path:  # before mujoco is imported: mujoco.mjx is found on the path then
         sys.path.append(args.mjx_path)
-    import mujoco
-
     backends = [b for b in args.backends.split(",") if importlib.util.find_spec(b)]
     if "jax" in backends or args.mjx_path:
         import jax
@@ -205,42 +254,20 @@ def main():
         except ImportError as err:
             print(f"MJX does not import ({err}): its rows are left out\n")
     warnings.filterwarnings("ignore")
-    model = mujoco.MjModel.from_xml_path(hopper_path())
-    tree = ivy_robot.KinematicTree.from_mjcf(model)
-    rng = np.random.default_rng(0)
-    clock = time.perf_counter if args.clock == "wall" else time.process_time
     print(
-        f"Gymnasium Hopper (nq={model.nq}, nv={model.nv}, nu={model.nu}, {tree.integrator}, "
-        f"h={tree.timestep}), float64; torch threads: {args.torch_threads}; clock: "
-        f"{args.clock}; load average: {os.getloadavg()[0]:.1f}"
+        f"float64; torch threads: {args.torch_threads}; load average "
+        f"{os.getloadavg()[0]:.1f}; {os.cpu_count()} cores"
     )
-    for batch in (int(b) for b in args.batches.split(",")):
-        q, v, u = random_states(model, batch, rng)
-        check = min(batch, 50)
-        want_qacc, want_next = mujoco_reference(model, q[:check], v[:check], u[:check])
-        compile_times = {}
-        runs = mujoco_runs(model, q, v, u)
-        for backend in backends:
-            runs.update(ivy_runs(tree, backend, q, v, u, want_qacc, want_next, compile_times))
-        if use_mjx:
-            runs.update(mjx_runs(model, q, v, u, want_qacc, want_next, compile_times))
-        for fn in runs.values():  # warm-up
-            fn(), fn()
-        number = max(1, min(50, int(1e4 // batch)))
-        repeats = args.repeats if batch < 100000 else max(3, args.repeats // 2)
-        samples = interleaved_samples(
-            {name: timeit.Timer(fn, timer=clock) for name, fn in runs.items()}, number, repeats
-        )
-        best = {name: min(s) for name, s in samples.items()}
-        mj_forward = best["MuJoCo mj_forward (Python loop)"]
-        mj_step = best["MuJoCo rollout (C loop)"]
-        print(f"\nbatch {batch:,}: {number} calls per sample, {repeats} samples (minimum)")
-        print(f"{'implementation':44s} {'per call':>12s} {'per state':>12s} {'/ MuJoCo':>9s}")
-        for name, t in best.items():
-            ref = mj_step if ("step" in name or "rollout" in name) else mj_forward
-            print(f"{name:44s} {t * 1e6:10.1f}us {t / batch * 1e6:10.3f}us {t / ref:9.2f}")
-        for name, t in compile_times.items():
-            print(f"  first call (compile) {name}: {t:.3g}" + ("" if "error" in name else " s"))
+    for name in args.models.split(","):
+        for batch in (int(b) for b in args.batches.split(",")):
+            measure(args, name, batch, backends, use_mjx)
+        if args.memory:
+            largest = max(int(b) for b in args.batches.split(","))
+            for backend in backends:
+                base = memory(args, name, backend, 1)
+                peak = memory(args, name, backend, largest)
+                print(f"  peak memory, {name} {backend} batch {largest:,}: {peak:.0f} MB "
+                      f"({peak - base:+.0f} MB over batch 1)")  # fmt: skip
 
 
 if __name__ == "__main__":
