@@ -348,11 +348,7 @@ def _forces(xp, rows: _Rows, jar, below, above):
 
 def _cost(xp, rows: _Rows, jar):
     """The rows' cost at ``jar``, summed per batch element."""
-    below, above = _zones(xp, rows, jar)
-    fl = rows.floss
-    linear = -0.5 * rows.R * fl * fl + xp.where(below, -fl, fl) * jar
-    quadratic = xp.logical_not(xp.logical_or(below, above))
-    return xp.sum(xp.where(quadratic, 0.5 * rows.D * jar * jar, linear), axis=-1)
+    return xp.sum(_row_costs(xp, rows, jar, *_zones(xp, rows, jar)), axis=-1)
 
 
 def _zones_of_forces(xp, rows: _Rows, force):
@@ -379,13 +375,22 @@ def _total_cost(xp, rows: _Rows, qacc):
 
 def _newton(xp, rows: _Rows, start, options: SolverOptions):
     """Newton's method with exact line searches from the warm start; returns ``qacc``, its
-    ``jar`` and the iterations per batch element."""
+    ``jar`` and the iterations per batch element.
+
+    It stops where MuJoCo's does: at the start, when the scaled gradient and Newton decrement
+    are both below the tolerance; after a step, when the scaled improvement, gradient or
+    decrement is (scale: the inverse of the constrained dofs' inertia). It also stops after a
+    step that changed no row's zone, which makes the new point the exact minimiser (MuJoCo would
+    stop there at its next test), and where the line search cannot descend."""
     qacc = rows.qacc_smooth
     if start is not None:  # the cheaper of qacc_warmstart and qacc_smooth
         smooth_cost = _cost(xp, rows, xp.matvec(rows.J, qacc) - rows.aref)
         worse = _total_cost(xp, rows, start) > smooth_cost
         qacc = xp.where(worse[:, None], qacc, start)
     jar = xp.matvec(rows.J, qacc) - rows.aref
+    inertia = _island_inertia(xp, rows, options)
+    scale = 1.0 / xp.where(inertia > 0, inertia, xp.ones_like(inertia))
+    tolerance = options.tolerance
     batch = qacc.shape[0]
     done = xp.zeros((batch,), dtype=xp.bool, device=xp.dev(qacc))
     count = xp.zeros((batch,), dtype=xp.int32, device=xp.dev(qacc))
@@ -396,47 +401,73 @@ def _newton(xp, rows: _Rows, start, options: SolverOptions):
         return xp.logical_and(step < options.iterations, xp.any(xp.logical_not(done)))
 
     def iterate(carry):
-        qacc, jar, below, above, done, count, step = carry
-        new = _newton_step(xp, rows, qacc, jar, below, above)
-        new_qacc, new_jar, new_below, new_above = new
-        settled = xp.all(
-            xp.logical_and(new_below == below, new_above == above), axis=-1
-        )  # no row changed zone: the new point is the exact minimiser
+        qacc, jar, below, above, improvement, done, count, step = carry
+        gauss, grad, search = _newton_direction(xp, rows, qacc, jar, below, above)
+        gradient = scale * xp.sqrt(xp.sum(grad * grad, axis=-1))
+        decrement = xp.maximum(-0.5 * scale * xp.sum(grad * search, axis=-1), xp.zeros_like(scale))
+        small = xp.logical_or(gradient < tolerance, decrement < tolerance)
+        improved = xp.logical_and(improvement > 0, improvement < tolerance)
+        first = xp.logical_and(gradient < tolerance, decrement < tolerance)
+        done = xp.logical_or(done, xp.where(step == 0, first, xp.logical_or(small, improved)))
+
+        Jv = xp.matvec(rows.J, search)
+        slope0 = xp.sum(gauss * search, axis=-1)
+        curvature = xp.sum(search * xp.matvec(rows.M, search), axis=-1)
+        alpha = _line_search(xp, rows, jar, Jv, slope0, curvature)
+        done = xp.logical_or(done, xp.logical_not(alpha > 0))  # no descent
+        new_jar = jar + alpha[:, None] * Jv
+        new_below, new_above = _zones(xp, rows, new_jar)
+        decrease = _cost_decrease(xp, rows, jar, new_jar, alpha, slope0, curvature)
+        settled = xp.all(xp.logical_and(new_below == below, new_above == above), axis=-1)
         keep = done[:, None]
         return (
-            xp.where(keep, qacc, new_qacc),
+            xp.where(keep, qacc, qacc + alpha[:, None] * search),
             xp.where(keep, jar, new_jar),
             xp.where(keep, below, new_below),
             xp.where(keep, above, new_above),
+            xp.where(done, improvement, scale * decrease),
             xp.logical_or(done, settled),
             count + xp.astype(xp.logical_not(done), xp.int32),
             step + 1,
         )
 
-    carry = (qacc, jar, *_zones(xp, rows, jar), done, count, step)
+    zero = xp.zeros_like(scale)
+    carry = (qacc, jar, *_zones(xp, rows, jar), zero, done, count, step)
     qacc, *_, count, _ = xp.while_loop(keep_going, iterate, carry)
     # rows that exist in no batch element: MuJoCo's shortcut qacc = qacc_smooth
     qacc = xp.where(xp.any(rows.active, axis=-1)[:, None], qacc, rows.qacc_smooth)
     return qacc, xp.matvec(rows.J, qacc) - rows.aref, count
 
 
-def _newton_step(xp, rows: _Rows, qacc, jar, below, above):
-    """One Newton step with an exact line search from ``qacc`` (its ``jar`` and zones given);
-    returns the new ``qacc``, ``jar`` and zones."""
+def _newton_direction(xp, rows: _Rows, qacc, jar, below, above):
+    """At ``qacc`` (its ``jar`` and zones given): the Gauss term's gradient ``M qacc -
+    qfrc_smooth``, the cost's gradient and the Newton direction ``-H^-1 grad``."""
     quadratic = xp.logical_not(xp.logical_or(below, above))
     force = xp.where(quadratic, -rows.D * jar, xp.where(below, rows.floss, rows.high_force))
-    Ma = xp.matvec(rows.M, qacc)
-    gauss = Ma - rows.qfrc_smooth
+    gauss = xp.matvec(rows.M, qacc) - rows.qfrc_smooth
     grad = gauss - _matvec_T(xp, rows.J, force)
     DJ = xp.where(quadratic, rows.D, xp.zeros_like(rows.D))[..., None] * rows.J
     H = rows.M + xp.matmul(xp.matrix_transpose(rows.J), DJ)
-    search = -xp.linalg.solve(H, grad[..., None])[..., 0]
-    Jv = xp.matvec(rows.J, search)
-    slope0 = xp.sum(gauss * search, axis=-1)
-    curvature = xp.sum(search * xp.matvec(rows.M, search), axis=-1)
-    alpha = _line_search(xp, rows, jar, Jv, slope0, curvature)
-    new_jar = jar + alpha[:, None] * Jv
-    return (qacc + alpha[:, None] * search, new_jar, *_zones(xp, rows, new_jar))
+    return gauss, grad, -xp.linalg.solve(H, grad[..., None])[..., 0]
+
+
+def _row_costs(xp, rows: _Rows, jar, below, above):
+    fl = rows.floss
+    linear = -0.5 * rows.R * fl * fl + xp.where(below, -fl, fl) * jar
+    quadratic = xp.logical_not(xp.logical_or(below, above))
+    return xp.where(quadratic, 0.5 * rows.D * jar * jar, linear)
+
+
+def _cost_decrease(xp, rows: _Rows, jar, new_jar, alpha, slope0, curvature):
+    """``cost(old) - cost(new)`` along the line, summed term by term (a row that stays
+    quadratic: ``-D alpha Jv (jar + alpha Jv / 2)``), without the totals' cancellation."""
+    zones, new_zones = _zones(xp, rows, jar), _zones(xp, rows, new_jar)
+    change = _row_costs(xp, rows, new_jar, *new_zones) - _row_costs(xp, rows, jar, *zones)
+    both = xp.logical_not(xp.logical_or(xp.logical_or(*zones), xp.logical_or(*new_zones)))
+    moved = new_jar - jar
+    change = xp.where(both, rows.D * moved * (jar + 0.5 * moved), change)
+    gauss = alpha * slope0 + 0.5 * alpha * alpha * curvature
+    return -(gauss + xp.sum(change, axis=-1))
 
 
 def _directional(xp, rows: _Rows, jar, Jv, below, above):

@@ -26,6 +26,7 @@ mujoco = pytest.importorskip("mujoco")
 GYMNASIUM = {os.path.basename(p)[:-4]: p for p in gymnasium_models()}
 NEWTON_MODELS = ("hopper", "walker2d_v5", "half_cheetah", "ant")
 TOL = 1e-10  # relative to the largest magnitude of the compared quantity
+DECREMENT_STOPS = {"walker2d_v5": (510,), "ant": (796,)}  # steps of _trajectory
 
 # Two arms (hinges and a slide with friction loss and limits, a joint equality coupling two
 # hinges), a free box and a ball-jointed pendulum on a floor.
@@ -145,6 +146,21 @@ def _oracle(model, count, seed, steps=0, want=None):
     return found
 
 
+def _trajectory(model, at):
+    """Problems along a trajectory (random controls, on and off every 100 steps, from the
+    lowered initial state), at the steps ``at``: warm starts as a simulation has them."""
+    data, rng, found = mujoco.MjData(model), np.random.default_rng(0), []
+    mujoco.mj_resetData(model, data)
+    data.qpos[1] -= 0.3
+    for t in range(max(at) + 1):
+        data.ctrl[:] = rng.uniform(-1, 1, size=model.nu) * (t % 200 < 100)
+        mujoco.mj_step(model, data)
+        if t in at:
+            mujoco.mj_forward(model, data)
+            found.append(_read(model, data))
+    return found
+
+
 def _padded(problems, rng, spare=2):
     """The problems as one batch in a static row layout: a block of slots per kind (MuJoCo's
     order: equality, friction, one-sided), each problem's rows in order on a random subset of
@@ -207,11 +223,10 @@ def _maybe_compiled(backend, fn):
     return ivy.compile_fn(fn) if ivy.framework_handler.capabilities(backend).compiled_loops else fn
 
 
-def _solve(backend, model, problems, seed=0, compiled=None, dtype=np.float64, options=None):
+def _solve(backend, options, problems, seed=0, compiled=None, dtype=np.float64):
     """Solve the problems batched in a padded layout (compiled: see :func:`_maybe_compiled`)."""
     kinds, layout = _padded(problems, np.random.default_rng(seed))
     problem = _problem(layout, backend, dtype)
-    options = options or S.SolverOptions.from_mujoco(model)
     warm = native(layout["qacc_warmstart"].astype(dtype), backend)
     xp = getattr(ivy, backend)
 
@@ -223,16 +238,25 @@ def _solve(backend, model, problems, seed=0, compiled=None, dtype=np.float64, op
     return (ivy.compile_fn(run) if compiled else run)(problem, warm), layout
 
 
-def _with_dofs(problem, nv):
-    """``problem`` extended to ``nv`` dofs that nothing constrains (unit inertia, no forces):
-    problems of several models then share one batch."""
-    extra = nv - problem["M"].shape[0]
-    out = dict(problem)
-    out["M"] = np.pad(problem["M"], (0, extra)) + np.diag([0.0] * (nv - extra) + [1.0] * extra)
-    out["J"] = np.pad(problem["J"], ((0, 0), (0, extra)))
-    for key in ("qfrc_smooth", "qacc_smooth", "qacc_warmstart", "qacc", "qfrc_constraint"):
-        out[key] = np.pad(problem[key], (0, extra))
-    return out
+def _side_by_side(groups):
+    """Problems of several models in one batch: each model's dofs in a block of their own
+    (the other blocks: unit inertia, no forces, nothing constrains them), each block one tree
+    (the constrained dofs' inertia, which scales the stopping tests, is then the model's own).
+    Returns the problems and the dofs' trees."""
+    sizes = [group[0]["M"].shape[0] for group in groups]
+    nv, offsets = sum(sizes), np.cumsum([0, *sizes])
+    out = []
+    for k, group in enumerate(groups):
+        mine = slice(offsets[k], offsets[k + 1])
+        for problem in group:
+            wide = dict(problem, M=np.eye(nv), J=np.zeros((len(problem["D"]), nv)))
+            wide["M"][mine, mine] = problem["M"]
+            wide["J"][:, mine] = problem["J"]
+            for key in ("qfrc_smooth", "qacc_smooth", "qacc_warmstart", "qacc", "qfrc_constraint"):
+                wide[key] = np.zeros(nv)
+                wide[key][mine] = problem[key]
+            out.append(wide)
+    return out, tuple(int(k) for k, size in enumerate(sizes) for _ in range(size))
 
 
 @pytest.fixture(scope="module")
@@ -249,27 +273,32 @@ def oracles():
 
 
 def _make(name):
+    """``(options, problems)`` of a case."""
     if name == "newton":  # Gymnasium's Newton models and the scene, two states each
-        found = []
+        groups = []
         for i, model_name in enumerate(NEWTON_MODELS):
-            found += _oracle(_model(GYMNASIUM[model_name]), 2, seed=i)
-        model = _model(SCENE)
-        found += _oracle(model, 2, seed=1, want=(0, 1, 2))
-        nv = max(p["M"].shape[0] for p in found)
-        return model, [_with_dofs(p, nv) for p in found]
+            model = _model(GYMNASIUM[model_name])
+            groups.append(_oracle(model, 2, seed=i))
+            if model_name in DECREMENT_STOPS:  # MuJoCo stops on its Newton decrement there,
+                groups[-1] += _trajectory(model, DECREMENT_STOPS[model_name])  # 5e-6 from the end
+        # several trees: MuJoCo's Newton then runs per island, unless disabled
+        groups.append(_oracle(_model(SCENE, disable=["mjDSBL_ISLAND"]), 2, seed=1, want=(0, 1, 2)))
+        problems, trees = _side_by_side(groups)
+        return S.SolverOptions.from_mujoco(model)._replace(dof_tree=trees), problems
     if name in NEWTON_MODELS:
         model = _model(GYMNASIUM[name])
-        return model, _oracle(model, 3, seed=NEWTON_MODELS.index(name))
+        return S.SolverOptions.from_mujoco(model), _oracle(model, 3, seed=NEWTON_MODELS.index(name))
     if name == "humanoid":  # PGS, warm started by the previous steps, islands as MuJoCo has them
         model = _model(GYMNASIUM["humanoid"])  # (the second state stops at 38 iterations, which a
-        return model, _oracle(model, 2, seed=11, steps=2)  # scale by meaninertia * nv misses)
+        problems = _oracle(model, 2, seed=11, steps=2)  # scale by meaninertia * nv misses)
+        return S.SolverOptions.from_mujoco(model), problems
     if name == "scene_pgs":  # several trees: MuJoCo's PGS then runs per island unless disabled
         model = _model(SCENE, solver=mujoco.mjtSolver.mjSOL_PGS, disable=["mjDSBL_ISLAND"])
-        return model, _oracle(model, 3, seed=2, want=(0, 1, 2))
+        return S.SolverOptions.from_mujoco(model), _oracle(model, 3, seed=2, want=(0, 1, 2))
     if name == "scene_cold":
         disable = ["mjDSBL_ISLAND", "mjDSBL_WARMSTART"]
         model = _model(SCENE, solver=mujoco.mjtSolver.mjSOL_PGS, disable=disable)
-        return model, _oracle(model, 2, seed=3, want=(1, 2))
+        return S.SolverOptions.from_mujoco(model), _oracle(model, 2, seed=3, want=(1, 2))
     raise KeyError(name)
 
 
@@ -280,28 +309,30 @@ def _make(name):
 
 def test_newton_matches_mujoco(backend, oracles):
     """hopper, walker2d, half_cheetah, ant and the scene (friction loss, an equality, limits),
-    two states each, in one batch (the models' dofs padded to the ant's)."""
-    model, problems = oracles("newton")
+    two states each, and two states of trajectories where MuJoCo stops before the exact
+    minimiser, in one batch (:func:`_side_by_side`); MuJoCo's iterations too."""
+    options, problems = oracles("newton")
     kinds = set(np.concatenate([p["kinds"] for p in problems]))
     assert kinds == {S.ROW_EQUALITY, S.ROW_FRICTION, S.ROW_ONE_SIDED}
-    solution, layout = _solve(backend, model, problems)
+    solution, layout = _solve(backend, options, problems)
     _assert_matches(solution, problems, layout)
+    assert list(numpy_of(solution.iterations)) == [p["iterations"] for p in problems]
 
 
 def test_pgs_matches_mujoco_iterates_on_the_humanoid(backend, oracles):
     """MuJoCo's PGS stops after 50 iterations, unconverged: the same iterates are required, and
     the same stopping rule (its improvement over the trace of the island's inertia)."""
-    model, problems = oracles("humanoid")
-    assert S.SolverOptions.from_mujoco(model).solver == "pgs"
-    assert max(p["iterations"] for p in problems) == model.opt.iterations  # not converged
-    solution, layout = _solve(backend, model, problems)
+    options, problems = oracles("humanoid")
+    assert options.solver == "pgs"
+    assert max(p["iterations"] for p in problems) == options.iterations  # not converged
+    solution, layout = _solve(backend, options, problems)
     _assert_matches(solution, problems, layout)
     assert list(numpy_of(solution.iterations)) == [p["iterations"] for p in problems]
 
 
 def test_pgs_friction_loss_equality_and_limits(backend, oracles):
-    model, problems = oracles("scene_pgs")
-    solution, layout = _solve(backend, model, problems)
+    options, problems = oracles("scene_pgs")
+    solution, layout = _solve(backend, options, problems)
     _assert_matches(solution, problems, layout)
 
 
@@ -309,31 +340,32 @@ def test_warm_start_choice_and_cold_start(oracles):
     """Newton starts from the cheaper of the warm start and qacc_smooth (the result is the
     minimiser either way; the iterations are MuJoCo's); cold starts (MuJoCo's
     mjDSBL_WARMSTART, or no warm start given) for both solvers."""
-    model, problems = oracles("hopper")
-    solution, layout = _solve("numpy", model, problems)
+    options, problems = oracles("hopper")
+    solution, layout = _solve("numpy", options, problems)
     assert list(numpy_of(solution.iterations)) == [p["iterations"] for p in problems]
-    cold = S.SolverOptions.from_mujoco(model)._replace(warmstart=False)
-    _assert_matches(_solve("numpy", model, problems, options=cold)[0], problems, layout)
-    model, problems = oracles("scene_cold")
-    assert not S.SolverOptions.from_mujoco(model).warmstart
-    solution, layout = _solve("numpy", model, problems)
+    cold = options._replace(warmstart=False)
+    _assert_matches(_solve("numpy", cold, problems)[0], problems, layout)
+    options, problems = oracles("scene_cold")
+    assert not options.warmstart
+    solution, layout = _solve("numpy", options, problems)
     _assert_matches(solution, problems, layout)
 
 
 def test_float32_batch_shapes_and_rows_that_exist_nowhere(backend, oracles):
     """float32; a leading batch shape [2, 1] and an unbatched inertia; an element without active
     rows gets qacc_smooth and zero forces."""
-    model, problems = oracles("hopper")
+    options, problems = oracles("hopper")
+    nv = problems[0]["M"].shape[0]
     kinds, layout = _padded(problems[:2], np.random.default_rng(3))
     layout["active"][1] = False
     layout["M"] = layout["M"][0]
     layout["qacc_smooth"][1] = np.linalg.solve(layout["M"], layout["qfrc_smooth"][1])
     arrays = {k: v[:, None] if k not in ("M", "slots") else v for k, v in layout.items()}
     problem = _problem(arrays, backend, np.float32)
-    xp, options = getattr(ivy, backend), S.SolverOptions.from_mujoco(model)
+    xp = getattr(ivy, backend)
     solution = _maybe_compiled(backend, lambda p: S.solve(xp, p, kinds, None, options))(problem)
     assert numpy_of(solution.qacc).dtype == np.float32
-    assert tuple(solution.qacc.shape) == (2, 1, model.nv)
+    assert tuple(solution.qacc.shape) == (2, 1, nv)
     assert tuple(solution.iterations.shape) == (2, 1)
     squeezed = S.ConstraintSolution(*[a[:, 0] for a in solution])
     _assert_matches(S.ConstraintSolution(*[a[:1] for a in squeezed]), problems[:1], layout, 1e-4)
@@ -371,25 +403,25 @@ def _gradient_case(diff_backend, problems, options, inputs):
 
 
 def test_newton_gradients_match_finite_differences(diff_backend, oracles):
-    model, problems = oracles("newton")
+    options, problems = oracles("newton")
     problems = problems[-2:]  # the scene's: every row kind
     inputs = ("M", "qfrc_smooth", "J", "D", "aref", "frictionloss")  # (R: zone boundaries only)
-    _gradient_case(diff_backend, problems, S.SolverOptions.from_mujoco(model), inputs)
+    _gradient_case(diff_backend, problems, options, inputs)
 
 
 def test_pgs_gradients_match_finite_differences(diff_backend, oracles):
     """The implicit derivative of the exact dual solution, where PGS converges (this problem:
     in 4 iterations, to rounding). The dual reads R (``AR = J M^-1 J' + diag(R)``), not D."""
-    model, problems = oracles("scene_pgs")
-    options = S.SolverOptions.from_mujoco(model)._replace(iterations=100, tolerance=1e-15)
+    options, problems = oracles("scene_pgs")
+    options = options._replace(iterations=100, tolerance=1e-15)
     inputs = ("M", "qacc_smooth", "J", "R", "aref", "frictionloss")
     _gradient_case(diff_backend, problems[1:2], options, inputs)
 
 
 def test_compiled_equals_eager(graph_backend, oracles):
-    model, problems = oracles("hopper")
-    eager, _ = _solve(graph_backend, model, problems, compiled=False)
-    compiled, _ = _solve(graph_backend, model, problems, compiled=True)
+    options, problems = oracles("hopper")
+    eager, _ = _solve(graph_backend, options, problems, compiled=False)
+    compiled, _ = _solve(graph_backend, options, problems, compiled=True)
     for a, b in zip(compiled, eager):
         np.testing.assert_allclose(numpy_of(a), numpy_of(b), rtol=1e-12, atol=1e-9)
 
@@ -398,8 +430,8 @@ def test_torch_compile(oracles):
     """torch.compile is slow to start: one case. The solver's loops break the graph at their
     data-dependent stopping test; the loop body compiles once."""
     pytest.importorskip("torch")
-    model, problems = oracles("hopper")
-    compiled, layout = _solve("torch", model, problems, compiled=True)
+    options, problems = oracles("hopper")
+    compiled, layout = _solve("torch", options, problems, compiled=True)
     _assert_matches(compiled, problems, layout)
 
 
