@@ -16,13 +16,14 @@ zero on one-sided rows with ``jar >= 0``, and Huber-like on friction-loss rows (
 
 - ``"newton"``: Newton's method on ``qacc`` with the Hessian ``M + J' diag(D) J`` of the rows
   in their quadratic zone and an *exact* line search (the cost along the search direction is a
-  piecewise quadratic with known breakpoints; see :func:`_line_search`). It stops once a step
-  leaves every row in its zone, which makes that step the exact minimiser (the cost is strictly
-  convex): the result is MuJoCo's to rounding whatever path either takes, and ``tolerance``
-  does not enter. Batch elements that are done stop changing; the loop ends when all are done
-  (``while_loop``: a compiled loop on jax and tensorflow; a Python loop on numpy and torch,
-  where torch.compile breaks the graph at its test once per iteration and compiles the body
-  once).
+  piecewise quadratic with known breakpoints; see :func:`_line_search`), which lands where
+  MuJoCo's iterative one does. It stops on MuJoCo's tests (scaled gradient, improvement and
+  Newton decrement below the tolerance; MuJoCo can stop a little before the exact minimiser),
+  or once a step leaves every row in its zone, which makes that step the exact minimiser (the
+  cost is strictly convex). Batch elements that are done stop changing; the loop ends when all
+  are done (``while_loop``: a compiled loop on jax and tensorflow; a Python loop on numpy and
+  torch, where torch.compile breaks the graph at its test once per iteration and compiles the
+  body once).
 - ``"pgs"``: MuJoCo 4.0.1's projected Gauss-Seidel on the dual, iterate for iterate (it stops
   unconverged): its Nesterov momentum with gradient restarts, its row order (a Fisher-Yates
   shuffle of the rows at every sweep, drawn from its PCG32 generator with its fixed seed), its
@@ -98,14 +99,13 @@ class SolverOptions(NamedTuple):
     """The solver's settings, as in ``mjModel.opt``.
 
     ``warmstart=False`` is MuJoCo's ``mjDSBL_WARMSTART``, ``islands=False`` its
-    ``mjDSBL_ISLAND``. PGS's stopping rule scales its improvement by the inverse of the
-    constrained dofs' inertia, as MuJoCo 4.0.1 does: ``1 / sum(diag(M))`` over the dofs of the
-    kinematic trees that active rows touch (``dof_tree``: each dof's tree, MuJoCo's
-    ``dof_treeid``; None: one tree) when ``islands``, over every dof otherwise.
+    ``mjDSBL_ISLAND``. Both solvers' stopping tests scale by the inverse of the constrained
+    dofs' inertia, as MuJoCo 4.0.1 does: ``1 / sum(diag(M))`` over the dofs of the kinematic
+    trees that active rows touch (``dof_tree``: each dof's tree, MuJoCo's ``dof_treeid``; None:
+    one tree) when ``islands``, over every dof otherwise.
 
-    Newton stops at the exact minimiser, so ``tolerance`` (and ``ls_iterations``,
-    ``ls_tolerance``: its line search is exact) do not change its result; ``meaninertia``
-    (``mjModel.stat.meaninertia``, MuJoCo 3's PGS scale) is kept for reference only.
+    ``ls_iterations`` and ``ls_tolerance`` are kept for reference: the Newton line search is
+    exact. So is ``meaninertia`` (``mjModel.stat.meaninertia``, MuJoCo 3's scale).
     """
 
     solver: str = "newton"  # "newton" or "pgs"
