@@ -88,7 +88,7 @@ class Humanoid(MuJoCoEnv):
     carries_warmstart = True
     data_fields = ("xipos", "cinert", "cvel", "qfrc_actuator", "cfrc_ext", "efc_pos", "efc_vel")
     camera = "side"
-    view_width = 4.0
+    view_width = 3.0
 
     @property
     def can_terminate(self) -> bool:  # type: ignore[override]

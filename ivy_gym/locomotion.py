@@ -313,7 +313,7 @@ class SwimmerMuJoCo(MuJoCoEnv):
     position_dim = 2
     info_types = {"reward_ctrl": "action"}
     camera = "top"
-    view_width = 3.0
+    view_width = 4.5
 
     def _skipped(self) -> int:
         return 2 if self.params.exclude_current_positions_from_observation else 0

@@ -119,10 +119,6 @@ def _mujoco_extras(xml_file: str) -> dict:
 
     m = mujoco.MjModel.from_xml_path(gymnasium_asset(xml_file))
     rgba = np.array(m.geom_rgba, dtype=np.float64).reshape(-1, 4)
-    for g in range(m.ngeom):
-        mat = int(m.geom_matid[g])
-        if mat >= 0:
-            rgba[g] = m.mat_rgba[mat]
     tendon_qpos = np.zeros((m.ntendon, m.nq))
     tendon_dof = np.zeros((m.ntendon, m.nv))
     tendon_joints = [[] for _ in range(m.ntendon)]
@@ -515,6 +511,23 @@ class MuJoCoEnv(Env):
     def _position_stage(self) -> str:
         return "kinematics" if self.position_stale else "state"
 
+    def _kernel(self, xp, name: str, fn):
+        """``fn`` itself, or, where eager mode compiles each operation on first use
+        (``xp.capabilities.eager_compiles_ops``: jax), ``ivy.compile_fn(fn)`` made once per
+        kernel and parameters: a first eager call then compiles one program instead of each
+        operation and loop of the physics (inside a user's compiled function it is inlined).
+        ``fn`` must depend only on ``self.params`` and the model."""
+        capabilities = getattr(xp, "capabilities", None)
+        if not getattr(capabilities, "eager_compiles_ops", False):
+            return fn
+        cache = self.__dict__.get("_compiled_kernels")
+        if cache is None or cache[0] is not self.params:  # new parameters: new kernels
+            cache = self._compiled_kernels = (self.params, {})
+        key = (xp.__name__, name)
+        if key not in cache[1]:
+            cache[1][key] = xp.compile_fn(fn)
+        return cache[1][key]
+
     def kernel_initial(self, xp, state):
         """The carried parts of a draw as Gymnasium's reset leaves them: a cold warm start
         (``mj_resetData``) and the position of the state (``mj_forward``)."""
@@ -527,6 +540,11 @@ class MuJoCoEnv(Env):
         """Gymnasium's ``set_state(qpos, qvel)`` on ``state``: the new ``qpos`` and ``qvel``,
         the warm start kept (``keep_warmstart``; else zero), the tracked position recomputed
         by ``mj_forward``."""
+        name = f"set_state_{keep_warmstart}"
+        fn = self._kernel(xp, name, lambda *a: self._set_state(xp, *a, keep_warmstart))
+        return fn(state, qpos, qvel)
+
+    def _set_state(self, xp, state, qpos, qvel, keep_warmstart):
         parts = [qpos, qvel]
         if self.carries_warmstart:
             _, _, warm, _ = self.split_state(xp, state)
@@ -537,6 +555,9 @@ class MuJoCoEnv(Env):
         return xp.concat(parts, axis=-1)
 
     def kernel_observe(self, xp, state):
+        return self._kernel(xp, "observe", lambda s: self._observe(xp, s))(state)
+
+    def _observe(self, xp, state):
         qpos, qvel, warm, _ = self.split_state(xp, state)
         return self.observation(xp, self._data_at(xp, qpos, qvel, warm, self.reset_stage))
 
@@ -548,7 +569,12 @@ class MuJoCoEnv(Env):
     def simulate(self, xp, qpos, qvel, warm, ctrl):
         """``do_simulation``: ``frame_skip`` calls of ``mj_step`` with ``ctrl`` held, as one
         ``xp.scan``. Returns the :class:`ivy_robot.physics.Data` with the new ``qpos``,
-        ``qvel`` and ``qacc_warmstart`` and the last frame's :attr:`data_fields`."""
+        ``qvel`` and ``qacc_warmstart`` and the last frame's :attr:`data_fields` (``warm``:
+        the warm start, or None for a cold one; ``ctrl`` in the state's dtype)."""
+        fn = self._kernel(xp, "simulate", lambda *a: self._simulate(xp, *a))
+        return fn(qpos, qvel, qvel * 0.0 if warm is None else warm, ctrl)
+
+    def _simulate(self, xp, qpos, qvel, warm, ctrl):
         from ivy_robot.physics import Data, make_data, step
 
         m, fields = self.model, self.data_fields
@@ -560,14 +586,17 @@ class MuJoCoEnv(Env):
                 k: getattr(data, k) for k in fields
             }
 
-        carry = (qpos, qvel, qvel * 0.0 if warm is None else warm)
-        (qpos, qvel, warm), frames = xp.scan(frame, carry, None, length=int(self.params.frame_skip))
+        length = int(self.params.frame_skip)
+        (qpos, qvel, warm), frames = xp.scan(frame, (qpos, qvel, warm), None, length=length)
         last = {k: v[-1] for k, v in frames.items()}
         return Data(qpos=qpos, qvel=qvel, ctrl=ctrl, qacc_warmstart=warm, **last)
 
     def kernel_step_info(self, xp, state, action):
         """One step: ``(state, observation, reward, terminated, info)``, ``info`` Gymnasium's
         (a dict of arrays)."""
+        return self._kernel(xp, "step", lambda s, a: self._step_info(xp, s, a))(state, action)
+
+    def _step_info(self, xp, state, action):
         ctrl = cast_like(xp, action, state)
         batch = np.broadcast_shapes(tuple(state.shape[:-1]), tuple(ctrl.shape[:-1]))
         if tuple(state.shape[:-1]) != batch:  # the loop's carry keeps one shape
@@ -611,14 +640,18 @@ class MuJoCoEnv(Env):
         return (0, 2, 1) if self.camera == "side" else (0, 1, 2)
 
     def _view(self, s):
-        _, _, xpos = self._geoms(s)
+        """A square of ``view_width`` about the robot (its geoms' mean position), the floor
+        along the bottom of a side view."""
+        pos, _, _ = self._geoms(s)
         right, up, _ = self._axes()
+        body = pos[np.asarray(self.model.geom_type) != _PLANE]
+        centre = body.mean(axis=0) if len(body) else np.zeros(3)
         half = self.view_width / 2
-        centre_x = float(xpos[1, right]) if self.model.nbody > 1 else 0.0
+        x = float(centre[right])
         if self.camera == "side":
-            return (centre_x - half, centre_x + half, -0.3, 2 * half - 0.3)
-        centre_y = float(xpos[1, up]) if self.model.nbody > 1 else 0.0
-        return (centre_x - half, centre_x + half, centre_y - half, centre_y + half)
+            return (x - half, x + half, -0.4, 2 * half - 0.4)
+        y = float(centre[up])
+        return (x - half, x + half, y - half, y + half)
 
     def _draw(self, canvas, s):
         m = self.model
@@ -632,7 +665,7 @@ class MuJoCoEnv(Env):
         spread = max(float(np.ptp(depths)), 1e-9)
         for g in order:
             kind, size = int(m.geom_type[g]), m.geom_size[g]
-            near = (depths[g] - depths.min()) / spread
+            near = 1.0 if kind == _PLANE else (depths[g] - depths.min()) / spread
             color = tuple(int(255 * min(1.0, c * (0.7 + 0.3 * near))) for c in rgba[g, :3])
             p, r = pos[g][[right, up]], mat[g][[right, up]]  # rows: the drawn axes
             if kind == _PLANE:
@@ -655,16 +688,27 @@ class MuJoCoEnv(Env):
 
 
 def _draw_ground(canvas, height: float, camera: str, color) -> None:
-    """The floor: a band below ``height`` (side view) or the background tiled (top view)."""
+    """The floor: a band below ``height`` (side view) or the whole picture (top view), with
+    tiles of a darker shade that show the motion."""
     x0, x1, y0, y1 = canvas.x_min, canvas.x_max, canvas.y_min, canvas.y_max
+    dark = tuple(int(0.85 * c) for c in color)
+    tile = 0.5 if x1 - x0 <= 4.0 else 1.0
     if camera == "side":
         canvas.polygon([(x0, y0), (x1, y0), (x1, height), (x0, height)], color)
+        band = max(height - y0, 0.0) / 2
+        for i in range(math.floor(x0 / tile), math.ceil(x1 / tile)):
+            if i % 2 == 0:
+                a, b = i * tile, (i + 1) * tile
+                canvas.polygon(
+                    [(a, height - band), (b, height - band), (b, height), (a, height)], dark
+                )
         return
-    step = 1.0  # a checkerboard of 1 m tiles, to show motion
-    for i in range(math.floor(x0), math.ceil(x1)):
-        for j in range(math.floor(y0), math.ceil(y1)):
+    canvas.polygon([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], color)
+    for i in range(math.floor(x0 / tile), math.ceil(x1 / tile)):
+        for j in range(math.floor(y0 / tile), math.ceil(y1 / tile)):
             if (i + j) % 2 == 0:
-                canvas.polygon([(i, j), (i + step, j), (i + step, j + step), (i, j + step)], color)
+                a, b, c, d = i * tile, (i + 1) * tile, j * tile, (j + 1) * tile
+                canvas.polygon([(a, c), (b, c), (b, d), (a, d)], dark)
 
 
 def _convex_hull(points: np.ndarray) -> np.ndarray:

@@ -1,7 +1,7 @@
 """InvertedDoublePendulum: Gymnasium's InvertedDoublePendulum-v5 step for step against Gymnasium's
-MuJoCo environment (the reward's tip where MuJoCo's RK4 leaves ``site_xpos``), its resets,
-check_env, the swing-up variant against a numpy reference, and gradients of short returns
-against central finite differences."""
+MuJoCo environment (the reward's tip where MuJoCo's RK4 leaves ``site_xpos``, the slider limit's
+force in the observation), its resets, check_env, the swing-up variant against a numpy
+reference, and gradients of short returns against central finite differences."""
 
 from __future__ import annotations
 
@@ -28,19 +28,15 @@ POLE = 0.6  # each pole's length in Gymnasium's inverted_double_pendulum.xml
 BATCH = 5
 
 
-def _mj_steps(qpos, qvel, ctrl, n, *, limits=True):
-    """``n`` calls of MuJoCo's ``mj_step`` on Gymnasium's model: (qpos, qvel, site_xpos[0]);
-    ``limits=False`` disables the slider's limit (which the swing-up does not model)."""
-    model = mujoco.MjModel.from_xml_path(
-        ivy_gym.inverted_pendulum._gymnasium_asset("inverted_double_pendulum.xml")
-    )
-    if not limits:
-        model.opt.disableflags |= mujoco.mjtDisableBit.mjDSBL_LIMIT
+def _mj_steps(qpos, qvel, ctrl, n):
+    """``n`` calls of MuJoCo's ``mj_step`` on Gymnasium's model: (qpos, qvel, site_xpos[0],
+    qfrc_constraint[0])."""
+    model = mujoco.MjModel.from_xml_path(ivy_gym.gymnasium_asset("inverted_double_pendulum.xml"))
     data = mujoco.MjData(model)
     data.qpos[:], data.qvel[:], data.ctrl[:] = qpos, qvel, ctrl
     for _ in range(n):
         mujoco.mj_step(model, data)
-    return data.qpos.copy(), data.qvel.copy(), data.site_xpos[0].copy()
+    return data.qpos.copy(), data.qvel.copy(), data.site_xpos[0].copy(), data.qfrc_constraint[0]
 
 
 @functools.cache
@@ -63,25 +59,23 @@ def _episode(seed: int):
     return rows
 
 
-@pytest.mark.parametrize("seed", [0, 7])
-def test_follows_gymnasium_step_for_step(seed, backend):
-    rows = _episode(seed)
-    assert len(rows) > 3  # an episode of several steps
+def test_follows_gymnasium_step_for_step(backend):
+    # one facade for both episodes: its step is compiled once on jax and tensorflow
     env = gymnasium.make("ivy_gym/InvertedDoublePendulum-v5", framework=backend, dtype="float64")
-    tree = ivy_gym.inverted_double_pendulum_tree()
-    obs, _ = env.reset(seed=seed)
-    np.testing.assert_allclose(obs, rows[0][1], rtol=0, atol=1e-12)
-    np.testing.assert_allclose(env.unwrapped.state, rows[0][4], rtol=0, atol=1e-12)
-    for action, ref_obs, ref_reward, ref_terminated, ref_state in rows[1:]:
-        # the dynamics are MuJoCo's while the slider's limit is not reached
-        assert bool(tree.constraint_free(ref_state[:3]))
-        obs, reward, terminated, truncated, _ = env.step(action)
-        np.testing.assert_allclose(obs, ref_obs, rtol=0, atol=1e-8)
-        np.testing.assert_allclose(env.unwrapped.state, ref_state, rtol=0, atol=1e-8)
-        assert reward == pytest.approx(ref_reward, rel=0, abs=1e-8)
-        assert terminated == ref_terminated
-        assert not truncated
-    assert terminated  # the episode ended as Gymnasium's did
+    for seed in (0, 7):
+        rows = _episode(seed)
+        assert len(rows) > 3  # an episode of several steps
+        obs, _ = env.reset(seed=seed)
+        np.testing.assert_allclose(obs, rows[0][1], rtol=0, atol=1e-12)
+        np.testing.assert_allclose(env.unwrapped.state, rows[0][4], rtol=0, atol=1e-12)
+        for action, ref_obs, ref_reward, ref_terminated, ref_state in rows[1:]:
+            obs, reward, terminated, truncated, _ = env.step(action)
+            np.testing.assert_allclose(obs, ref_obs, rtol=0, atol=1e-8)
+            np.testing.assert_allclose(env.unwrapped.state, ref_state, rtol=0, atol=1e-8)
+            assert reward == pytest.approx(ref_reward, rel=0, abs=1e-8)
+            assert terminated == ref_terminated
+            assert not truncated
+        assert terminated  # the episode ended as Gymnasium's did
 
 
 def test_the_reward_needs_the_last_rk4_stage_tip():
@@ -97,24 +91,28 @@ def test_the_reward_needs_the_last_rk4_stage_tip():
     assert max(gaps) > 1e-7
 
 
-def test_rk4_step_with_last_stage_equals_mujoco(backend):
-    """The written-out RK4 step against ``mj_step``: the new state, and its last stage's
-    positions against the ``site_xpos`` that ``mj_step`` leaves."""
-    tree = ivy_gym.inverted_double_pendulum_tree()
+def test_frames_equal_mujoco(backend):
+    """The environment's frames (``frame_skip`` calls of the pipeline's step, one scan) against
+    ``mj_step``: the new state, the tip where the last RK4 stage leaves ``site_xpos`` and the
+    slider limit's force, from states inside the slider's range and at its ends."""
+    core = ivy_gym.InvertedDoublePendulum(frame_skip=2)
     rng = np.random.default_rng(3)
     qpos = rng.uniform(-0.5, 0.5, (BATCH, 3))
     qvel = rng.uniform(-2.0, 2.0, (BATCH, 3))
+    qpos[:2, 0], qvel[:2, 0] = [0.995, -0.999], [3.0, -2.0]  # at the ends of the slider
     ctrl = rng.uniform(-1.0, 1.0, (BATCH, 1))
-    expected = [_mj_steps(q, v, c, 1) for q, v, c in zip(qpos, qvel, ctrl)]
+    expected = [_mj_steps(q, v, c, 2) for q, v, c in zip(qpos, qvel, ctrl)]
     xp = getattr(ivy, backend)
-    new_qpos, new_qvel, stage = ivy_gym.rk4_step_with_last_stage(
-        xp, tree, native(qpos, backend), native(qvel, backend), native(ctrl, backend)
+    data = core.simulate(
+        xp, native(qpos, backend), native(qvel, backend), None, native(ctrl, backend)
     )
-    stage_tip = numpy_of(tree.site_poses(stage))[:, 0, :3, 3]
-    for b, (q, v, site) in enumerate(expected):
-        np.testing.assert_allclose(numpy_of(new_qpos)[b], q, rtol=0, atol=1e-12)
-        np.testing.assert_allclose(numpy_of(new_qvel)[b], v, rtol=0, atol=1e-12)
-        np.testing.assert_allclose(stage_tip[b], site, rtol=0, atol=1e-12)
+    forces = numpy_of(data.qfrc_constraint)[:, 0]
+    assert np.abs(forces[:2]).min() > 1.0 and np.abs(forces[2:]).max() == 0.0
+    for b, (q, v, site, force) in enumerate(expected):
+        np.testing.assert_allclose(numpy_of(data.qpos)[b], q, rtol=0, atol=1e-12)
+        np.testing.assert_allclose(numpy_of(data.qvel)[b], v, rtol=0, atol=1e-12)
+        np.testing.assert_allclose(numpy_of(data.site_xpos)[b, 0], site, rtol=0, atol=1e-12)
+        assert forces[b] == pytest.approx(force, rel=1e-10, abs=1e-10)
 
 
 def _mujoco_step(state, action):
@@ -137,8 +135,18 @@ def test_termination_and_reward_of_chosen_states(backend):
         ]
     )
     actions = np.array([[0.0], [0.4], [-1.0], [1.0], [-0.7]], np.float32)
+    # and a state that is not finite, which ends the episode (Gymnasium's MuJoCo resets it
+    # itself); not on tensorflow, whose matrix solve raises on a matrix that is not finite
+    finite = backend == "tensorflow"
+    inputs = states if finite else np.concatenate([states, np.full((1, 6), np.nan)])
+    inputs_actions = actions if finite else np.concatenate([actions, np.zeros((1, 1), np.float32)])
     env = ivy_gym.InvertedDoublePendulum()
-    state, obs, reward, terminated = env.step(native(states, backend), native(actions, backend))
+    state, obs, reward, terminated = env.step(
+        native(inputs, backend), native(inputs_actions, backend)
+    )
+    if not finite:
+        assert bool(numpy_of(terminated)[-1])
+        obs, reward, terminated = (x[:-1] for x in (obs, reward, terminated))
     for b in range(len(states)):
         ref_obs, ref_reward, ref_terminated = _mujoco_step(states[b], actions[b])
         np.testing.assert_allclose(numpy_of(obs)[b], ref_obs, rtol=0, atol=1e-10)
@@ -146,11 +154,6 @@ def test_termination_and_reward_of_chosen_states(backend):
         assert bool(numpy_of(terminated)[b]) == ref_terminated
     np.testing.assert_array_equal(numpy_of(terminated), [False, False, True, True, False])
     assert np.abs(numpy_of(obs)[:, 5:8]).max() == 10.0  # Gymnasium's clip of the velocities
-    # a state that is not finite ends the episode (Gymnasium's MuJoCo resets it itself)
-    _, _, _, done = env.step(
-        native(np.array([np.nan, 0, 0, 0, 0, 0]), backend), native(np.zeros(1), backend)
-    )
-    assert bool(numpy_of(done))
 
 
 def test_seeded_resets_draw_as_gymnasium(backend):
@@ -241,10 +244,10 @@ def test_swing_up_reward_and_no_termination(backend):
     r = numpy_of(reward)
     assert r[0] > 0.99 and r[1] < -0.99 and r[0] > r[2] > r[1]  # rewards the upright tip
     assert r[4] < -10.0  # the barrier
-    # the dynamics of Gymnasium's task, five mj_step with the control held, without the slider's
-    # limit (the last state lies beyond it)
+    # the dynamics of Gymnasium's task, five mj_step with the control held (the last state lies
+    # beyond the slider's range: its limit pushes the cart back)
     for b in range(BATCH):
-        qpos, qvel, _ = _mj_steps(states[b, :3], states[b, 3:], actions[b], 5, limits=False)
+        qpos, qvel, _, _ = _mj_steps(states[b, :3], states[b, 3:], actions[b], 5)
         np.testing.assert_allclose(numpy_of(new)[b], np.concatenate([qpos, qvel]), atol=1e-10)
 
 
@@ -279,8 +282,8 @@ def test_swing_up_residuals(backend):
 # Gradients: analytic on the differentiable backends, central differences on numpy
 # ----------------------------------------------------------------------------------------------
 
-# frame_skip=2 keeps the tests short and runs both integrator paths of a step: tree.step, then
-# the written-out last RK4 step (whose last stage's tip the reward reads)
+# frame_skip=2 keeps the tests short and runs two frames of the step's scan (the reward reads the
+# last frame's last RK4 stage)
 _FRAME_SKIP = 2
 _STATE = np.array([0.1, 0.05, -0.08, 0.3, -0.4, 0.6])  # upright: no termination in 2 steps
 _SWING_STATE = np.array([0.1, 3.0, 0.2, 0.3, -0.4, 0.6])
@@ -321,8 +324,13 @@ def test_return_gradient_matches_finite_differences(swing_up, diff_backend):
     def total(xs):
         return _return(env, xs[0], xs[1])
 
+    def value_and_grad(xs):
+        return ivy.execute_with_gradients(total, xs)
+
+    if ivy.get_framework(f=diff_backend).capabilities.eager_compiles_ops:  # jax: one program
+        value_and_grad = ivy.compile_fn(value_and_grad)
     xs = [native(state, diff_backend), native(_ACTIONS, diff_backend)]
-    _, grads = ivy.execute_with_gradients(total, xs)
+    _, grads = value_and_grad(xs)
     grad = np.concatenate([numpy_of(grads[0]), numpy_of(grads[1]).ravel()])
     expected = _finite_difference_gradient(swing_up)
     assert np.abs(expected[6:]).min() > 1e-3 and np.abs(expected[:6]).max() > 1e-2
