@@ -503,7 +503,7 @@ class KinematicTree:
             *[batch_shape, nv]*.
 
         Example:
-            >>> tree.passive_forces(np.zeros(7), np.ones(7))      # the Panda has no damping
+            >>> tree.passive_forces(np.zeros(7), np.ones(7)) + 0.0   # the Panda has no damping
             array([0., 0., 0., 0., 0., 0., 0.])
         """
         return self._smooth(qpos, qvel, None, f).qfrc_passive
@@ -553,7 +553,7 @@ class KinematicTree:
             *[batch_shape, nv]*: the applied plus actuator forces needed.
 
         Example:
-            >>> q, v = np.zeros(7), np.zeros(7)
+            >>> q, v = np.array([0, 0, 0, -1.5, 0, 1.5, 0.0]), np.zeros(7)   # inside the limits
             >>> tree.inverse_dynamics(q, v, tree.forward_dynamics(q, v)).round(9) + 0.0
             array([0., 0., 0., 0., 0., 0., 0.])
         """
@@ -587,8 +587,11 @@ class KinematicTree:
             *[batch_shape, nv]*.
 
         Example:
-            >>> tree.forward_dynamics(np.zeros(7), np.zeros(7)).round(1) + 0.0
-            array([  0. ,  17. ,   0. ,  37.2,   0. , -44. ,   0. ])
+            >>> q = np.array([0, 0, 0, -1.5, 0, 1.5, 0.0])   # inside the joint limits
+            >>> tree.forward_dynamics(q, np.zeros(7)).round(1) + 0.0
+            array([  0. ,  -2.2,   0. , -31.6,   0. ,  25. ,   0. ])
+            >>> tree.forward_dynamics(np.zeros(7), np.zeros(7))[3] < 0   # pushed back below its limit
+            np.True_
         """
         data = self.make_data(qpos, qvel, ctrl, qfrc_applied, qacc_warmstart, f=f)
         return self.forward_data(data, f=f).qacc
@@ -685,7 +688,7 @@ class KinematicTree:
         self._check_qpos(xp, qpos)
 
         def touching(qpos):
-            contacts = fw.collide(xp, self.physics, kinematics(xp, self.physics, qpos))
+            contacts = fw.find_contacts(xp, self.physics, kinematics(xp, self.physics, qpos))
             if contacts is None:
                 return qpos[..., 0] > np.inf
             return xp.any(contacts.active, axis=-1)

@@ -14,17 +14,39 @@ module              stage
 ``collision``       contacts between geoms
 ``constraints``     constraint rows (friction loss, joint limits, contacts) and impedance
 ``solver``          the constrained accelerations (Newton, PGS)
-``forward``         ``forward`` (``mj_forward``) and ``step`` (``mj_step``: Euler and RK4)
+``pipeline``        ``forward`` (``mj_forward``) and ``step`` (``mj_step``: Euler and RK4)
 ==================  ===========================================================================
 
 Example:
-    >>> model = read_model(mujoco.MjModel.from_xml_path("hopper.xml"))
-    >>> data = step(ivy.jax, model, qpos, qvel, ctrl)         # a Data record
-    >>> data.qpos, data.qvel, data.xpos, data.contact_dist
+    >>> model = read_model(mujoco.MjModel.from_xml_path(hopper_xml))      # Gymnasium's Hopper
+    >>> data = make_data(ivy.numpy, model, model.qpos0, np.zeros(model.nv), np.zeros(model.nu))
+    >>> data = step(ivy.numpy, model, data)                                # mj_step
+    >>> data.qpos.shape, data.xpos.shape, data.contact_dist.shape
+    ((6,), (5, 3), (14,))
 """
 
-from ivy_robot.physics.data import Data
-from ivy_robot.physics.model import Model, read_model
-from ivy_robot.physics.pipeline import forward, make_data, step
+from ivy_robot.physics import collision, constraints, data, model, pipeline, smooth
+from ivy_robot.physics import kinematics as kinematics_module
+from ivy_robot.physics import solver as solver_module
+from ivy_robot.physics._math import Gather, gather
+from ivy_robot.physics.collision import *  # noqa: F403
+from ivy_robot.physics.constraints import *  # noqa: F403
+from ivy_robot.physics.data import *  # noqa: F403
+from ivy_robot.physics.kinematics import *  # noqa: F403
+from ivy_robot.physics.model import *  # noqa: F403
+from ivy_robot.physics.pipeline import *  # noqa: F403
+from ivy_robot.physics.smooth import *  # noqa: F403
+from ivy_robot.physics.solver import *  # noqa: F403
 
-__all__ = ["Data", "Model", "forward", "make_data", "read_model", "step"]
+__all__ = [
+    "Gather",
+    "gather",
+    *model.__all__,
+    *data.__all__,
+    *kinematics_module.__all__,
+    *smooth.__all__,
+    *collision.__all__,
+    *constraints.__all__,
+    *solver_module.__all__,
+    *pipeline.__all__,
+]

@@ -21,7 +21,7 @@ from ivy_robot.physics.model import const
 
 class Gather(NamedTuple):
     """Constant integer indices along an axis, made once when a model is read: a slice where
-    they are contiguous (``start``, ``stop``), else a gather of ``indices``."""
+    they are contiguous (``start``, ``stop``), else a gather of ``indices`` (:func:`gather`)."""
 
     indices: np.ndarray  # int64
     start: int  # -1 when not contiguous
@@ -30,7 +30,13 @@ class Gather(NamedTuple):
 
 
 def gather(indices, size: int) -> Gather:
-    """A :class:`Gather` of ``indices`` along an axis of length ``size``."""
+    """A :class:`Gather` of ``indices`` along an axis of length ``size`` (made once, outside
+    traced code).
+
+    Example:
+        >>> gather([2, 3], 5).start, gather([3, 1], 5).start      # a slice; a gather
+        (2, -1)
+    """
     values = [int(i) for i in np.asarray(indices, dtype=np.int64).reshape(-1)]
     contiguous = bool(values) and values == list(range(values[0], values[0] + len(values)))
     return Gather(

@@ -37,11 +37,18 @@ from ivy_robot.physics.model import (
     const,
 )
 
+__all__ = ["Layout", "impedance", "make_constraints", "point_jacobians", "reference"]
+
 
 @dataclass(frozen=True, eq=False)
 class Layout:
     """The candidate constraint rows of a model (numpy constants, Python flags; see the module
-    docstring)."""
+    docstring), ``model.rows``.
+
+    Example:
+        >>> model.rows.nefc, model.rows.nf, model.rows.nl, model.rows.ncon   # the Hopper
+        (44, 0, 6, 14)
+    """
 
     nefc: int
     kind: np.ndarray  # [nefc] ROW_FRICTION, ROW_LIMIT, ROW_CONTACT_*
@@ -257,6 +264,15 @@ def point_jacobians(xp, model: Model, cdof, origin, bodies, chain, points):
 
     Returns:
         ``(jacp, jacr)``, each *[..., P, nv, 3]*.
+
+    Example:
+        >>> foot = model.body_names.index("foot")
+        >>> bodies, chain = gather([foot], model.nbody), model.body_chain[[foot]][..., None]
+        >>> origin = data.subtree_com[model.body_rootid]
+        >>> jacp, jacr = point_jacobians(xp, model, data.cdof, origin, bodies, chain,
+        ...                              data.xpos[[foot]])          # at the foot's origin
+        >>> jacp.shape, jacp[0, 0]                                   # rootx moves it along x
+        ((1, 6, 3), array([1., 0., 0.]))
     """
     chain = const(xp, chain, points)
     offset = points - mt.take(xp, origin, bodies, axis=-2)  # [..., P, 3]
@@ -279,6 +295,14 @@ def make_constraints(xp, model: Model, qpos, cdof, origin, contacts):
     Returns:
         ``{"efc_J": [..., nefc, nv], "efc_pos", "efc_active", "efc_imp", "efc_R", "efc_D":
         [..., nefc]}``.
+
+    Example:
+        >>> contacts = find_contacts(xp, model, {"geom_xpos": data.geom_xpos,
+        ...                                      "geom_xmat": data.geom_xmat})
+        >>> rows = make_constraints(xp, model, data.qpos, data.cdof,
+        ...                         data.subtree_com[model.body_rootid], contacts)
+        >>> rows["efc_J"].shape, rows["efc_R"].shape    # the Hopper's candidate rows
+        ((44, 6), (44,))
     """
     rows = model.rows
     like = qpos
@@ -351,7 +375,12 @@ def _contact_jacobians(xp, model, rows: Layout, cdof, origin, contacts):
 def impedance(xp, rows: Layout, pos, like):
     """MuJoCo's impedance ``imp(pos - margin)`` of every row, from its ``solimp``
     ``(d0, dwidth, width, midpoint, power)``: ``d0`` at no violation to ``dwidth`` at ``width``
-    and beyond, along two power curves that meet at the midpoint."""
+    and beyond, along two power curves that meet at the midpoint.
+
+    Example:
+        >>> impedance(xp, model.rows, np.zeros(model.rows.nefc), data.qpos)[:2]  # at rest
+        array([0.9, 0.9])
+    """
     d0, d1, _, mid, power = (const(xp, s, like) for s in rows.solimp)
     safe_width = const(xp, rows.safe_width, like)
     x = xp.clip(xp.abs(pos - const(xp, rows.margin, like)) / safe_width, 0.0, 1.0)
@@ -365,7 +394,13 @@ def impedance(xp, rows: Layout, pos, like):
 
 def reference(xp, model: Model, efc, qvel):
     """MuJoCo's ``mj_referenceConstraint``: row velocities ``J qvel`` and reference
-    accelerations ``aref = -B vel - K imp (pos - margin)``. Returns ``(efc_vel, efc_aref)``."""
+    accelerations ``aref = -B vel - K imp (pos - margin)``. Returns ``(efc_vel, efc_aref)``.
+
+    Example:
+        >>> vel, aref = reference(xp, model, data._asdict(), np.ones(model.nv))
+        >>> vel.shape, aref.shape
+        ((44,), (44,))
+    """
     rows = model.rows
     vel = xp.matmul(efc["efc_J"], qvel[..., :, None])[..., 0]
     if rows.nefc == 0:

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
+__all__ = ["Data"]
+
 
 class Data(NamedTuple):
     """MuJoCo's ``mjData`` as named arrays (see the module docstring).
@@ -42,6 +44,11 @@ class Data(NamedTuple):
 
     After the constraints (``mj_rnePostConstraint``): ``cacc [..., nbody, 6]``, ``cfrc_int``,
     ``cfrc_ext [..., nbody, 6]``.
+
+    Example:
+        >>> data = forward(xp, model, make_data(xp, model, model.qpos0, np.zeros(model.nv)))
+        >>> data.xpos.shape, data.qM.shape, data.efc_J.shape     # the Hopper
+        ((5, 3), (6, 6), (44, 6))
     """
 
     qpos: Any = None
@@ -93,5 +100,10 @@ class Data(NamedTuple):
     cfrc_ext: Any = None
 
     def replace(self, **changes: Any) -> Data:
-        """A copy with some fields changed."""
+        """A copy with some fields changed.
+
+        Example:
+            >>> data.replace(qvel=np.ones(model.nv)).qvel
+            array([1., 1., 1., 1., 1., 1.])
+        """
         return self._replace(**changes)

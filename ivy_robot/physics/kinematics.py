@@ -27,6 +27,8 @@ from ivy_robot.mjcf import mujoco_quaternion_to_rot_mat
 from ivy_robot.physics import _math as mt
 from ivy_robot.physics.model import BALL, FREE, HINGE, SLIDE, Model, const
 
+__all__ = ["com_pos", "dof_axes", "kinematics"]
+
 # ----------------------------------------------------------------------------------------------
 # The plan: made once per model
 # ----------------------------------------------------------------------------------------------
@@ -238,6 +240,10 @@ def kinematics(xp, model: Model, qpos) -> dict:
         ``{"xpos": [..., nbody, 3], "xmat": [..., nbody, 3, 3], "xanchor": [..., njnt, 3],
         "xaxis": [..., njnt, 3], "xipos", "ximat", "geom_xpos", "geom_xmat", "site_xpos",
         "site_xmat"}``, MuJoCo's fields of those names (matrices as ``[..., 3, 3]``).
+
+    Example:
+        >>> kinematics(xp, model, model.qpos0)["xpos"][:, 2]     # the Hopper's body heights
+        array([0.  , 1.25, 1.05, 0.35, 0.  ])
     """
     p = model.kin
     zero = qpos[..., :1, None] * 0.0  # [..., 1, 1]: broadcasts constants to the batch
@@ -341,6 +347,11 @@ def com_pos(xp, model: Model, kin: dict) -> dict:
         "origin": [..., nbody, 3]}``: MuJoCo's fields (``cinert`` in MuJoCo's layout: the
         rotational inertia's ``xx, yy, zz, xy, xz, yz``, then ``mass * (xipos - origin)`` and
         the mass), and each body's frame origin (its tree's centre of mass).
+
+    Example:
+        >>> com = com_pos(xp, model, kinematics(xp, model, model.qpos0))
+        >>> com["cinert"][1:, 9]                                  # the bodies' masses
+        array([3.66519143, 4.05789051, 2.7813567 , 5.31557477])
     """
     p = model.kin
     xipos, ximat = kin["xipos"], kin["ximat"]
@@ -369,7 +380,13 @@ def dof_axes(xp, model: Model, kin: dict, origin):
     """MuJoCo's ``cdof`` *[..., nv, 6]*: each dof's motion (angular, linear) about its body's
     tree origin. Hinges rotate about their world axis through their anchor, slides translate
     along it; ball and free rotations are about the body's final axes, free translations along
-    the world's."""
+    the world's.
+
+    Example:
+        >>> kin = kinematics(xp, model, model.qpos0)
+        >>> dof_axes(xp, model, kin, com_pos(xp, model, kin)["origin"])[0]   # rootx slides
+        array([0., 0., 0., 1., 0., 0.])
+    """
     p = model.kin
     xmat = kin["xmat"]
     if model.nv == 0:

@@ -26,13 +26,20 @@ import numpy as np
 
 from ivy_robot.mjcf import mujoco_quaternion_to_rot_mat
 
+__all__ = ["JOINT_KINDS", "JointKind", "Model", "read_model"]
+
 FREE, BALL, SLIDE, HINGE = 0, 1, 2, 3  # mjtJoint
 MIN_VALUE = 1e-15  # mjMINVAL
 MIN_IMPEDANCE, MAX_IMPEDANCE = 0.0001, 0.9999  # mjMINIMP, mjMAXIMP
 
 
 class JointKind(NamedTuple):
-    """One row of the joint-kind table."""
+    """One row of the joint-kind table (:data:`JOINT_KINDS`).
+
+    Example:
+        >>> JOINT_KINDS[0]
+        JointKind(name='free', nq=7, nv=6, rotational=(0.0, 0.0, 0.0, 1.0, 1.0, 1.0))
+    """
 
     name: str
     nq: int  # width of its qpos
@@ -61,7 +68,12 @@ def const(xp, value: np.ndarray, like):
 @dataclass(frozen=True, eq=False)
 class Model:
     """A MuJoCo model as named constants (see the module docstring). Fields follow MuJoCo's
-    names; rotations are 3x3 matrices (``*_rot``) rather than quaternions."""
+    names; rotations are 3x3 matrices (``*_rot``) rather than quaternions.
+
+    Example:
+        >>> model.body_names, model.body_mass.round(2)          # Gymnasium's Hopper
+        (('world', 'torso', 'thigh', 'leg', 'foot'), array([0.  , 3.67, 4.06, 2.78, 5.32]))
+    """
 
     # sizes
     nq: int
@@ -170,7 +182,11 @@ class Model:
 
     def check_dynamics(self) -> None:
         """Raise ``NotImplementedError`` naming what the model uses and the dynamics do not
-        model (see :data:`Model.unsupported`)."""
+        model (see :data:`Model.unsupported`).
+
+        Example:
+            >>> model.check_dynamics()      # the Hopper: everything modelled
+        """
         if self.unsupported:
             listed = "; ".join(self.unsupported)
             raise NotImplementedError(
@@ -180,6 +196,12 @@ class Model:
             )
 
     def replace(self, **changes: Any) -> Model:
+        """A copy with some fields changed.
+
+        Example:
+            >>> model.replace(timestep=0.001).timestep
+            0.001
+        """
         return dataclasses.replace(self, **changes)
 
 
@@ -201,9 +223,9 @@ def read_model(m: Any) -> Model:
         The model.
 
     Example:
-        >>> model = read_model(mujoco.MjModel.from_xml_path(gymnasium_assets + "/hopper.xml"))
-        >>> model.nq, model.integrator, model.solver
-        (6, 'RK4', 'Newton')
+        >>> model = read_model(mujoco.MjModel.from_xml_path(hopper_xml))   # Gymnasium's Hopper
+        >>> model.nq, model.integrator, model.solver, model.unsupported
+        (6, 'RK4', 'Newton', ())
     """
     import mujoco
 
@@ -325,11 +347,15 @@ def read_model(m: Any) -> Model:
         unsupported=_unsupported(m, mujoco, disabled, enabled, contacts),
         **structure,
     )
-    from ivy_robot.physics import constraints, kinematics, pipeline, smooth
+    # (by module path: the package exports a function named kinematics)
+    from ivy_robot.physics.constraints import plan as rows_plan
+    from ivy_robot.physics.kinematics import plan as kinematics_plan
+    from ivy_robot.physics.pipeline import plan as pipeline_plan
+    from ivy_robot.physics.smooth import plan as smooth_plan
 
-    model = model.replace(kin=kinematics.plan(m, model), smooth=smooth.plan(model))
-    model = model.replace(rows=constraints.plan(model))
-    return model.replace(fwd=pipeline.plan(model))
+    model = model.replace(kin=kinematics_plan(m, model), smooth=smooth_plan(model))
+    model = model.replace(rows=rows_plan(model))
+    return model.replace(fwd=pipeline_plan(model))
 
 
 def _contacts(m, disabled):

@@ -30,6 +30,21 @@ from ivy_robot.physics.data import Data
 from ivy_robot.physics.kinematics import com_pos, kinematics
 from ivy_robot.physics.model import BALL, FREE, JOINT_KINDS, Model, const
 
+__all__ = [
+    "contact_forces",
+    "external_forces",
+    "find_contacts",
+    "forward",
+    "fwd_acceleration",
+    "fwd_actuation",
+    "fwd_constraint",
+    "fwd_position",
+    "fwd_velocity",
+    "integrate_positions",
+    "make_data",
+    "step",
+]
+
 #: MuJoCo's RK4 tableau: each stage starts a fraction of the step along the previous stage's
 #: velocity and acceleration; the step averages the stages with these weights.
 RK4_FRACTIONS = np.array([0.0, 0.5, 0.5, 1.0])
@@ -125,6 +140,10 @@ def make_data(xp, model: Model, qpos, qvel, ctrl=None, qfrc_applied=None, qacc_w
 
     Returns:
         The data.
+
+    Example:
+        >>> make_data(xp, model, model.qpos0, np.zeros(model.nv)).ctrl     # the Hopper's
+        array([0., 0., 0.])
     """
     if ctrl is None:
         ctrl = qpos[..., :1] * 0.0 + const(xp, model.fwd.no_ctrl, qpos)
@@ -145,12 +164,17 @@ def make_data(xp, model: Model, qpos, qvel, ctrl=None, qfrc_applied=None, qacc_w
 
 def fwd_position(xp, model: Model, data: Data) -> Data:
     """Kinematics, ``com_pos``, the mass matrix and its factor, collision and the position
-    part of the constraint rows."""
+    part of the constraint rows.
+
+    Example:
+        >>> fwd_position(xp, model, make_data(xp, model, model.qpos0, np.zeros(6))).qM.shape
+        (6, 6)
+    """
     kin = kinematics(xp, model, data.qpos)
     com = com_pos(xp, model, kin)
     mass = smooth.mass_matrix(xp, model, com["cinert"], com["cdof"])
-    lower, pivots = smooth.factor(xp, model.smooth.factor, mass)
-    contacts = collide(xp, model, kin)
+    lower, pivots = smooth.ldl_factor(xp, model.smooth.factor, mass)
+    contacts = find_contacts(xp, model, kin)
     efc = constraints.make_constraints(xp, model, data.qpos, com["cdof"], com["origin"],
                                        contacts)  # fmt: skip
     fields = {k: v for k, v in kin.items()}
@@ -177,8 +201,14 @@ def fwd_position(xp, model: Model, data: Data) -> Data:
     return data.replace(**fields)
 
 
-def collide(xp, model: Model, kin: dict):
-    """The model's contacts (:mod:`ivy_robot.physics.collision`), or None without candidates."""
+def find_contacts(xp, model: Model, kin: dict):
+    """The model's contacts (:mod:`ivy_robot.physics.collision`), or None without candidates.
+
+    Example:
+        >>> lowered = model.qpos0 - np.array([0, 0.05, 0, 0, 0, 0])   # the foot in its floor
+        >>> find_contacts(xp, model, kinematics(xp, model, lowered)).active.sum()
+        np.int64(2)
+    """
     table = model.contacts
     if table is None or int(table.ncon) == 0:
         return None
@@ -188,7 +218,12 @@ def collide(xp, model: Model, kin: dict):
 
 
 def fwd_velocity(xp, model: Model, data: Data) -> Data:
-    """Body velocities, passive forces, the rows' reference accelerations and bias forces."""
+    """Body velocities, passive forces, the rows' reference accelerations and bias forces.
+
+    Example:
+        >>> fwd_velocity(xp, model, data).qfrc_bias.shape
+        (6,)
+    """
     cvel, cdof_dot = smooth.velocities(xp, model, data.cdof, data.qvel)
     origin = mt.take(xp, data.subtree_com, model.kin.root, axis=-2)
     kin = {"xipos": data.xipos, "ximat": data.ximat}
@@ -207,20 +242,36 @@ def fwd_velocity(xp, model: Model, data: Data) -> Data:
 
 
 def fwd_actuation(xp, model: Model, data: Data) -> Data:
-    """Actuator forces."""
+    """Actuator forces.
+
+    Example:
+        >>> fwd_actuation(xp, model, data.replace(ctrl=np.ones(3))).qfrc_actuator
+        array([  0.,   0.,   0., 200., 200., 200.])
+    """
     force, qfrc = smooth.actuation(xp, model, data.qpos, data.qvel, data.ctrl)
     return data.replace(actuator_force=force, qfrc_actuator=qfrc)
 
 
 def fwd_acceleration(xp, model: Model, data: Data) -> Data:
-    """``qfrc_smooth = passive - bias + actuator + applied`` and ``qacc_smooth``."""
+    """``qfrc_smooth = passive - bias + actuator + applied`` and ``qacc_smooth``.
+
+    Example:
+        >>> np.allclose(data.qM @ fwd_acceleration(xp, model, data).qacc_smooth, data.qfrc_smooth)
+        True
+    """
     qfrc = data.qfrc_passive - data.qfrc_bias + data.qfrc_actuator + data.qfrc_applied
-    qacc = smooth.solve(xp, model.smooth.factor, (data.qLD, data.qLDiag), qfrc)
+    qacc = smooth.ldl_solve(xp, model.smooth.factor, (data.qLD, data.qLDiag), qfrc)
     return data.replace(qfrc_smooth=qfrc, qacc_smooth=qacc)
 
 
 def fwd_constraint(xp, model: Model, data: Data) -> Data:
-    """The constrained accelerations, the rows' forces and ``qfrc_constraint``."""
+    """The constrained accelerations, the rows' forces and ``qfrc_constraint``.
+
+    Example:
+        >>> solved = fwd_constraint(xp, model, data)
+        >>> np.allclose(solved.qfrc_constraint, solved.efc_force @ solved.efc_J)
+        True
+    """
     rows = model.rows
     if rows.nefc == 0:
         zero = data.qacc_smooth * 0.0
@@ -273,6 +324,12 @@ def forward(xp, model: Model, data: Data) -> Data:
 
     Returns:
         The data with every field of the forward dynamics filled in.
+
+    Example:
+        >>> lowered = model.qpos0 - np.array([0, 0.05, 0, 0, 0, 0])   # the foot in its floor
+        >>> pressed = forward(xp, model, make_data(xp, model, lowered, np.zeros(6)))
+        >>> pressed.qacc.shape, int(pressed.efc_active.sum())   # two contacts' pyramids
+        ((6,), 8)
     """
     model.check_dynamics()
     return compiled(xp, model, "forward", lambda d: _forward(xp, model, d))(data)
@@ -294,7 +351,12 @@ def _forward(xp, model: Model, data: Data) -> Data:
 def contact_forces(xp, model: Model, data: Data):
     """Each candidate contact's force in its frame *[..., ncon, 3]* (normal, tangents; MuJoCo's
     ``mj_contactForce``, zero where inactive): a pyramid's normal force is the sum of its edges'
-    forces, its tangential forces their differences times the friction."""
+    forces, its tangential forces their differences times the friction.
+
+    Example:
+        >>> contact_forces(xp, model, data).shape         # the Hopper's 14 candidate contacts
+        (14, 3)
+    """
     rows, p = model.rows, model.fwd
     if rows.ncon == 0:
         return data.qpos[..., :0, None] * 0.0 + const(xp, p.empty_forces, data.qpos)
@@ -321,7 +383,12 @@ def contact_forces(xp, model: Model, data: Data):
 
 def external_forces(xp, model: Model, data: Data):
     """MuJoCo's ``cfrc_ext`` *[..., nbody, 6]* (``mj_rnePostConstraint``): the contact forces on
-    each body, as torque and force about its tree's centre of mass."""
+    each body, as torque and force about its tree's centre of mass.
+
+    Example:
+        >>> external_forces(xp, model, data).shape
+        (5, 6)
+    """
     zero = data.cinert[..., :6] * 0.0
     rows = model.rows
     if rows.ncon == 0:
@@ -344,7 +411,12 @@ def external_forces(xp, model: Model, data: Data):
 
 def integrate_positions(xp, model: Model, qpos, qvel, h):
     """MuJoCo's ``mj_integratePos``: ``qpos`` advanced by the velocities ``qvel`` over ``h``;
-    quaternions rotate in the body frame and are normalised."""
+    quaternions rotate in the body frame and are normalised.
+
+    Example:
+        >>> integrate_positions(xp, model, model.qpos0, np.ones(6), 0.5)
+        array([0.5 , 1.75, 0.5 , 0.5 , 0.5 , 0.5 ])
+    """
     if model.fwd.simple_joints:
         return qpos + h * qvel  # hinges and slides only: qpos and qvel align
     parts, cursor = [], 0
@@ -415,6 +487,11 @@ def step(xp, model: Model, data: Data) -> Data:
     Returns:
         The data after one ``timestep``: the new ``qpos``, ``qvel`` and ``qacc_warmstart``, the
         forward dynamics of the last evaluation, and ``cfrc_ext``.
+
+    Example:
+        >>> after = step(xp, model, make_data(xp, model, model.qpos0, np.zeros(6)))
+        >>> after.qpos.shape, after.qacc_warmstart.shape
+        ((6,), (6,))
     """
     model.check_dynamics()
     return compiled(xp, model, "step", lambda d: _step(xp, model, d))(data)
@@ -438,8 +515,8 @@ def _euler_acceleration(xp, model: Model, data: Data):
     if not model.fwd.euler_damping:
         return data.qacc
     plan = model.smooth.factor
-    implicit = smooth.factor(xp, plan, data.qM + const(xp, model.fwd.euler_diagonal, data.qM))
-    return smooth.solve(xp, plan, implicit, data.qfrc_smooth + data.qfrc_constraint)
+    implicit = smooth.ldl_factor(xp, plan, data.qM + const(xp, model.fwd.euler_diagonal, data.qM))
+    return smooth.ldl_solve(xp, plan, implicit, data.qfrc_smooth + data.qfrc_constraint)
 
 
 def _runge_kutta(xp, model: Model, data: Data) -> Data:

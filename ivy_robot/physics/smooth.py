@@ -19,6 +19,19 @@ import numpy as np
 from ivy_robot.physics import _math as mt
 from ivy_robot.physics.model import FREE, HINGE, MIN_VALUE, SLIDE, Model, const
 
+__all__ = [
+    "actuation",
+    "bias_forces",
+    "body_forces",
+    "fluid_wrenches",
+    "ldl_factor",
+    "ldl_solve",
+    "mass_matrix",
+    "passive_forces",
+    "project",
+    "velocities",
+]
+
 # ----------------------------------------------------------------------------------------------
 # The plan: made once per model
 # ----------------------------------------------------------------------------------------------
@@ -175,7 +188,12 @@ def _fluid_constants(model: Model) -> dict:
 
 def mass_matrix(xp, model: Model, cinert, cdof):
     """MuJoCo's ``qM`` as a dense *[..., nv, nv]* (``mj_fullM``), with armature: composite
-    rigid bodies, ``M[i, j] = cdof_j . (crb[body_i] cdof_i)`` for ``j`` at or above ``i``."""
+    rigid bodies, ``M[i, j] = cdof_j . (crb[body_i] cdof_i)`` for ``j`` at or above ``i``.
+
+    Example:
+        >>> mass_matrix(xp, model, data.cinert, data.cdof).shape    # the Hopper
+        (6, 6)
+    """
     p = model.smooth
     crb = mt.cmatmul(xp, p.subtree, cinert)  # [..., nbody, 10]
     force = mt.apply_inertia(xp, mt.take(xp, crb, p.dof_body, axis=-2), cdof)  # [..., nv, 6]
@@ -188,10 +206,16 @@ def mass_matrix(xp, model: Model, cinert, cdof):
     )
 
 
-def factor(xp, plan: Factor, matrix):
+def ldl_factor(xp, plan: Factor, matrix):
     """``matrix = L diag(D) L^T`` for symmetric positive definite *[..., n, n]*, ``L`` unit
     lower triangular (returned without its unit diagonal), by one column at a time: *n*
-    vectorised steps (``plan``: :func:`factor_plan` of *n*). Returns ``(L, D)``."""
+    vectorised steps (``plan``: :func:`factor_plan` of *n*). Returns ``(L, D)``.
+
+    Example:
+        >>> lower, pivots = ldl_factor(xp, model.smooth.factor, data.qM)
+        >>> np.allclose((lower + np.eye(6)) * pivots @ (lower + np.eye(6)).T, data.qM)
+        True
+    """
     n = len(plan.below)
     if n == 0:
         return matrix, matrix[..., 0]
@@ -206,8 +230,14 @@ def factor(xp, plan: Factor, matrix):
     return xp.stack(columns, axis=-1), xp.stack(pivots, axis=-1)
 
 
-def solve(xp, plan: Factor, factored, rhs):
-    """``matrix^-1 rhs`` from :func:`factor`, ``rhs`` *[..., n]*."""
+def ldl_solve(xp, plan: Factor, factored, rhs):
+    """``matrix^-1 rhs`` from :func:`ldl_factor`, ``rhs`` *[..., n]*.
+
+    Example:
+        >>> x = ldl_solve(xp, model.smooth.factor, (data.qLD, data.qLDiag), np.ones(6))
+        >>> np.allclose(data.qM @ x, 1.0)
+        True
+    """
     lower, pivots = factored
     n = len(plan.below)
     if n == 0:
@@ -229,7 +259,13 @@ def solve(xp, plan: Factor, factored, rhs):
 def velocities(xp, model: Model, cdof, qvel):
     """MuJoCo's ``mj_comVel``: body velocities ``cvel`` *[..., nbody, 6]* and the rates of the
     dof axes ``cdof_dot`` *[..., nv, 6]* (an axis moves with the frame before it; free
-    translations are fixed)."""
+    translations are fixed).
+
+    Example:
+        >>> cvel, cdof_dot = velocities(xp, model, data.cdof, np.ones(model.nv))
+        >>> cvel.shape, cdof_dot.shape
+        ((5, 6), (6, 6))
+    """
     moving = cdof * qvel[..., None]
     cvel = mt.cmatmul(xp, model.smooth.chain, moving)
     before = mt.cmatmul(xp, model.smooth.velocity_before, moving)
@@ -243,7 +279,14 @@ def body_forces(xp, model: Model, cinert, cvel, cdof, cdof_dot, qvel, qacc=None)
     """The net spatial force on each body *[..., nbody, 6]* (torque, force about its tree's
     origin) for the accelerations ``qacc`` (None: zero), gravity included, MuJoCo's ``mj_rne``
     forward pass: ``cacc = -gravity + sum over the chain (cdof_dot qvel + cdof qacc)``, then
-    ``cinert cacc + cvel x* (cinert cvel)``. Returns ``(cacc, cfrc_body)``."""
+    ``cinert cacc + cvel x* (cinert cvel)``. Returns ``(cacc, cfrc_body)``.
+
+    Example:
+        >>> cacc, forces = body_forces(xp, model, data.cinert, data.cvel, data.cdof,
+        ...                            data.cdof_dot, data.qvel)
+        >>> cacc[1, 3:]                                     # gravity, as a base acceleration
+        array([0.  , 0.  , 9.81])
+    """
     rate = cdof_dot * qvel[..., None]
     if qacc is not None:
         rate = rate + cdof * qacc[..., None]
@@ -256,13 +299,26 @@ def body_forces(xp, model: Model, cinert, cvel, cdof, cdof_dot, qvel, qacc=None)
 
 def project(xp, model: Model, cdof, wrenches):
     """Joint forces *[..., nv]* of body wrenches *[..., nbody, 6]* (about each body's tree
-    origin): each dof takes the wrenches of its body's subtree along its axis."""
+    origin): each dof takes the wrenches of its body's subtree along its axis.
+
+    Example:
+        >>> _, forces = body_forces(xp, model, data.cinert, data.cvel, data.cdof,
+        ...                         data.cdof_dot, data.qvel)
+        >>> np.allclose(project(xp, model, data.cdof, forces), data.qfrc_bias)
+        True
+    """
     subtree = mt.cmatmul(xp, model.smooth.subtree, wrenches)
     return mt.dot(xp, cdof, mt.take(xp, subtree, model.smooth.dof_body, axis=-2))
 
 
 def bias_forces(xp, model: Model, cinert, cvel, cdof, cdof_dot, qvel):
-    """MuJoCo's ``qfrc_bias`` *[..., nv]*: Coriolis, centrifugal and gravity forces."""
+    """MuJoCo's ``qfrc_bias`` *[..., nv]*: Coriolis, centrifugal and gravity forces.
+
+    Example:
+        >>> bias_forces(xp, model, data.cinert, data.cvel, data.cdof, data.cdof_dot,
+        ...             data.qvel).round(1)                # at rest: gravity alone
+        array([  0. , 155.2,  -3.4,   3.4,   3.4,   3.4])
+    """
     _, forces = body_forces(xp, model, cinert, cvel, cdof, cdof_dot, qvel)
     return project(xp, model, cdof, forces)
 
@@ -274,7 +330,12 @@ def bias_forces(xp, model: Model, cinert, cvel, cdof, cdof_dot, qvel):
 
 def passive_forces(xp, model: Model, qpos, qvel, kin=None, cvel=None, origin=None, cdof=None):
     """MuJoCo's ``qfrc_passive`` *[..., nv]*: joint springs and dampers, and the inertia-box
-    fluid model (``kin``, ``cvel``, ``origin`` and ``cdof`` are needed only for the fluid)."""
+    fluid model (``kin``, ``cvel``, ``origin`` and ``cdof`` are needed only for the fluid).
+
+    Example:
+        >>> passive_forces(xp, model, model.qpos0, np.ones(model.nv)) + 0.0  # its dampers
+        array([ 0.,  0.,  0., -1., -1., -1.])
+    """
     p = model.smooth
     out = qvel * const(xp, p.negative_damping, qvel)
     if p.has_springs:
@@ -288,7 +349,16 @@ def passive_forces(xp, model: Model, qpos, qvel, kin=None, cvel=None, origin=Non
 def fluid_wrenches(xp, model: Model, kin, cvel, origin):
     """MuJoCo's inertia-box fluid model: viscous (Stokes) and quadratic drag on each body's
     equivalent inertia box, in its inertial frame, applied at its centre of mass. Returns
-    wrenches *[..., nbody, 6]* about each body's tree origin (zero for bodies without)."""
+    wrenches *[..., nbody, 6]* about each body's tree origin (zero for bodies without).
+
+    Example:
+        >>> swimmer = read_model(mujoco.MjModel.from_xml_path(swimmer_xml))
+        >>> at_rest = forward(xp, swimmer, make_data(xp, swimmer, swimmer.qpos0, np.ones(5)))
+        >>> origin = at_rest.subtree_com[swimmer.body_rootid]
+        >>> kin = {"xipos": at_rest.xipos, "ximat": at_rest.ximat}
+        >>> fluid_wrenches(xp, swimmer, kin, at_rest.cvel, origin).shape
+        (4, 6)
+    """
     p = model.smooth
     like = kin["xipos"]
     com = mt.take(xp, kin["xipos"], p.fluid_bodies, axis=-2)
@@ -323,7 +393,13 @@ def actuation(xp, model: Model, qpos, qvel, ctrl):
     clamped to the control range, ``force = gain * ctrl + bias`` (gain and bias affine in the
     actuator's length and velocity) clamped to the force range, ``qfrc_actuator = gear * force``
     per joint, clamped to the joint's ``actuatorfrcrange``. Returns ``(actuator_force [..., nu],
-    qfrc_actuator [..., nv])``."""
+    qfrc_actuator [..., nv])``.
+
+    Example:
+        >>> force, qfrc = actuation(xp, model, model.qpos0, np.zeros(6), np.array([1.0, 0, 0]))
+        >>> force, qfrc                          # the thigh's motor: gear 200
+        (array([1., 0., 0.]), array([  0.,   0.,   0., 200.,   0.,   0.]))
+    """
     if model.nu == 0 or ctrl is None or "actuation" in model.disabled:
         zero = qvel * 0.0
         return zero[..., :0], zero

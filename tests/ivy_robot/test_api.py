@@ -20,11 +20,20 @@ import numpy as np
 import pytest
 
 import ivy_robot
+from ivy_robot import physics
 
 PACKAGE = pathlib.Path(ivy_robot.__file__).parent
 MODULES = ["ivy_robot"] + sorted(
     m.name for m in pkgutil.walk_packages(ivy_robot.__path__, "ivy_robot.") if not m.ispkg
 )
+#: ivy_robot.physics: MuJoCo's pipeline as kernels of the backend namespace (xp first), its own
+#: public API (``ivy_robot.physics.__all__``)
+PHYSICS = [m for m in MODULES if m.startswith("ivy_robot.physics.")]
+PHYSICS_FUNCTIONS = [
+    getattr(physics, n) for n in physics.__all__ if inspect.isfunction(getattr(physics, n))
+]
+#: physics functions that build or describe a model (no arrays, no xp)
+PHYSICS_BUILDERS = {"read_model", "read_contact_table", "gather", "row_kinds"}
 CLASSES = [
     getattr(ivy_robot, n) for n in ivy_robot.__all__ if inspect.isclass(getattr(ivy_robot, n))
 ]
@@ -51,9 +60,26 @@ def test_all_is_complete():
     public = {
         name
         for module in MODULES[1:]
+        if module not in PHYSICS
         for name in getattr(importlib.import_module(module), "__all__", [])
     }
     assert public == set(ivy_robot.__all__)
+    assert len(physics.__all__) == len(set(physics.__all__))
+    in_modules = {
+        name
+        for module in PHYSICS
+        for name in getattr(importlib.import_module(module), "__all__", [])
+    }
+    assert in_modules | {"Gather", "gather"} == set(physics.__all__)
+
+
+@pytest.mark.parametrize("fn", PHYSICS_FUNCTIONS, ids=lambda f: f.__qualname__)
+def test_physics_kernels_take_the_namespace_first(fn):
+    params = list(inspect.signature(fn).parameters)
+    if fn.__name__ not in PHYSICS_BUILDERS:
+        assert params[0] == "xp", f"{fn.__qualname__}: a kernel takes the namespace xp first"
+    doc = inspect.getdoc(fn)
+    assert doc and "Example:" in doc, f"{fn.__qualname__} has no example"
 
 
 @pytest.mark.parametrize("fn", FUNCTIONS + [m for _, _, m in METHODS], ids=lambda f: f.__qualname__)
@@ -96,6 +122,8 @@ def test_docstring_examples(module):
         "start": np.array([-1.0, 0.05, 0, 0, 0, 0]),
         "goal": np.array([1.0, 0, 0, 0, 0, 0]),
     }
+    if module in PHYSICS or module == "ivy_robot.physics":
+        globs.update(_physics_globals())
     result = doctest.testmod(
         importlib.import_module(module),
         extraglobs=globs,
@@ -104,6 +132,32 @@ def test_docstring_examples(module):
     assert result.failed == 0
     if module != "ivy_robot" and not module.split(".")[-1].startswith("_"):
         assert result.attempted > 0, f"{module} has no runnable example"
+
+
+def _physics_globals() -> dict:
+    """The Hopper (and the Swimmer) of Gymnasium for the physics modules' examples: ``model``,
+    ``data`` (its forward dynamics at rest), ``xp``, the paths, MuJoCo and the public names."""
+    import os
+
+    import gymnasium
+    import mujoco
+
+    import ivy
+
+    assets = os.path.join(os.path.dirname(gymnasium.__file__), "envs", "mujoco", "assets")
+    hopper_xml = os.path.join(assets, "hopper.xml")
+    model = physics.read_model(mujoco.MjModel.from_xml_path(hopper_xml))
+    xp = ivy.numpy
+    data = physics.forward(xp, model, physics.make_data(xp, model, model.qpos0, np.zeros(6)))
+    return {
+        **{n: getattr(physics, n) for n in physics.__all__},
+        "mujoco": mujoco,
+        "hopper_xml": hopper_xml,
+        "swimmer_xml": os.path.join(assets, "swimmer.xml"),
+        "model": model,
+        "data": data,
+        "xp": xp,
+    }
 
 
 def test_import_loads_no_framework():
