@@ -24,6 +24,7 @@ class Gather(NamedTuple):
     they are contiguous (``start``, ``stop``), else a gather of ``indices`` (:func:`gather`)."""
 
     indices: np.ndarray  # int64
+    indices32: np.ndarray  # the same, int32 (gathers take these: jax without 64-bit types)
     start: int  # -1 when not contiguous
     stop: int
     whole: bool  # all of an axis of length ``size``, in order
@@ -41,6 +42,7 @@ def gather(indices, size: int) -> Gather:
     contiguous = bool(values) and values == list(range(values[0], values[0] + len(values)))
     return Gather(
         indices=np.asarray(values, dtype=np.int64),
+        indices32=np.asarray(values, dtype=np.int32),
         start=values[0] if contiguous else -1,
         stop=values[-1] + 1 if contiguous else -1,
         whole=contiguous and values[0] == 0 and len(values) == size,
@@ -133,7 +135,7 @@ def take(xp, x, where: Gather, axis: int):
     if where.start >= 0:
         key = (Ellipsis, slice(where.start, where.stop)) + (slice(None),) * (-axis - 1)
         return x[key]
-    indices = xp.constant(where.indices, dtype="int64", device=xp.dev(x))
+    indices = xp.constant(where.indices32, dtype="int32", device=xp.dev(x))
     return xp.take(x, indices, axis=axis)
 
 
