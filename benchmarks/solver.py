@@ -16,9 +16,14 @@ Also measured: the compile time of one function with four solves (an RK4 step's)
 of the solver's data-dependent loop (``ivy.torch.while_loop`` replaced, in this process only,
 by a fixed loop of K steps that keeps the carry of finished elements), the alternative design.
 
+Threads: one by default (``--threads``: XLA's and torch's intra-op pools), as MuJoCo's call
+runs on one; on a shared machine XLA's pool also made some solves 100x slower (a PGS solve:
+1.6 s with two threads beside other work, 13 ms with one).
+
 Usage:
     .venv/bin/python benchmarks/solver.py [--batches 1000,4096] [--humanoid-batches 100,1000]
-        [--backends jax,torch] [--repeats 5] [--unrolled 8] [--torch-pgs-compiled]
+        [--backends jax,torch] [--repeats 5] [--threads 1] [--unrolled 8]
+        [--torch-pgs-compiled] [--skip newton,four,pgs]
 """
 
 from __future__ import annotations
@@ -294,7 +299,16 @@ def main():
     parser.add_argument("--unrolled", type=int, default=0)
     parser.add_argument("--torch-pgs-compiled", action="store_true")
     parser.add_argument("--skip", default="", help="comma-separated: newton,four,pgs")
+    parser.add_argument("--threads", type=int, default=1, help="intra-op threads (0: default)")
     args = parser.parse_args()
+    if args.threads:
+        flags = "--xla_cpu_multi_thread_eigen=false intra_op_parallelism_threads=1"
+        if args.threads == 1 and "jax" not in sys.modules:
+            os.environ["XLA_FLAGS"] = (os.environ.get("XLA_FLAGS", "") + " " + flags).strip()
+        if "torch" in args.backends.split(","):
+            import torch
+
+            torch.set_num_threads(args.threads)
     args.batches = [int(b) for b in args.batches.split(",")]
     args.humanoid_batches = [int(b) for b in args.humanoid_batches.split(",")]
     args.backends = [b for b in args.backends.split(",") if b]
@@ -304,7 +318,8 @@ def main():
         jax.config.update("jax_enable_x64", True)
     warnings.filterwarnings("ignore")
     skip = set(args.skip.split(","))
-    print(f"float64, CPU, {os.cpu_count()} cores; ivy backends {args.backends}")
+    threads = args.threads or "default"
+    print(f"float64, CPU, {os.cpu_count()} cores, {threads} thread(s); backends {args.backends}")
     if "newton" not in skip:
         newton(args)
     if "four" not in skip:

@@ -680,46 +680,49 @@ def _pgs(xp, rows: _Rows, start, options: SolverOptions):
         xp.astype(xp.logical_not(rows.active), xp.int32), axis=-1, stable=True
     )
     table = xp.constant(_shuffle_table(n, options.iterations), device=xp.dev(like))
-    positions = xp.arange(n, device=xp.dev(like))
     inertia = _island_inertia(xp, rows, options)
     scale = 1.0 / xp.where(inertia > 0, inertia, xp.ones_like(inertia))
     most = xp.max(count)
 
+    batch_index = xp.arange(batch, device=xp.dev(like))
+    params = xp.permute_dims(params, (0, 2, 1))  # [B, n, 5]
+
     def sweep(force, step):
-        """One Gauss-Seidel sweep in this iteration's order, on the problem permuted into that
-        order (so that each visit slices rather than gathers)."""
+        """One Gauss-Seidel sweep in this iteration's order: each visit gathers one row of
+        ``AR`` per batch element (whole rows: contiguous slices) and writes one force per
+        element by scatters (no gather of every element, no work per element of a masked
+        select over the whole forces, which XLA fused with the update's arithmetic)."""
         visits = xp.take(table[:, step], count, axis=0)  # positions among the active rows
         order = xp.take_along_axis(active_first, visits, axis=-1)  # rows, in visiting order
-        AR_o = xp.take_along_axis(AR, xp.broadcast_to(order[:, :, None], (batch, n, n)), axis=1)
-        AR_o = xp.take_along_axis(AR_o, xp.broadcast_to(order[:, None, :], (batch, n, n)), axis=2)
-        params_o = xp.take_along_axis(
-            params, xp.broadcast_to(order[:, None, :], (batch, 5, n)), axis=2
-        )
+        order = xp.stack([xp.broadcast_to(batch_index[:, None], order.shape), order], axis=-1)
 
         def keep_going(carry):
             return carry[0] < most
 
         def visit(carry):
             c, force, improvement = carry
-            p = params_o[:, :, c]
-            res = p[:, 0] + xp.sum(AR_o[:, c, :] * force, axis=-1)
-            old = force[:, c]
+            at = order[:, c]  # [B, 2]: (element, row)
+            p = xp.gather_nd(params, at)  # [B, 5]
+            res = p[:, 0] + xp.sum(xp.gather_nd(AR, at) * force, axis=-1)
+            old = xp.gather_nd(force, at)
             new = xp.minimum(xp.maximum(old - res * p[:, 1], p[:, 3]), p[:, 4])
             delta = new - old
             change = 0.5 * delta * delta * p[:, 2] + delta * res
             kept = xp.logical_and(c < count, change <= _COST_INCREASE_REJECTED)
-            here = xp.logical_and(positions[None, :] == c, kept[:, None])
-            force = xp.where(here, new[:, None], force)
+            # the visited force replaced exactly: its old value out (to 0), the new one in
+            value = xp.where(kept, new, old)
+            force = (force - xp.scatter_nd(at, old, (batch, n))) + xp.scatter_nd(
+                at, value, (batch, n)
+            )
             improvement = improvement - xp.where(kept, change, xp.zeros_like(change))
             return c + 1, force, improvement
 
         start = (
             xp.zeros((), dtype=count.dtype, device=xp.dev(like)),
-            xp.take_along_axis(force, order, axis=-1),
+            force,
             xp.zeros_like(b[:, 0]),
         )
-        _, force, improvement = xp.while_loop(keep_going, visit, start)
-        return xp.take_along_axis(force, xp.argsort(order, axis=-1), axis=-1), improvement
+        return xp.while_loop(keep_going, visit, start)[1:]
 
     def keep_going(carry):
         return xp.logical_and(carry[-1] < options.iterations, xp.any(xp.logical_not(carry[3])))
