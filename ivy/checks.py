@@ -318,7 +318,10 @@ _FLOATING: dict = {}  # (dtype's type, dtype) -> whether it is a floating (real 
 
 
 def _is_floating(dtype) -> bool:
-    key = (type(dtype), dtype)  # (the type first: dtypes of two libraries never compare)
+    floating = getattr(dtype, "is_floating_point", None)
+    if isinstance(floating, bool):  # torch: read directly, no global cache for torch.compile
+        return floating or bool(dtype.is_complex)  # to trace (a cache holding other libraries'
+    key = (type(dtype), dtype)  # dtypes split its graph); the type first: they never compare
     try:
         return _FLOATING[key]
     except (KeyError, TypeError):

@@ -73,10 +73,6 @@ class InvertedPendulum(MuJoCoEnv):
     def _observation_names(self):
         return ("slider", "hinge", "slider_vel", "hinge_vel")
 
-    @property
-    def state_names(self):  # type: ignore[override]
-        return ("slider", "hinge", "slider_vel", "hinge_vel")
-
     def observation(self, xp, data):
         return xp.concat([data.qpos, data.qvel], axis=-1)
 

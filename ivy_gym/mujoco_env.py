@@ -235,18 +235,16 @@ def _state_names(xml_file: str, warmstart: bool, stale: bool, position_dim: int)
 
 def _joint_names(model, velocity: bool) -> list[str]:
     """Names of the components of ``qpos`` (or ``qvel``) by joint, in MuJoCo's order."""
-    from ivy_robot.physics.model import BALL, FREE
+    from ivy_robot.physics import JOINT_KINDS
 
+    parts_of = {
+        "free": ("vx", "vy", "vz", "wx", "wy", "wz") if velocity else "x y z qw qx qy qz".split(),
+        "ball": ("wx", "wy", "wz") if velocity else ("qw", "qx", "qy", "qz"),
+    }
     names = []
     for j in np.argsort(model.jnt_qposadr, kind="stable"):
-        name, kind = model.joint_names[j] or f"joint{j}", int(model.jnt_type[j])
-        if kind == FREE:
-            parts = ("vx", "vy", "vz", "wx", "wy", "wz") if velocity else "x y z qw qx qy qz"
-        elif kind == BALL:
-            parts = ("wx", "wy", "wz") if velocity else ("qw", "qx", "qy", "qz")
-        else:
-            parts = ("vel",) if velocity else ("",)
-        parts = parts.split() if isinstance(parts, str) else parts
+        name, kind = model.joint_names[j] or f"joint{j}", JOINT_KINDS[int(model.jnt_type[j])].name
+        parts = parts_of.get(kind, ("vel",) if velocity else ("",))
         names += [f"{name}_{p}" if p else name for p in parts]
     return names
 
@@ -498,9 +496,9 @@ class MuJoCoEnv(Env):
         if stage == "forward":
             data = forward(xp, m, make_data(xp, m, qpos, qvel, qacc_warmstart=warm))
         elif stage == "kinematics":
-            from ivy_robot.physics.kinematics import kinematics
+            from ivy_robot.physics import kinematics
 
-            fields = {k: v for k, v in kinematics(xp, m, qpos).items() if k in Data._fields}
+            fields = {k: v for k, v in kinematics(xp, m, qpos).items() if k in Data.names()}
             data = Data(qpos=qpos, qvel=qvel, **fields)
         else:
             data = Data(qpos=qpos, qvel=qvel)
@@ -629,7 +627,7 @@ class MuJoCoEnv(Env):
 
     def _geoms(self, s: np.ndarray):
         """World positions and orientations of the geoms at the state ``s`` (numpy)."""
-        from ivy_robot.physics.kinematics import kinematics
+        from ivy_robot.physics import kinematics
 
         qpos = s[: self.model.nq]
         kin = kinematics(ivy.numpy, self.model, np.asarray(qpos, np.float64))

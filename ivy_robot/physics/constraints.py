@@ -397,7 +397,7 @@ def reference(xp, model: Model, efc, qvel):
     accelerations ``aref = -B vel - K imp (pos - margin)``. Returns ``(efc_vel, efc_aref)``.
 
     Example:
-        >>> vel, aref = reference(xp, model, data._asdict(), np.ones(model.nv))
+        >>> vel, aref = reference(xp, model, data.fields(), np.ones(model.nv))
         >>> vel.shape, aref.shape
         ((44,), (44,))
     """

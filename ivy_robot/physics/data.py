@@ -107,3 +107,23 @@ class Data(NamedTuple):
             array([1., 1., 1., 1., 1., 1.])
         """
         return self._replace(**changes)
+
+    def fields(self) -> dict[str, Any]:
+        """The fields by name, absent ones (None) included.
+
+        Example: what :func:`forward` leaves for :func:`external_forces` to fill in
+
+            >>> sorted(k for k, v in data.fields().items() if v is None)
+            ['cacc', 'cfrc_ext', 'cfrc_int']
+        """
+        return self._asdict()
+
+    @classmethod
+    def names(cls) -> tuple[str, ...]:
+        """The names of the fields, in order.
+
+        Example:
+            >>> Data.names()[:3]
+            ('qpos', 'qvel', 'ctrl')
+        """
+        return cls._fields

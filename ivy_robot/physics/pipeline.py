@@ -563,4 +563,4 @@ _INPUTS = ("ctrl", "qfrc_applied", "qacc_warmstart")
 def _loop_fields(data: Data) -> dict:
     """The fields of an RK4 stage's data that leave the loop: every array the stage computed
     (not the inputs it passes through, which loops must not return as they came)."""
-    return {k: v for k, v in data._asdict().items() if v is not None and k not in _INPUTS}
+    return {k: v for k, v in data.fields().items() if v is not None and k not in _INPUTS}

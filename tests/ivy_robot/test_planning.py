@@ -5,6 +5,9 @@ compiled steps equal eager steps; numpy (no gradients) raises."""
 
 from __future__ import annotations
 
+import importlib.util
+
+
 import numpy as np
 import pytest
 
@@ -154,6 +157,10 @@ def test_torch_step_is_one_graph(drone_planner):
     optimizer = ivy.Adam(0.05)
     step = drone_planner.step_fn(optimizer, compile=False)
     state = optimizer.init({"anchors": anchors})
+    # as after other tests: the argument checks have seen every installed library's arrays
+    for name in ("numpy", "jax", "tensorflow"):
+        if importlib.util.find_spec(name) is not None:
+            ivy.checks.check_floating_dtype(getattr(ivy, name).ones((2,)).dtype)
     with torch._dynamo.config.patch(trace_autograd_ops=True):
         explanation = torch._dynamo.explain(step)(anchors, state, start, goal)
     assert explanation.graph_break_count == 0, explanation.break_reasons
