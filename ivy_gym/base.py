@@ -63,6 +63,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 import ivy
+import ivy.checks
 from ivy.typing import Array, Dtype, Framework, Shape
 
 __all__ = ["Env", "cast_like", "scalar_action", "unstack_last", "check_state", "check_action"]
@@ -333,6 +334,7 @@ class Env:
             (64, 4)
         """
         xp = ivy.get_framework(f=f)
+        ivy.checks.check_floating_dtype(dtype, f"{type(self).__name__}.reset's dtype")
         batch_shape = _shape(batch_shape)
         low = xp.constant(self._constants["reset_low"], dtype=dtype, device=device)
         width = xp.constant(self._constants["reset_width"], dtype=dtype, device=device)

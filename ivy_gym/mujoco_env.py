@@ -181,7 +181,7 @@ def control_cost(xp, action: Array, weight, like: Array) -> Array:
     Returns:
         ``(*B,)``.
     """
-    if action.dtype == xp.float32 and like.dtype == xp.float64:
+    if xp.dtype_name(action.dtype) == "float32" and xp.dtype_name(like.dtype) == "float64":
         wide = xp.astype(action, "float64")
         total = _numpy_float32_sum(xp, xp.unstack(_round32(wide * wide), axis=-1))
         if _is_number(weight):
@@ -302,6 +302,12 @@ class MuJoCoEnv(Env):
     view_width: ClassVar[float] = 4.0
 
     def __init__(self, **params: Any) -> None:
+        if not hasattr(type(self), "Params"):
+            raise TypeError(
+                f"{type(self).__name__} is the base of the MuJoCo tasks, not a task: use one of "
+                "them (ivy_gym.Hopper(), ivy_gym.Ant(), ...) or subclass it with a Params "
+                "dataclass, an observation and a reward (see ivy_gym.mujoco_env's docstring)."
+            )
         super().__init__(**params)
         p = self.params
         if int(p.frame_skip) != p.frame_skip or int(p.frame_skip) < 1:

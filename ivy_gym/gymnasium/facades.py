@@ -241,8 +241,10 @@ class _Facade:
                 f"{self._action_high}]: {a[~inside]}. Clip or rescale the action (e.g. tanh)."
             )
         # float32 and float64 actions keep their dtype: the faithful tasks compute with them as
-        # Gymnasium does (its action spaces sample float32)
-        dtype = a.dtype if a.dtype in _KEPT_ACTION_DTYPES else self.dtype
+        # Gymnasium does (its action spaces sample float32); a dtype that the backend cannot
+        # hold now (float64 on jax without 64-bit types) is cast to the environment's
+        kept = a.dtype in _KEPT_ACTION_DTYPES and hasattr(self.xp, a.dtype.name)
+        dtype = a.dtype if kept else self.dtype
         return self.xp.asarray(a, dtype=dtype, device=self.device)
 
     @property
