@@ -69,6 +69,9 @@ class Acrobot(Env):
     """
 
     Params = AcrobotParams
+    # Gymnasium computes in float64 and observes in float32
+    gymnasium_dtype = "float64"
+    gymnasium_observation_dtype = "float32"
     state_names = ("theta1", "theta2", "dtheta1", "dtheta2")
     observation_names = ("cos_theta1", "sin_theta1", "cos_theta2", "sin_theta2")
     observation_names += ("dtheta1", "dtheta2")

@@ -36,8 +36,10 @@ everything here is public and stable):
   ``kernel_reset_info(xp, state) -> info``: Gymnasium's ``info`` of a step and of a reset as a
   dict of arrays (empty by default); ``reward_type`` and ``info_types`` give the Python or
   numpy types that Gymnasium's own task returns, which the facades convert to.
-- ``gymnasium_dtype``, ``gymnasium_action_dtype``: the facades' default dtypes (Gymnasium's
-  MuJoCo tasks: float64 observations, float32 actions).
+- ``gymnasium_dtype``, ``gymnasium_action_dtype``, ``gymnasium_observation_dtype``: the
+  facades' default dtypes, Gymnasium's: the state's (what Gymnasium computes in), the action
+  space's and the observations' (None: the state's). The MuJoCo tasks: float64 states and
+  observations, float32 actions; Pendulum: a float64 state observed in float32.
 - ``action_box(xp, dtype=..., device=...) -> (low, high)``: the action space as arrays that
   every compiler traces as constants; ``squash(xp, logits)``: unbounded logits to actions in
   the box, ``mid + half_width * tanh(logits)``.
@@ -98,6 +100,7 @@ class Env:
     #: action space (None: the same).
     gymnasium_dtype: ClassVar[str] = "float32"
     gymnasium_action_dtype: ClassVar[str | None] = None
+    gymnasium_observation_dtype: ClassVar[str | None] = None
     #: The type of the reward in the Gymnasium facades (Gymnasium's own task's type).
     reward_type: ClassVar[Any] = float
     #: The types of the values of ``info`` in the Gymnasium facades where they are not

@@ -96,6 +96,10 @@ class CartPole(_CartPoleBase):
         >>> s, obs, reward, terminated = env.step(s, jnp.ones((16, 1)))
     """
 
+    # Gymnasium computes in float64 and observes in float32
+    gymnasium_dtype = "float64"
+    gymnasium_observation_dtype = "float32"
+
     observation_names = state_names = _CartPoleBase.state_names
     can_terminate = True
     max_episode_steps = 500

@@ -122,6 +122,9 @@ class MountainCar(_MountainCarBase):
     """
 
     Params = MountainCarDiscreteParams
+    # Gymnasium computes in float64 and observes in float32
+    gymnasium_dtype = "float64"
+    gymnasium_observation_dtype = "float32"
     can_terminate = True
     max_episode_steps = 200
     #: The core actions of Gymnasium's discrete actions {0, 1, 2}.
@@ -188,6 +191,11 @@ class MountainCarContinuous(_MountainCarBase):
     """
 
     Params = MountainCarParams
+    # Gymnasium computes in float64 (rounding its state to float32 after every step, as the
+    # core does), observes and acts in float32
+    gymnasium_dtype = "float64"
+    gymnasium_observation_dtype = "float32"
+    gymnasium_action_dtype = "float32"
     can_terminate = True
     max_episode_steps = 999
 

@@ -92,6 +92,11 @@ class Pendulum(_PendulumBase):
     """
 
     Params = PendulumParams
+    # Gymnasium computes in float64, observes and acts in float32; its rewards are numpy floats
+    gymnasium_dtype = "float64"
+    gymnasium_observation_dtype = "float32"
+    gymnasium_action_dtype = "float32"
+    reward_type = np.float64
 
     def __init__(self, *, smooth: bool = False, **params) -> None:
         self.smooth = bool(smooth)

@@ -8,9 +8,13 @@ The core owns the physics, run on any backend:
     envs = gymnasium.make_vec("ivy_gym/CartPole-v1", num_envs=1024,
                               vectorization_mode="vector_entry_point", framework="jax")
 
-Observations are numpy arrays of the chosen dtype (by default the core's
-``gymnasium_dtype``: float64 for the MuJoCo tasks, as Gymnasium's, float32 otherwise; the
-action space's dtype is the core's ``gymnasium_action_dtype``: float32 for the MuJoCo tasks);
+The core computes in the chosen dtype, and observations are numpy arrays of it. By default both
+are Gymnasium's, so that a facade made with its defaults passes Gymnasium's own
+``check_environments_match`` against Gymnasium's environment: the core's ``gymnasium_dtype``
+(float64 for the MuJoCo tasks, Pendulum and MountainCarContinuous, which Gymnasium computes in
+float64; float32 otherwise) and ``gymnasium_observation_dtype`` (float32 observations of
+Pendulum's and MountainCarContinuous's float64 states); the action space's dtype is the core's
+``gymnasium_action_dtype`` (float32 for the MuJoCo tasks);
 ``env.unwrapped.state`` reads and writes the state as a float64 numpy array in the core's layout
 (Gymnasium's, for the faithful tasks). Actions are checked against the action space; float32 and
 float64 actions keep their dtype (the faithful tasks compute with them as Gymnasium does).
@@ -44,13 +48,11 @@ _KEPT_ACTION_DTYPES = (np.dtype("float32"), np.dtype("float64"))
 
 
 def _default_dtype(core: Env, xp) -> str:
-    """The core's ``gymnasium_dtype``, or float32 (with a warning) where the backend cannot
-    hold float64 now (jax without x64)."""
+    """The core's ``gymnasium_dtype``, or float32 where the backend cannot hold float64 now
+    (jax without x64): with a warning where the observations then differ from Gymnasium's."""
     name = core.gymnasium_dtype
-    if name == "float64":
-        try:
-            xp.float64  # noqa: B018  (jax without x64 raises)
-        except Exception:  # ivy's UnavailableDtypeError
+    if name == "float64" and not hasattr(xp, "float64"):  # (jax without x64: no such dtype)
+        if (core.gymnasium_observation_dtype or name) == "float64":
             gymnasium.logger.warn(
                 f"ivy_gym: {type(core).__name__}'s observations are float64 in Gymnasium, but "
                 f"{xp.backend} cannot hold float64 now (for jax: jax.config.update("
@@ -95,6 +97,11 @@ class _Facade:
         self._to_numpy = self.xp.to_numpy  # the backend's own: no dispatch at every step
         self.framework = self.xp.backend
         self.dtype = _dtype_name(_default_dtype(core, self.xp) if dtype is None else dtype)
+        #: The observations' dtype: ``dtype``'s; by default Gymnasium's (float32 observations
+        #: of a state that Gymnasium computes in float64, as Pendulum's).
+        self.observation_dtype = _dtype_name(
+            (dtype is None and core.gymnasium_observation_dtype) or self.dtype
+        )
         self.action_dtype = _dtype_name(core.gymnasium_action_dtype or self.dtype)
         self.discrete = bool(discrete)
         low, high = core.action_bounds()
@@ -113,7 +120,7 @@ class _Facade:
             self._single_action_space = spaces.Discrete(len(table))
         else:
             self._single_action_space = _box(low, high, self.action_dtype)
-        self._single_observation_space = _box(*core.observation_bounds(), self.dtype)
+        self._single_observation_space = _box(*core.observation_bounds(), self.observation_dtype)
         self._action_low = low.astype(self.action_dtype)
         self._action_high = high.astype(self.action_dtype)
         # The step and the reset's kernels, resolved once: the core's kernels on the facade's
@@ -138,6 +145,9 @@ class _Facade:
 
     def _numpy(self, x) -> np.ndarray:
         return np.asarray(self._to_numpy(x), dtype=self.dtype)
+
+    def _observation(self, x) -> np.ndarray:
+        return np.asarray(self._to_numpy(x), dtype=self.observation_dtype)
 
     def _reward(self, value) -> Any:
         """A reward as the type of Gymnasium's own task."""
@@ -329,7 +339,7 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
         super().reset(seed=seed)
         self._state, obs, info = self._to_backend(self.core.draw_initial(self.np_random))
-        return self._numpy(obs), self._info(info, self.action_dtype)
+        return self._observation(obs), self._info(info, self.action_dtype)
 
     def step(self, action):
         if self._state is None:
@@ -338,7 +348,7 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
         state, obs, reward, terminated, info = self._step(self._state, a)
         self._state = state
         return (
-            self._numpy(obs),
+            self._observation(obs),
             self._reward(self._to_numpy(reward)),
             bool(self._to_numpy(terminated)),
             False,
@@ -428,14 +438,14 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         self._state, obs, info = self._to_backend(draws)
         self._steps[:] = 0
         self._prev_done[:] = False
-        return self._numpy(obs), self._vector_info(info, self.action_dtype)
+        return self._observation(obs), self._vector_info(info, self.action_dtype)
 
     def step(self, actions):
         if self._state is None:
             raise RuntimeError(f"{self._name}: call reset() before step().")
         a = self._checked_actions(actions, (self.num_envs,))
         state, obs, reward, terminated, info = self._step(self._state, a)
-        state_np, obs, reward = self._numpy(state), self._numpy(obs), self._numpy(reward)
+        state_np, obs, reward = self._numpy(state), self._observation(obs), self._numpy(reward)
         terminated = np.asarray(self._to_numpy(terminated), bool)
         info = self._vector_info(info, _numpy_dtype(a))
         steps = self._steps
@@ -459,7 +469,7 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
             state = self.xp.asarray(state_np, device=self.device)
             if not obs.flags.writeable:
                 obs = obs.copy()
-            obs[restart] = self._numpy(fresh_obs)[restart]
+            obs[restart] = self._observation(fresh_obs)[restart]
             reward[restart] = 0.0
             terminated[restart] = False
             truncated[restart] = False

@@ -9,6 +9,7 @@ import importlib.util
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 import ivy.checks
@@ -50,3 +51,45 @@ def test_reset_refuses_an_integer_dtype(backend):
 def test_the_mujoco_base_is_not_a_task():
     with pytest.raises(TypeError, match="base of the MuJoCo tasks"):
         ivy_gym.MuJoCoEnv()
+
+
+# the tasks whose physics Gymnasium's check can hold to its exact reward comparison; the MuJoCo
+# locomotion tasks agree to rounding (1e-16), which its `==` on rewards fails: they are checked
+# with skip_rew in tests/ivy_gym/test_locomotion.py
+DROP_IN = ("CartPole-v1", "Pendulum-v1", "MountainCarContinuous-v0", "MountainCar-v0",
+           "Acrobot-v1")  # fmt: skip
+
+
+@pytest.mark.filterwarnings("ignore::UserWarning")
+@pytest.mark.parametrize("task", DROP_IN)
+def test_facades_with_their_defaults_are_gymnasiums_by_its_own_check(task, backend):
+    """gymnasium.utils.env_match.check_environments_match: the same spaces and dtypes, seeded
+    resets, observations, rewards (exactly, and their types), terminations and info over 50
+    sampled steps, on every backend that can compute in float64, the step run eagerly.
+
+    Compiled (the default of jax and tensorflow), XLA may keep float32 terms in float64
+    (``xla_allow_excess_precision``) and fuse operations: Pendulum's rewards there are 1 ulp
+    (jax) to 3e-11 (tensorflow's float32 action cost) from Gymnasium's, which its ``==``
+    fails; they are compared to 1e-9 below."""
+    gymnasium = pytest.importorskip("gymnasium")
+    from gymnasium.utils.env_match import check_environments_match
+
+    import ivy_gym.gymnasium  # noqa: F401  (registers the ids)
+    from tests.conftest import require
+
+    require(backend, "float64")
+    eager = gymnasium.make(f"ivy_gym/{task}", framework=backend, compile=False)
+    check_environments_match(gymnasium.make(task), eager, num_steps=50)
+    default = gymnasium.make(f"ivy_gym/{task}", framework=backend)
+    ref = gymnasium.make(task)
+    for env in (ref, default):
+        env.reset(seed=3)
+        env.action_space.seed(3)
+    for _ in range(50):
+        action = ref.action_space.sample()
+        ref_out, out = ref.step(action), default.step(action)
+        np.testing.assert_allclose(out[0], ref_out[0], rtol=1e-6, atol=1e-6)  # float32 obs
+        assert abs(out[1] - ref_out[1]) < 1e-9 and type(out[1]) is type(ref_out[1])
+        assert out[2:4] == ref_out[2:4]
+        if ref_out[2] or ref_out[3]:
+            break
