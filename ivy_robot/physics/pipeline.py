@@ -13,7 +13,9 @@ namespace, the model and the data that returns the data with its fields filled i
 
 :func:`step` integrates one ``timestep`` with the model's integrator: Euler (semi-implicit, dof
 damping implicit unless disabled) or RK4, whose four stages are one loop over its table (so a
-compiler traces the dynamics once). As after ``mj_step``, the returned data holds the new
+compiler traces the dynamics once: the loop and the solver's are declared pure, which keeps
+them as loops inside torch.compile too; measured on the Hopper with contacts, 313 s to compile
+with the loops unrolled). As after ``mj_step``, the returned data holds the new
 ``qpos`` and ``qvel``, ``qacc_warmstart`` for the next step, and everything else as the last
 evaluation of the dynamics left it (for RK4, its last stage: what Gymnasium's tasks read).
 """
@@ -543,7 +545,7 @@ def _runge_kutta(xp, model: Model, data: Data) -> Data:
 
     zero = qvel0 * 0.0
     (_, last_acc, mean_vel, mean_acc), stages = xp.scan(
-        stage, (zero, zero, zero, zero), (fractions, weights)
+        stage, (zero, zero, zero, zero), (fractions, weights), pure=True
     )
     last = Data(**{k: v[-1] for k, v in stages.items()})
     qpos = integrate_positions(xp, model, qpos0, mean_vel, h)

@@ -21,9 +21,12 @@ zero on one-sided rows with ``jar >= 0``, and Huber-like on friction-loss rows (
   Newton decrement below the tolerance; MuJoCo can stop a little before the exact minimiser),
   or once a step leaves every row in its zone, which makes that step the exact minimiser (the
   cost is strictly convex). Batch elements that are done stop changing; the loop ends when all
-  are done (``while_loop``: a compiled loop on jax and tensorflow; a Python loop on numpy and
-  torch, where torch.compile breaks the graph at its test once per iteration and compiles the
-  body once).
+  are done (``while_loop``, declared pure: a compiled loop on jax and tensorflow, torch's
+  ``while_loop`` operator inside torch.compile, whose graph then holds the loop, its body traced
+  once; a Python loop on numpy and eager torch). The loops' bodies close over no two views of
+  one array (no transposes of the captured ``J``: :func:`~ivy_robot.physics._math.rmatvec`,
+  :func:`~ivy_robot.physics._math.gram`) and no array made while tracing, as torch's operators
+  require.
 - ``"pgs"``: MuJoCo 4.0.1's projected Gauss-Seidel on the dual, iterate for iterate (it stops
   unconverged): its Nesterov momentum with gradient restarts, its row order (a Fisher-Yates
   shuffle of the rows at every sweep, drawn from its PCG32 generator with its fixed seed), its
@@ -48,6 +51,8 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from ivy.typing import Array
+from ivy_robot.physics import _math as mt
+from ivy_robot.physics import smooth
 
 __all__ = [
     "ROW_EQUALITY",
@@ -243,9 +248,9 @@ def solve(
         gauss = flat.qfrc_smooth
     else:
         force, iterations = _pgs(xp, still, start, options)
-        qacc = still.qacc_smooth + _solve_M(xp, still.M, _matvec_T(xp, still.J, force))
+        qacc = still.qacc_smooth + _solve_spd(xp, still.M, _matvec_T(xp, still.J, force))
         zones = _zones_of_forces(xp, still, force)
-        gauss = xp.matvec(flat.M, flat.qacc_smooth)
+        gauss = mt.matvec(xp, flat.M, flat.qacc_smooth)
     rows = still
     if xp.capabilities.autodiff:
         rows = _rows(xp, flat, kinds)
@@ -339,11 +344,20 @@ def _rows(xp, p: ConstraintProblem, kinds: np.ndarray) -> _Rows:
 
 def _matvec_T(xp, J, f):
     """``J' f`` for ``J`` *[B, n, nv]*, ``f`` *[B, n]*."""
-    return xp.matvec(xp.matrix_transpose(J), f)
+    return mt.rmatvec(xp, J, f)
 
 
-def _solve_M(xp, M, rhs):
-    return xp.linalg.solve(M, rhs[..., None])[..., 0]
+def _solve_spd(xp, A, rhs):
+    """``A^-1 rhs`` for symmetric positive definite ``A`` *[B, nv, nv]* and ``rhs`` *[B, nv]*:
+    an ``L D L'`` factorisation written element-wise (:func:`~ivy_robot.physics.smooth.ldl_factor`;
+    on XLA's CPU backend much faster than a batched ``linalg.solve`` of small matrices)."""
+    plan = _factor_plan(int(A.shape[-1]))
+    return smooth.ldl_solve(xp, plan, smooth.ldl_factor(xp, plan, A), rhs)
+
+
+@functools.lru_cache(maxsize=None)
+def _factor_plan(n: int):
+    return smooth.factor_plan(n)
 
 
 def _zones(xp, rows: _Rows, jar):
@@ -376,8 +390,8 @@ def _zones_of_forces(xp, rows: _Rows, force):
 
 def _total_cost(xp, rows: _Rows, qacc):
     """MuJoCo's cost of ``qacc`` (constraint cost plus the Gauss term), per batch element."""
-    cost = _cost(xp, rows, xp.matvec(rows.J, qacc) - rows.aref)
-    Ma = xp.matvec(rows.M, qacc)
+    cost = _cost(xp, rows, mt.matvec(xp, rows.J, qacc) - rows.aref)
+    Ma = mt.matvec(xp, rows.M, qacc)
     return cost + 0.5 * xp.sum((Ma - rows.qfrc_smooth) * (qacc - rows.qacc_smooth), axis=-1)
 
 
@@ -397,10 +411,10 @@ def _newton(xp, rows: _Rows, start, options: SolverOptions):
     stop there at its next test), and where the line search cannot descend."""
     qacc = rows.qacc_smooth
     if start is not None:  # the cheaper of qacc_warmstart and qacc_smooth
-        smooth_cost = _cost(xp, rows, xp.matvec(rows.J, qacc) - rows.aref)
+        smooth_cost = _cost(xp, rows, mt.matvec(xp, rows.J, qacc) - rows.aref)
         worse = _total_cost(xp, rows, start) > smooth_cost
         qacc = xp.where(worse[:, None], qacc, start)
-    jar = xp.matvec(rows.J, qacc) - rows.aref
+    jar = mt.matvec(xp, rows.J, qacc) - rows.aref
     inertia = _island_inertia(xp, rows, options)
     scale = 1.0 / xp.where(inertia > 0, inertia, xp.ones_like(inertia))
     tolerance = options.tolerance
@@ -423,9 +437,9 @@ def _newton(xp, rows: _Rows, start, options: SolverOptions):
         first = xp.logical_and(gradient < tolerance, decrement < tolerance)
         done = xp.logical_or(done, xp.where(step == 0, first, xp.logical_or(small, improved)))
 
-        Jv = xp.matvec(rows.J, search)
+        Jv = mt.matvec(xp, rows.J, search)
         slope0 = xp.sum(gauss * search, axis=-1)
-        curvature = xp.sum(search * xp.matvec(rows.M, search), axis=-1)
+        curvature = xp.sum(search * mt.matvec(xp, rows.M, search), axis=-1)
         alpha = _line_search(xp, rows, jar, Jv, slope0, curvature)
         done = xp.logical_or(done, xp.logical_not(alpha > 0))  # no descent
         new_jar = jar + alpha[:, None] * Jv
@@ -446,10 +460,10 @@ def _newton(xp, rows: _Rows, start, options: SolverOptions):
 
     zero = xp.zeros_like(scale)
     carry = (qacc, jar, *_zones(xp, rows, jar), zero, done, count, step)
-    qacc, *_, count, _ = xp.while_loop(keep_going, iterate, carry)
+    qacc, *_, count, _ = xp.while_loop(keep_going, iterate, carry, pure=True)
     # rows that exist in no batch element: MuJoCo's shortcut qacc = qacc_smooth
     qacc = xp.where(xp.any(rows.active, axis=-1)[:, None], qacc, rows.qacc_smooth)
-    return qacc, xp.matvec(rows.J, qacc) - rows.aref, count
+    return qacc, mt.matvec(xp, rows.J, qacc) - rows.aref, count
 
 
 def _newton_direction(xp, rows: _Rows, qacc, jar, below, above):
@@ -457,11 +471,10 @@ def _newton_direction(xp, rows: _Rows, qacc, jar, below, above):
     qfrc_smooth``, the cost's gradient and the Newton direction ``-H^-1 grad``."""
     quadratic = xp.logical_not(xp.logical_or(below, above))
     force = xp.where(quadratic, -rows.D * jar, xp.where(below, rows.floss, rows.high_force))
-    gauss = xp.matvec(rows.M, qacc) - rows.qfrc_smooth
+    gauss = mt.matvec(xp, rows.M, qacc) - rows.qfrc_smooth
     grad = gauss - _matvec_T(xp, rows.J, force)
-    DJ = xp.where(quadratic, rows.D, xp.zeros_like(rows.D))[..., None] * rows.J
-    H = rows.M + xp.matmul(xp.matrix_transpose(rows.J), DJ)
-    return gauss, grad, -xp.linalg.solve(H, grad[..., None])[..., 0]
+    H = rows.M + mt.gram(xp, rows.J, xp.where(quadratic, rows.D, xp.zeros_like(rows.D)))
+    return gauss, grad, -_solve_spd(xp, H, grad)
 
 
 def _row_costs(xp, rows: _Rows, jar, below, above):
@@ -507,8 +520,8 @@ def _line_search(xp, rows: _Rows, jar, Jv, slope0, curvature):
       its end: one step per crossing passed, a loop while any batch element walks on (few
       steps in practice, each a pass over the rows; no sort, which is slow on XLA's CPU);
     - elsewhere (torch, numpy), in one pass: the crossings sorted, the changes of slope summed
-      along them, the first segment whose end has a non-negative derivative (no loop, which
-      would break torch.compile's graph at every step).
+      along them, the first segment whose end has a non-negative derivative (no loop: eager
+      torch would wait on its test at every step).
 
     Args:
         jar: *[B, n]* ``J qacc - aref``; ``Jv``: *[B, n]* ``J search``.
@@ -566,12 +579,12 @@ class _Line:
 
     def root(self, lo):
         """The root of the derivative in the segment starting at ``lo``, within the segment;
-        also whether it lies there: ``(alpha, inside)``."""
+        also whether it lies there, and the segment's end: ``(alpha, inside, end)``."""
         xp = self.xp
         a, b, end = self.segment(lo)
         positive = b > 0
         root = xp.where(positive, -a / xp.where(positive, b, xp.ones_like(b)), lo)
-        return xp.minimum(xp.maximum(root, lo), end), root <= end
+        return xp.minimum(xp.maximum(root, lo), end), root <= end, end
 
     def walk(self):
         xp = self.xp
@@ -581,16 +594,15 @@ class _Line:
 
         def step(carry):
             lo, alpha, done = carry
-            root, inside = self.root(lo)
+            root, inside, end = self.root(lo)
             found = xp.logical_and(xp.logical_not(done), inside)
-            _, _, end = self.segment(lo)
             alpha = xp.where(found, root, alpha)
             lo = xp.where(xp.logical_or(done, found), lo, end)
             return lo, alpha, xp.logical_or(done, found)
 
         zero = xp.zeros_like(self.slope0)
         done = xp.zeros(self.slope0.shape, dtype=xp.bool, device=xp.dev(zero))
-        return xp.while_loop(walking, step, (zero, zero, done))[1]
+        return xp.while_loop(walking, step, (zero, zero, done), pure=True)[1]
 
     def sorted_segment(self):
         """The start of the segment where the derivative vanishes, from the sorted crossings:
@@ -672,10 +684,10 @@ def _pgs(xp, rows: _Rows, start, options: SolverOptions):
     batch, n = like.shape
     MinvJT = xp.linalg.solve(rows.M, xp.matrix_transpose(rows.J))
     AR = xp.matmul(rows.J, MinvJT) + _diag(xp, rows.R)
-    b = xp.matvec(rows.J, rows.qacc_smooth) - rows.aref
+    b = mt.matvec(xp, rows.J, rows.qacc_smooth) - rows.aref
     force = xp.zeros_like(like)
     if start is not None:  # warm forces unless their dual cost is positive
-        warm_jar = xp.matvec(rows.J, start) - rows.aref
+        warm_jar = mt.matvec(xp, rows.J, start) - rows.aref
         warm = _forces(xp, rows, warm_jar, *_zones(xp, rows, warm_jar))
         dual = xp.sum(warm * b, axis=-1) + 0.5 * xp.sum(warm * xp.matvec(AR, warm), axis=-1)
         force = xp.where((dual > 0)[:, None], force, warm)
@@ -735,7 +747,7 @@ def _pgs(xp, rows: _Rows, start, options: SolverOptions):
             force,
             xp.zeros_like(b[:, 0]),
         )
-        return xp.while_loop(keep_going, visit, start)[1:]
+        return xp.while_loop(keep_going, visit, start, pure=True)[1:]
 
     def keep_going(carry):
         return xp.logical_and(carry[-1] < options.iterations, xp.any(xp.logical_not(carry[3])))
@@ -766,7 +778,7 @@ def _pgs(xp, rows: _Rows, start, options: SolverOptions):
     step0 = xp.zeros((), dtype=xp.int32, device=xp.dev(like))
     done = xp.zeros((batch,), dtype=xp.bool, device=xp.dev(like))
     carry = (force, force, zeros_int, done, zeros_int, step0)
-    force, _, _, _, iterations, _ = xp.while_loop(keep_going, iterate, carry)
+    force, _, _, _, iterations, _ = xp.while_loop(keep_going, iterate, carry, pure=True)
     return force, iterations
 
 
@@ -777,19 +789,22 @@ def _island_inertia(xp, rows: _Rows, options: SolverOptions):
     if not options.islands:
         return xp.sum(diagonal, axis=-1)
     nv = rows.M.shape[-1]
-    tree = np.zeros(nv, np.int64) if options.dof_tree is None else np.asarray(options.dof_tree)
-    if tree.shape != (nv,):
-        raise ValueError(f"constraint solver: dof_tree has {tree.shape[0]} dofs, expected {nv}")
-    # dof -> tree incidence (a tree of -1, a static dof, is no tree)
-    incidence = xp.constant(
-        (tree[:, None] == np.arange(max(int(tree.max()) + 1, 1))[None, :]).astype(np.float64),
-        dtype=diagonal.dtype,
-        device=xp.dev(diagonal),
-    )
-    touched = xp.astype(xp.sum(xp.abs(rows.J), axis=-2) > 0, diagonal.dtype)  # [B, nv]
-    trees = xp.astype(xp.matmul(touched, incidence) > 0, diagonal.dtype)  # [B, trees]
-    island = xp.matmul(trees, xp.matrix_transpose(incidence)) > 0  # [B, nv]
-    return xp.sum(xp.where(island, diagonal, xp.zeros_like(diagonal)), axis=-1)
+    tree = (0,) * nv if options.dof_tree is None else tuple(int(t) for t in options.dof_tree)
+    if len(tree) != nv:
+        raise ValueError(f"constraint solver: dof_tree has {len(tree)} dofs, expected {nv}")
+    # tree by tree (static Python indices, no constant arrays: inside torch.compile's loop
+    # operators an array made while tracing becomes a constant of the body that inductor
+    # does not bind); a tree of -1, a static dof, is no tree
+    touched = xp.sum(xp.abs(rows.J), axis=-2) > 0  # [B, nv]
+    zero = xp.zeros_like(diagonal[..., 0])
+    total = zero
+    for k in sorted(set(tree) - {-1}):
+        dofs = [i for i, t in enumerate(tree) if t == k]
+        hit, inertia = touched[..., dofs[0]], diagonal[..., dofs[0]]
+        for i in dofs[1:]:
+            hit, inertia = xp.logical_or(hit, touched[..., i]), inertia + diagonal[..., i]
+        total = total + xp.where(hit, inertia, zero)
+    return total
 
 
 def _project(xp, rows: _Rows, force):
@@ -827,12 +842,11 @@ def _implicit(xp, rows: _Rows, qacc, force, zones, gauss, D):
     quadratic = xp.logical_not(xp.logical_or(below, above))
     linear = xp.where(below, rows.floss, rows.high_force)
     D = xp.where(quadratic, D, xp.zeros_like(D))
-    jar = xp.matvec(rows.J, qacc) - rows.aref
+    jar = mt.matvec(xp, rows.J, qacc) - rows.aref
     row_force = xp.where(quadratic, -D * jar, linear)
-    grad = xp.matvec(rows.M, qacc) - gauss - _matvec_T(xp, rows.J, row_force)
-    H = rows.M + xp.matmul(xp.matrix_transpose(rows.J), D[..., None] * rows.J)
-    stepped = qacc - xp.linalg.solve(H, grad[..., None])[..., 0]
-    stepped_force = xp.where(quadratic, -D * (xp.matvec(rows.J, stepped) - rows.aref), linear)
+    grad = mt.matvec(xp, rows.M, qacc) - gauss - _matvec_T(xp, rows.J, row_force)
+    stepped = qacc - _solve_spd(xp, rows.M + mt.gram(xp, rows.J, D), grad)
+    stepped_force = xp.where(quadratic, -D * (mt.matvec(xp, rows.J, stepped) - rows.aref), linear)
     qacc = qacc + (stepped - xp.stop_gradient(stepped))
     force = force + (stepped_force - xp.stop_gradient(stepped_force))
     return qacc, force
