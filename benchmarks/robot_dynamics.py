@@ -14,13 +14,20 @@ interleaved, shuffled repeats); the minimum per call and per state is reported, 
 to MuJoCo's (< 1: faster). ``--memory`` runs each compiled step again in a fresh process and
 reports its peak resident memory above the same process at batch 1.
 
+Threads: one intra-op thread by default (``--threads``: XLA's pool and torch's), as MuJoCo's
+call runs on one; on a shared machine XLA's pool also made solves up to 100x slower. A torch
+step that inductor cannot compile is an error here (``ivy.compile_fn`` would run it eagerly,
+with a warning, and its eager time would be reported as compiled); dynamo captures scalar
+outputs (``torch._dynamo.config.capture_scalar_outputs``), without which inductor fails on the
+RK4 scan (see ``_set_threads``).
+
 MJX is not a dependency of the project: point ``--mjx-path`` at a folder where ``mujoco-mjx``
 (and its requirements ``etils``, ``trimesh``) are installed, e.g. ``pip install --no-deps
 --target /tmp/mjxpkg mujoco-mjx etils trimesh``; it is appended to ``sys.path``.
 
 Usage:
     .venv/bin/python benchmarks/robot_dynamics.py [--models hopper,ant] [--batches 1000,4096]
-        [--repeats 5] [--backends jax,torch] [--torch-threads 1] [--mjx-path DIR] [--memory]
+        [--repeats 5] [--backends jax,torch] [--threads 1] [--mjx-path DIR] [--memory]
 """
 
 from __future__ import annotations
@@ -195,8 +202,8 @@ def memory(args, name, backend, batch):
     root = os.path.join(_HERE, "..")
     code = (
         f"import sys, resource; sys.path[:0] = [{_HERE!r}, {root!r}]; "
-        f"import robot_dynamics as b; b._memory_child({name!r}, {backend!r}, {batch}); "
-        "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)"
+        f"import robot_dynamics as b; b._memory_child({name!r}, {backend!r}, {batch}, "
+        f"{args.threads}); print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     if out.returncode:
@@ -204,14 +211,16 @@ def memory(args, name, backend, batch):
     return int(out.stdout.strip().splitlines()[-1]) / 1024
 
 
-def _memory_child(name, backend, batch):
+def _memory_child(name, backend, batch, threads=1):
     import mujoco
+
+    _set_threads(threads)
 
     if backend == "jax":
         import jax
 
         jax.config.update("jax_enable_x64", True)
-    warnings.filterwarnings("ignore")
+    _warnings()
     mjmodel = mujoco.MjModel.from_xml_path(model_path(name))
     model = physics.read_model(mjmodel)
     xp = getattr(ivy, backend)
@@ -224,27 +233,46 @@ def _memory_child(name, backend, batch):
         _sync(compiled(*x))
 
 
+def _set_threads(threads: int):
+    """One intra-op thread for XLA (before jax is imported) and torch, or ``threads``
+    for torch (0: the libraries' defaults)."""
+    flags = "--xla_cpu_multi_thread_eigen=false intra_op_parallelism_threads=1"
+    if threads == 1 and "jax" not in sys.modules and flags not in os.environ.get("XLA_FLAGS", ""):
+        os.environ["XLA_FLAGS"] = (os.environ.get("XLA_FLAGS", "") + " " + flags).strip()
+    if importlib.util.find_spec("torch"):
+        import torch
+
+        if threads:
+            torch.set_num_threads(threads)
+        # inductor rewrites the RK4 scan as a while loop that reads its step with .item(); not
+        # captured (the default), its compilation fails where dynamo did not get the whole step
+        # as one graph, as under ivy.compile_fn (no fullgraph), and the step would run eagerly
+        torch._dynamo.config.capture_scalar_outputs = True
+
+
+def _warnings():
+    warnings.filterwarnings("ignore")
+    warnings.filterwarnings("error", message="torch.compile cannot run")  # no eager fallback
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--models", default="hopper,ant")
     parser.add_argument("--batches", default="1000,4096")
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--backends", default="jax,torch")
-    parser.add_argument("--torch-threads", type=int, default=1)
+    parser.add_argument("--threads", type=int, default=1, help="intra-op threads (0: default)")
     parser.add_argument("--mjx-path", default=None)
     parser.add_argument("--memory", action="store_true")
     args = parser.parse_args()
     if args.mjx_path:  # before mujoco is imported: mujoco.mjx is found on the path then
         sys.path.append(args.mjx_path)
+    _set_threads(args.threads)
     backends = [b for b in args.backends.split(",") if importlib.util.find_spec(b)]
     if "jax" in backends or args.mjx_path:
         import jax
 
         jax.config.update("jax_enable_x64", True)
-    if "torch" in backends:
-        import torch
-
-        torch.set_num_threads(args.torch_threads)
     use_mjx = False
     if args.mjx_path:
         try:
@@ -253,9 +281,9 @@ def main():
             use_mjx = True
         except ImportError as err:
             print(f"MJX does not import ({err}): its rows are left out\n")
-    warnings.filterwarnings("ignore")
+    _warnings()
     print(
-        f"float64; torch threads: {args.torch_threads}; load average "
+        f"float64; intra-op threads: {args.threads or 'default'}; load average "
         f"{os.getloadavg()[0]:.1f}; {os.cpu_count()} cores"
     )
     for name in args.models.split(","):
