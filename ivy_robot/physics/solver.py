@@ -348,14 +348,22 @@ def _matvec_T(xp, J, f):
 
 
 def _solve_spd(xp, A, rhs):
-    """``A^-1 rhs`` for symmetric positive definite ``A`` *[B, nv, nv]* and ``rhs`` *[B, nv]*:
-    an ``L D L'`` factorisation written element-wise (:func:`~ivy_robot.physics.smooth.ldl_factor`;
-    on XLA's CPU backend much faster than a batched ``linalg.solve`` of small matrices)."""
-    plan = _factor_plan(int(A.shape[-1]))
-    return smooth.ldl_solve(xp, plan, smooth.ldl_factor(xp, plan, A), rhs)
+    """``A^-1 rhs`` for symmetric positive definite ``A`` *[B, nv, nv]* and ``rhs`` *[B, nv]*.
+
+    A batched ``linalg.solve``, except where the compiler keeps loops only when declared pure
+    (``compilation`` without ``compiled_loops``: torch), whose code generator fails on it inside
+    the solver's loop operators: there an ``L D L'`` factorisation written element-wise
+    (:func:`~ivy_robot.physics.smooth.ldl_factor`). Under XLA the element-wise factor runs as
+    fast (15.0 against 14.6 us per Hopper state) but makes the programs of the solver's
+    gradients slow to compile (jax: 185 s against 5 s for the gradient test)."""
+    caps = xp.capabilities
+    if caps.compilation and not caps.compiled_loops:
+        plan = _factor_plan(int(A.shape[-1]))
+        return smooth.ldl_solve(xp, plan, smooth.ldl_factor(xp, plan, A), rhs)
+    return xp.linalg.solve(A, rhs[..., None])[..., 0]
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _factor_plan(n: int):
     return smooth.factor_plan(n)
 

@@ -214,6 +214,9 @@ def test_facade_on_every_backend(backend):
     assert env.compiled == (backend in ("jax", "tensorflow"))
     core = env.core
     check_env(env, skip_render_check=True)
+    check_environments_match(  # rewards: rounding apart, compared to 1e-9 below
+        gymnasium.make(task), env, num_steps=2, skip_rew=True, info_comparison="keys-equivalence"
+    )
     # set_state as Gymnasium's: then both step from the same state
     ref = gymnasium.make(task).unwrapped
     ref.reset(seed=1)
