@@ -58,7 +58,7 @@ def _default_dtype(core: Env, xp) -> str:
                 f"{xp.backend} cannot hold float64 now (for jax: jax.config.update("
                 "'jax_enable_x64', True)); using float32."
             )
-            return "float32"
+        return "float32"
     return name
 
 

@@ -40,7 +40,7 @@ def test_jax_without_64_bit_types_takes_gymnasiums_actions():
     assert out.returncode == 0, out.stderr[-3000:]
     lines = out.stdout.strip().splitlines()
     # float32 observations where jax cannot hold float64; rewards of Gymnasium's types
-    assert lines == ["Pendulum-v1 float32 float", "Reacher-v5 float32 float64"], lines
+    assert lines == ["Pendulum-v1 float32 float64", "Reacher-v5 float32 float64"], lines
 
 
 def test_reset_refuses_an_integer_dtype(backend):
