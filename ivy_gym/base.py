@@ -39,7 +39,8 @@ everything here is public and stable):
 - ``gymnasium_dtype``, ``gymnasium_action_dtype``, ``gymnasium_observation_dtype``: the
   facades' default dtypes, Gymnasium's: the state's (what Gymnasium computes in), the action
   space's and the observations' (None: the state's). The MuJoCo tasks: float64 states and
-  observations, float32 actions; Pendulum: a float64 state observed in float32.
+  observations, float32 actions; Gymnasium's classic-control tasks: float64 states observed
+  in float32.
 - ``action_box(xp, dtype=..., device=...) -> (low, high)``: the action space as arrays that
   every compiler traces as constants; ``squash(xp, logits)``: unbounded logits to actions in
   the box, ``mid + half_width * tanh(logits)``.

@@ -70,11 +70,10 @@ def measure(name, steps, xp, seed=0):
     import mujoco
 
     from ivy_robot import physics
-    from ivy_robot.physics.model import read_model
 
     path = os.path.join(_assets(), f"{name}.xml")
     mjm = mujoco.MjModel.from_xml_path(path)
-    model = read_model(mjm)
+    model = physics.read_model(mjm)
     rng = np.random.default_rng(seed)
     ref = _trajectory(mjm, steps, rng)
     data = physics.make_data(xp, model, ref["qpos"], ref["qvel"], ref["ctrl"],

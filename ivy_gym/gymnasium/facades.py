@@ -11,10 +11,11 @@ The core owns the physics, run on any backend:
 The core computes in the chosen dtype, and observations are numpy arrays of it. By default both
 are Gymnasium's, so that a facade made with its defaults passes Gymnasium's own
 ``check_environments_match`` against Gymnasium's environment: the core's ``gymnasium_dtype``
-(float64 for the MuJoCo tasks, Pendulum and MountainCarContinuous, which Gymnasium computes in
-float64; float32 otherwise) and ``gymnasium_observation_dtype`` (float32 observations of
-Pendulum's and MountainCarContinuous's float64 states); the action space's dtype is the core's
-``gymnasium_action_dtype`` (float32 for the MuJoCo tasks);
+(float64 for the MuJoCo tasks and for Gymnasium's classic-control tasks, which Gymnasium
+computes in float64; float32 for ivy_gym's own tasks) and ``gymnasium_observation_dtype``
+(float32 observations of the classic-control tasks' float64 states); the action space's dtype
+is the core's ``gymnasium_action_dtype`` (float32 for the MuJoCo tasks, Pendulum and
+MountainCarContinuous); where the backend cannot hold float64 (jax without 64-bit types), float32;
 ``env.unwrapped.state`` reads and writes the state as a float64 numpy array in the core's layout
 (Gymnasium's, for the faithful tasks). Actions are checked against the action space; float32 and
 float64 actions keep their dtype (the faithful tasks compute with them as Gymnasium does).
