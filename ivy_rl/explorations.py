@@ -28,14 +28,29 @@ __all__ = [
 
 
 class NoNoise:
-    """Actions as the policy gives them.
+    """Actions as the policy gives them (the exploration part of agents whose policy samples:
+    SAC, MPO).
+
+    Args:
+        start_steps: environment steps of uniformly random actions before the policy acts.
 
     Example:
         >>> NoNoise()(np.zeros((2, 1)), rng)
         array([[0.], [0.]])
     """
 
-    def __call__(self, actions: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    #: the name of the exploration in the flat settings (``exploration='none'``)
+    name = "none"
+
+    def __init__(self, *, start_steps: int = 0) -> None:
+        self.start_steps = _start_steps(start_steps, type(self).__name__)
+
+    def __call__(
+        self, actions: np.ndarray, rng: np.random.Generator, *, num_actions: Any = None,
+        steps: int = 0,
+    ) -> np.ndarray:
+        """The actions to take given the policy's ``actions`` (``num_actions`` and ``steps``:
+        read by ε-greedy explorations only)."""
         return np.asarray(actions)
 
     def reset(self, resets: Any) -> None:
@@ -58,12 +73,15 @@ class NormalNoise(NoNoise):
         >>> NormalNoise(0.1)(actions, rng)
     """
 
-    def __init__(self, scale: float = 0.1) -> None:
+    name = "normal"
+
+    def __init__(self, scale: float = 0.1, *, start_steps: int = 0) -> None:
         if scale < 0:
             raise ValueError(f"NormalNoise: scale must be >= 0, got {scale}")
+        super().__init__(start_steps=start_steps)
         self.scale = float(scale)
 
-    def __call__(self, actions: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    def __call__(self, actions, rng, *, num_actions=None, steps=0):
         actions = np.asarray(actions)
         noise = rng.standard_normal(actions.shape)
         return np.clip(actions + self.scale * noise, -1.0, 1.0).astype(actions.dtype)
@@ -82,16 +100,21 @@ class OrnsteinUhlenbeckNoise(NoNoise):
         >>> OrnsteinUhlenbeckNoise(scale=0.2, theta=0.15, dt=0.01)(actions, rng)
     """
 
-    def __init__(self, scale: float = 0.1, *, theta: float = 0.15, dt: float = 1e-2) -> None:
+    name = "ornstein_uhlenbeck"
+
+    def __init__(
+        self, scale: float = 0.1, *, theta: float = 0.15, dt: float = 1e-2, start_steps: int = 0
+    ) -> None:
         if scale < 0 or theta < 0 or dt <= 0:
             raise ValueError(
                 "OrnsteinUhlenbeckNoise: need scale >= 0, theta >= 0 and dt > 0, got "
                 f"scale={scale}, theta={theta}, dt={dt}"
             )
+        super().__init__(start_steps=start_steps)
         self.scale, self.theta, self.dt = float(scale), float(theta), float(dt)
         self.state: np.ndarray | None = None
 
-    def __call__(self, actions: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    def __call__(self, actions, rng, *, num_actions=None, steps=0):
         actions = np.asarray(actions)
         if self.state is None or self.state.shape != actions.shape:
             self.state = np.zeros(actions.shape)
@@ -112,20 +135,31 @@ class OrnsteinUhlenbeckNoise(NoNoise):
         self.state = np.array(state["state"], np.float64) if "state" in state else None
 
 
-class EpsilonGreedy:
+class EpsilonGreedy(NoNoise):
     """For value-based agents: a uniformly random action with probability ε, else the greedy
     one; ε falls linearly from ``start`` to ``end`` over ``decay_steps`` environment steps.
 
     Args:
         start, end: ε at the first step and after ``decay_steps``.
         decay_steps: environment steps (all workers together) of the linear decay.
+        start_steps: environment steps of uniformly random actions before the first greedy one.
 
     Example:
         >>> explore = EpsilonGreedy(1.0, 0.05, 10_000)
         >>> actions = explore(greedy, rng, num_actions=2, steps=500)
     """
 
-    def __init__(self, start: float = 1.0, end: float = 0.05, decay_steps: int = 10_000) -> None:
+    name = "epsilon_greedy"
+
+    def __init__(
+        self,
+        start: float = 1.0,
+        end: float = 0.05,
+        decay_steps: int = 10_000,
+        *,
+        start_steps: int = 0,
+    ) -> None:
+        super().__init__(start_steps=start_steps)
         if not (0.0 <= end <= 1.0 and 0.0 <= start <= 1.0) or decay_steps < 0:
             raise ValueError(
                 "EpsilonGreedy: need 0 <= start, end <= 1 and decay_steps >= 0, got "
@@ -141,7 +175,12 @@ class EpsilonGreedy:
         return self.start + fraction * (self.end - self.start)
 
     def __call__(
-        self, greedy: np.ndarray, rng: np.random.Generator, *, num_actions: Any, steps: int
+        self,
+        greedy: np.ndarray,
+        rng: np.random.Generator,
+        *,
+        num_actions: Any = None,
+        steps: int = 0,
     ) -> np.ndarray:
         """``greedy`` actions ``[workers, *dims]`` (indices) with random ones mixed in; with
         several action dimensions (``num_actions`` a sequence), each is randomised alone."""
@@ -159,8 +198,9 @@ EXPLORATIONS = {
 }
 
 
-def make_exploration(name: str, scale: float = 0.1) -> NoNoise:
-    """An exploration noise by name: ``'normal'``, ``'ornstein_uhlenbeck'`` or ``'none'``.
+def make_exploration(name: str, scale: float = 0.1, *, start_steps: int = 0) -> NoNoise:
+    """An exploration noise by name: ``'normal'``, ``'ornstein_uhlenbeck'`` or ``'none'``
+    (``start_steps``: steps of uniformly random actions first).
 
     Example:
         >>> make_exploration("normal", 0.1)
@@ -170,4 +210,10 @@ def make_exploration(name: str, scale: float = 0.1) -> NoNoise:
             f"unknown exploration {name!r}; choose one of {', '.join(map(repr, EXPLORATIONS))}"
         )
     cls = EXPLORATIONS[name]
-    return cls() if cls is NoNoise else cls(scale)
+    return cls(start_steps=start_steps) if cls is NoNoise else cls(scale, start_steps=start_steps)
+
+
+def _start_steps(value: Any, who: str) -> int:
+    if isinstance(value, bool) or int(value) != value or value < 0:
+        raise ValueError(f"{who}: start_steps must be an integer >= 0, got {value!r}")
+    return int(value)

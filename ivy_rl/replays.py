@@ -21,7 +21,54 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Segment"]
+from ivy_rl.buffers import TransitionReplay
+
+__all__ = ["Segment", "Transitions"]
+
+
+class Transitions(TransitionReplay):
+    """The replay part of the off-policy agents (DDPG, TD3, SAC, MPO, D4PG, DQN): a
+    :class:`~ivy_rl.buffers.TransitionReplay` of the last ``size`` transitions, with when and
+    how the agent learns from it.
+
+    Args:
+        size: transitions kept (all workers together).
+        return_steps: n of the n-step returns.
+        batch_size: transitions per optimisation step.
+        batch_iterations: optimisation steps per update.
+        discount: γ of the n-step returns.
+        update_after: environment steps before the first update.
+        update_every: environment steps between updates.
+
+    Example:
+        >>> SAC(replay=Transitions(100_000, batch_size=128, update_every=50))
+    """
+
+    def __init__(
+        self,
+        size: int = 1_000_000,
+        *,
+        return_steps: int = 1,
+        batch_size: int = 256,
+        batch_iterations: int = 50,
+        discount: float = 0.99,
+        update_after: int = 1000,
+        update_every: int = 50,
+    ) -> None:
+        super().__init__(size, return_steps=return_steps)
+        for name, value, low in (
+            ("batch_size", batch_size, 1),
+            ("batch_iterations", batch_iterations, 1),
+            ("update_after", update_after, 0),
+            ("update_every", update_every, 1),
+        ):
+            if isinstance(value, bool) or int(value) != value or value < low:
+                raise ValueError(f"Transitions: {name} must be an integer >= {low}, got {value!r}")
+        if not 0.0 <= discount <= 1.0:
+            raise ValueError(f"Transitions: discount must be in [0, 1], got {discount}")
+        self.batch_size, self.batch_iterations = int(batch_size), int(batch_iterations)
+        self.discount = float(discount)
+        self.update_after, self.update_every = int(update_after), int(update_every)
 
 
 class Segment:

@@ -85,6 +85,52 @@ class Agent:
     #: settings of a base class that this agent does not read
     _unused: tuple[str, ...] = ()
 
+    #: the agent's parts, as in Tonic: ``{role: (factory, {flat setting: the factory's
+    #: parameter})}``; a part given to the constructor (``SAC(model=...)``) replaces the one the
+    #: flat settings would build. None: an agent without parts.
+    parts: dict[str, tuple[Any, dict[str, str]]] | None = None
+
+    @classmethod
+    def _composed(cls, settings: dict[str, Any]) -> tuple[dict[str, Any], dict[str, Any]]:
+        """``(config, parts)``: the flat settings (defaults overridden by ``settings``, each
+        checked) and the parts, each the one given in ``settings`` under its role or built
+        by its factory from its flat settings. The flat settings of a given part are read back
+        from it (``config`` always holds the values used); giving a part and one of its flat
+        settings is a TypeError."""
+        parts = cls.parts or {}
+        settings = dict(settings)
+        # a string under a role's name is the flat setting of that name (DDPG's
+        # exploration='normal' chooses its exploration part by name)
+        given = {
+            role: settings.pop(role)
+            for role in list(settings)
+            if role in parts and not isinstance(settings[role], str)
+        }
+        config = cls._checked_settings(settings, f", and its parts {', '.join(parts)}")
+        built = {}
+        for role, (factory, names) in parts.items():
+            part = given.get(role)
+            if part is None:
+                part = factory(**{param: config[flat] for flat, param in names.items()})
+            else:
+                clash = sorted(set(settings) & set(names))
+                if clash:
+                    raise TypeError(
+                        f"{cls.__name__}: settings {clash} belong to the {role} given; set them "
+                        "on it"
+                    )
+                for flat, param in names.items():
+                    if hasattr(part, param):
+                        config[flat] = getattr(part, param)
+            built[role] = part
+        return config, built
+
+    def _part_rates(self, scheduled: dict[str, Any], role: str) -> dict[str, Any]:
+        """The scheduled values (arrays) of a part's settings, by the part's parameter names
+        (``{'lr': ...}`` for an updater whose ``lr`` is the flat ``actor_lr``)."""
+        names = (self.parts or {})[role][1]
+        return {param: scheduled[flat] for flat, param in names.items() if flat in scheduled}
+
     @classmethod
     def _checked_settings(cls, settings: dict[str, Any], also: str = "") -> dict[str, Any]:
         """The ``_defaults`` of every class in the MRO, less ``_unused``, overridden by

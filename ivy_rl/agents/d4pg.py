@@ -12,10 +12,15 @@ Example:
 
 from __future__ import annotations
 
+from functools import partial
 from typing import Any
 
-from ivy_rl.agents.ddpg import DDPG
-from ivy_rl.critics import project_categorical
+from ivy_rl.agents.ddpg import DDPG, MODEL, UPDATER
+from ivy_rl.off_policy_models import ActorQModel
+from ivy_rl.off_policy_updaters import (
+    DistributionalDeterministicPolicyGradient,
+    DistributionalDeterministicQLearning,
+)
 
 __all__ = ["D4PG"]
 
@@ -33,7 +38,18 @@ class D4PG(DDPG):
     """
 
     _defaults: dict[str, Any] = dict(v_min=-150.0, v_max=150.0, atoms=51, return_steps=5)
-    _critic_head = "categorical"
+    parts = {
+        **DDPG.parts,
+        "model": (
+            partial(ActorQModel, policy="deterministic", critic_head="categorical"),
+            {**MODEL, "v_min": "v_min", "v_max": "v_max", "atoms": "atoms"},
+        ),
+        "actor_updater": (
+            DistributionalDeterministicPolicyGradient,
+            {"actor_lr": "lr", **UPDATER},
+        ),
+        "critic_updater": (DistributionalDeterministicQLearning, {"critic_lr": "lr", **UPDATER}),
+    }
 
     def _check_config(self, config):
         if not config["v_min"] < config["v_max"]:
@@ -42,25 +58,3 @@ class D4PG(DDPG):
             )
         if config["atoms"] < 2:
             raise ValueError(f"D4PG: atoms must be >= 2, got {config['atoms']}")
-
-    def _critic_head_args(self):
-        c = self.config
-        return {"v_min": c["v_min"], "v_max": c["v_max"], "atoms": c["atoms"]}
-
-    def _critic_targets(self, v, targets, batch, obs_stats, x):
-        following = batch["next_observations"]
-        actions = self.model.actor(following, obs_stats, v=targets["actor"]).mode()
-        values = self._q(targets["critic"], following, actions, obs_stats)
-        projected = project_categorical(
-            self.xp, values.probs(), batch["returns"], batch["discounts"], values.support
-        )
-        return self.xp.stop_gradient(projected)
-
-    def _critic_loss(self, critic_v, batch, targets, obs_stats):
-        values = self._q(critic_v, batch["observations"], batch["actions"], obs_stats)
-        return -self.xp.mean(self.xp.sum(targets * values.logits, axis=-1))
-
-    def _actor_loss(self, actor_v, critic_v, batch, obs_stats, x):
-        observations = batch["observations"]
-        actions = self.model.actor(observations, obs_stats, v=actor_v).mode()
-        return -self.xp.mean(self._q(critic_v, observations, actions, obs_stats).mean())

@@ -5,8 +5,12 @@ MultiDiscrete actions (Tavakoli et al., 2018): one head per action dimension ove
 Both explore ε-greedily on the host (:class:`ivy_rl.explorations.EpsilonGreedy`) and learn from
 n-step transitions of the replay (bootstrapped after time limits, not after terminations) with
 a Huber loss; the target network follows by soft updates (``target_tau=1``: copies). A Discrete
-space is one branch, so both agents share one update: the target value is
+space is one branch, so both agents share one update
+(:class:`~ivy_rl.off_policy_updaters.QLearning`): the target value is
 ``R + γ^k mean_d Q'_d(s', argmax_a Q_d(s', a))`` (double) or ``... max_a Q'_d(s', a)``.
+
+The agent is its parts: ``DQN(model=QModel(...), replay=Transitions(...),
+exploration=EpsilonGreedy(...), updater=QLearning(...))``.
 
 Example:
     >>> agent = DQN(dueling=True, double=True).initialize(
@@ -15,21 +19,27 @@ Example:
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
 
+from ivy_rl.agents.ddpg import REPLAY, UPDATER
 from ivy_rl.agents.off_policy import OffPolicyAgent
-from ivy_rl.critics import BranchingQHead, DiscreteQHead, QNetwork
 from ivy_rl.explorations import EpsilonGreedy
-from ivy_rl.models import MLPTorso, ObservationEncoder, orthogonal_init
+from ivy_rl.off_policy_models import QModel
+from ivy_rl.off_policy_updaters import QLearning
+from ivy_rl.replays import Transitions
 
 __all__ = ["DQN", "BranchingDQN"]
 
 
 class DQN(OffPolicyAgent):
     """Deep Q-learning for Discrete actions.
+
+    Parts: ``model`` (:class:`~ivy_rl.off_policy_models.QModel`), ``replay``
+    (:class:`~ivy_rl.replays.Transitions`), ``exploration``
+    (:class:`~ivy_rl.explorations.EpsilonGreedy`), ``updater``
+    (:class:`~ivy_rl.off_policy_updaters.QLearning`).
 
     Args:
         dueling: a dueling head (state value plus centred advantages).
@@ -57,118 +67,34 @@ class DQN(OffPolicyAgent):
         batch_size=128,
         target_tau=0.01,
     )
+    parts = {
+        "model": (
+            QModel,
+            {
+                "hidden_sizes": "hidden_sizes",
+                "activation": "activation",
+                "dueling": "dueling",
+                "normalize_observations": "normalize_observations",
+                "target_tau": "target_tau",
+            },
+        ),
+        "replay": (Transitions, REPLAY),
+        "exploration": (
+            EpsilonGreedy,
+            {
+                "epsilon_start": "start",
+                "epsilon_end": "end",
+                "epsilon_decay_steps": "decay_steps",
+                "start_steps": "start_steps",
+            },
+        ),
+        "updater": (QLearning, {"critic_lr": "lr", "double": "double", **UPDATER}),
+    }
+    _updater_logs = {"updater": "critic"}
 
-    def _branch_sizes(self) -> tuple[int, ...]:
-        return (int(self.action_space.n),)
-
-    def _head(self, in_size: int, init: Any) -> Any:
-        return DiscreteQHead(
-            in_size,
-            self._branch_sizes()[0],
-            dueling=self.config["dueling"],
-            weight_init=init,
-            dtype=self.dtype,
-            device=self.device,
-            f=self.xp,
-        )
-
-    def _build_parts(self):
-        c, rng = self.config, self.rng
-        build = {"dtype": self.dtype, "device": self.device, "f": self.xp}
-        torso = MLPTorso(
-            self.observation_size,
-            c["hidden_sizes"],
-            c["activation"],
-            weight_init=orthogonal_init(rng, math.sqrt(2.0)),
-            **build,
-        )
-        head = self._head(torso.out_size, orthogonal_init(rng, 1.0))
-        encoder = ObservationEncoder(self.observation_size, f=self.xp)
-        self.q_network = QNetwork(encoder, torso, head)
-        v = {"q": self.q_network.v}
-        self.optimizers = {"q": self._adam(c["critic_lr"])}
-        return v, {"q": self.q_network.v}
-
-    def _build_exploration(self):
-        c = self.config
-        self.exploration = EpsilonGreedy(
-            c["epsilon_start"], c["epsilon_end"], c["epsilon_decay_steps"]
-        )
-
-    # ------------------------------------------------------------------------------------------
-    # The branches: a Discrete space is one
-    # ------------------------------------------------------------------------------------------
-
-    def _branches(self, q_v, observations, obs_stats):
-        """Action values per branch: a list of ``[..., n_d]``."""
-        return [self.q_network(observations, obs_stats, v=q_v)]
-
-    def _branch_actions(self, actions):
-        return [actions]
-
-    def _greedy(self, branches):
-        return self.xp.argmax(branches[0], axis=-1)
-
-    # ------------------------------------------------------------------------------------------
-    # Acting
-    # ------------------------------------------------------------------------------------------
-
-    def _act_fn(self, v, obs_stats, observations, noise):
-        return self._greedy(self._branches(v["q"], observations, obs_stats))
-
-    def _mode_fn(self, v, obs_stats, observations):
-        return self._greedy(self._branches(v["q"], observations, obs_stats))
-
-    def _policy_actions(self, observations):
-        greedy = super()._policy_actions(observations)
-        sizes = self._branch_sizes()
-        num_actions = sizes[0] if self.action_kind == "Discrete" else sizes
-        return self.exploration(greedy, self.rng, num_actions=num_actions, steps=self.steps)
-
-    # ------------------------------------------------------------------------------------------
-    # Learning
-    # ------------------------------------------------------------------------------------------
-
-    def _next_values(self, v, targets, following, obs_stats):
-        """``mean_d`` of the branches' bootstrap values ``[batch]``."""
-        xp = self.xp
-        target_branches = self._branches(targets["q"], following, obs_stats)
-        if self.config["double"]:
-            online = self._branches(v["q"], following, obs_stats)
-            values = [
-                xp.sum(
-                    xp.one_hot(xp.argmax(o, axis=-1), int(t.shape[-1]), dtype=t.dtype) * t,
-                    axis=-1,
-                )
-                for o, t in zip(online, target_branches)
-            ]
-        else:
-            values = [xp.max(t, axis=-1) for t in target_branches]
-        return xp.mean(xp.stack(values), axis=0)
-
-    def _q_loss(self, q_v, batch, goal, obs_stats):
-        xp = self.xp
-        branches = self._branches(q_v, batch["observations"], obs_stats)
-        losses = []
-        for values, actions in zip(branches, self._branch_actions(batch["actions"])):
-            chosen = xp.one_hot(actions, int(values.shape[-1]), dtype=values.dtype)
-            error = xp.sum(chosen * values, axis=-1) - goal
-            size = xp.abs(error)
-            losses.append(xp.mean(xp.where(size < 1.0, 0.5 * xp.square(error), size - 0.5)))
-        return xp.mean(xp.stack(losses))
-
-    def _learn_step(self, carry, x, arrays, obs_stats):
-        xp = self.xp
-        v, targets, states = carry["v"], carry["targets"], carry["states"]
-        batch = self._batch(arrays, x["indices"])
-        next_values = self._next_values(v, targets, batch["next_observations"], obs_stats)
-        goal = xp.stop_gradient(batch["returns"] + batch["discounts"] * next_values)
-        q_v, q_state, infos = self._minimize(
-            "q", lambda w: self._q_loss(w, batch, goal, obs_stats), v["q"], states["q"]
-        )
-        v, states = {**v, "q": q_v}, {**states, "q": q_state}
-        targets = self._soft_update(targets, v, ("q",))
-        return {"v": v, "targets": targets, "states": states}, {"critic/loss": infos["loss"]}
+    def _num_actions(self):
+        sizes = self.model.branch_sizes
+        return sizes[0] if self.action_kind == "Discrete" else sizes
 
     def _learn(self):
         logs = super()._learn()
@@ -190,32 +116,8 @@ class BranchingDQN(DQN):
 
     supported_action_spaces = ("MultiDiscrete",)
 
-    def _branch_sizes(self):
-        return tuple(int(n) for n in np.asarray(self.action_space.nvec).reshape(-1))
-
-    def _head(self, in_size, init):
-        return BranchingQHead(
-            in_size,
-            self._branch_sizes(),
-            dueling=self.config["dueling"],
-            weight_init=init,
-            dtype=self.dtype,
-            device=self.device,
-            f=self.xp,
-        )
-
-    def _branches(self, q_v, observations, obs_stats):
-        return self.q_network(observations, obs_stats, v=q_v)
-
-    def _branch_actions(self, actions):
-        return [actions[..., d] for d in range(len(self._branch_sizes()))]
-
-    def _greedy(self, branches):
-        xp = self.xp
-        return xp.stack([xp.argmax(b, axis=-1) for b in branches], axis=-1)
-
     def _random_actions(self, count):
-        sizes = np.asarray(self._branch_sizes())
+        sizes = np.asarray(self.model.branch_sizes)
         return np.floor(self.rng.random((count, len(sizes))) * sizes).astype(np.int64)
 
     def _env_actions(self, unit_actions):

@@ -18,7 +18,7 @@ from __future__ import annotations
 import ivy
 from ivy.typing import Framework
 
-__all__ = ["FUSION_LEVELS", "compiled_scan_unrolls"]
+__all__ = ["FUSION_LEVELS", "compiled_scan_unrolls", "check_fusion", "fusion_level"]
 
 FUSION_LEVELS = ("auto", "update", "steps")
 
@@ -41,3 +41,33 @@ def compiled_scan_unrolls(*, f: Framework = None) -> bool:
         (False, True)
     """
     return not ivy.get_framework(f=f).capabilities.compiled_loops
+
+
+def check_fusion(who: str, fusion: str) -> str:
+    """``fusion`` if it is one of :data:`FUSION_LEVELS`, else a ValueError naming ``who``.
+
+    Example:
+        >>> check_fusion("SAC", "steps")
+        'steps'
+    """
+    if fusion not in FUSION_LEVELS:
+        raise ValueError(
+            f"{who}: unknown fusion {fusion!r}; choose one of "
+            f"{', '.join(map(repr, FUSION_LEVELS))}"
+        )
+    return fusion
+
+
+def fusion_level(fusion: str, *, compiled: bool, f: Framework = None) -> str:
+    """The fusion level an agent runs at (the one rule of every agent): ``fusion`` itself
+    when it is ``'update'`` or ``'steps'``; for ``'auto'``, ``'steps'`` where the agent
+    compiles and the compiler of ``f`` unrolls ``ivy.scan`` (:func:`compiled_scan_unrolls`),
+    else ``'update'``.
+
+    Example:
+        >>> fusion_level("auto", compiled=True, f="torch"), fusion_level("auto", compiled=True, f="jax")
+        ('steps', 'update')
+    """
+    if fusion != "auto":
+        return check_fusion("fusion_level", fusion)
+    return "steps" if compiled and compiled_scan_unrolls(f=f) else "update"

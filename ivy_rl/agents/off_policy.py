@@ -19,30 +19,18 @@ in :meth:`OffPolicyAgent._learn_step`.
 
 from __future__ import annotations
 
-import copy
 from typing import Any
 
 import numpy as np
 
 import ivy
 from ivy_rl.agents.agent import Agent
-from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
-from ivy_rl.buffers import TransitionReplay, n_step_batch
-from ivy_rl.critics import soft_update
+from ivy_rl.agents.fusion import check_fusion, fusion_level
+from ivy_rl.buffers import n_step_batch
+from ivy_rl.models import polyak_update
 from ivy_rl.normalizers import MeanStd
-from ivy_rl.schedules import as_schedule
 
 __all__ = ["OffPolicyAgent"]
-
-
-#: the setting of each part's learning rate (the parts of ``self.optimizers``)
-_LEARNING_RATE_OF_PART = {
-    "actor": "actor_lr",
-    "critic": "critic_lr",
-    "q": "critic_lr",
-    "temperature": "temperature_lr",
-    "dual": "dual_lr",
-}
 
 
 class OffPolicyAgent(Agent):
@@ -89,64 +77,66 @@ class OffPolicyAgent(Agent):
         fusion="auto",
     )
 
+    #: the parts' roles and the prefix of their logs
+    _updater_logs: dict[str, str] = {"critic_updater": "critic", "actor_updater": "actor"}
+
     def __init__(self, **settings: Any) -> None:
-        config = self._checked_settings(settings)
-        if config["fusion"] not in FUSION_LEVELS:
-            raise ValueError(
-                f"{type(self).__name__}: unknown fusion {config['fusion']!r}; choose one of "
-                f"{', '.join(map(repr, FUSION_LEVELS))}"
-            )
+        config, parts = self._composed(settings)
+        check_fusion(type(self).__name__, config["fusion"])
         self._check_config(config)
+        for role, part in parts.items():
+            setattr(self, role, part)
+        self._parts = parts
         super().__init__(**config)
 
     def _check_config(self, config: dict[str, Any]) -> None:
         """Checks of settings that depend on each other (subclasses add theirs)."""
+
+    @property
+    def _updaters(self) -> dict[str, Any]:
+        """The updaters by role, in the order of their steps."""
+        return {role: self._parts[role] for role in self._updater_logs}
 
     # ------------------------------------------------------------------------------------------
     # Building
     # ------------------------------------------------------------------------------------------
 
     def _build(self) -> None:
-        c = self.config
+        xp, model = self.xp, self.model
         self.observation_size = int(np.prod(self.observation_space.shape))
+        model.initialize(
+            self.observation_space,
+            self.action_space,
+            rng=self.rng,
+            dtype=self.dtype,
+            device=self.device,
+            f=xp,
+        )
+        v = dict(model.v)
         self.optimizers: dict[str, Any] = {}
-        v, targets = self._build_parts()
+        for updater in self._updaters.values():
+            updater.initialize(xp, model, dtype=self.dtype, device=self.device)
+            v.update(updater.variables())
+            self.optimizers.update(updater.optimizers())
+        # the optimisers in the order of the variables (the checkpoints' layout)
+        self.optimizers = {k: self.optimizers[k] for k in v if k in self.optimizers}
         self.v = self._placed(v)
-        self.targets = self._placed(targets)
+        self.targets = self._placed(dict(model.target_v))
         self.optimizer_states = {k: opt.init(self.v[k]) for k, opt in self.optimizers.items()}
-        normalize = c["normalize_observations"]
+        normalize = model.normalize_observations
         self.observation_normalizer = MeanStd((self.observation_size,)) if normalize else None
-        self.replay = TransitionReplay(c["replay_size"], return_steps=c["return_steps"])
-        self._build_exploration()
         self._pending: dict[str, np.ndarray] | None = None
         self.steps = self.updates = self._since_update = 0
         self._refresh_stats()
         self._act = self._compile(self._act_fn, "act")
         self._mode = self._compile(self._mode_fn, "mode")
-        self.fusion = c["fusion"]
-        if self.fusion == "auto":
-            unrolls = self.compiled and compiled_scan_unrolls(f=self.xp)
-            self.fusion = "steps" if unrolls else "update"
+        self.fusion = fusion_level(self.config["fusion"], compiled=self.compiled, f=xp)
         self._fused = self.fusion == "update"
         if self._fused:
             self._update = self._compile(self._update_fn, "update")
         else:
             self._update = self._update_fn
             self._compiled_step = self._compile(self._scan_step, "learn_step")
-
-    def _build_parts(self) -> tuple[dict[str, Any], dict[str, Any]]:
-        """Models and optimisers: returns ``(v, targets)``, the variables by part and the
-        targets' variables by part, and fills ``self.optimizers`` (one per part of ``v`` that
-        learns by gradients)."""
-        raise NotImplementedError
-
-    def _build_exploration(self) -> None:
-        """The exploration on the host (none by default)."""
-
-    def _adam(self, lr: float | str) -> Any:
-        """Adam at the start of ``lr`` (a number or a schedule); each step takes its scheduled
-        learning rate as an array (:meth:`_minimize`)."""
-        return ivy.Adam(as_schedule(lr)(0.0), f=self.xp)
 
     def _refresh_stats(self) -> None:
         norm = self.observation_normalizer
@@ -162,16 +152,16 @@ class OffPolicyAgent(Agent):
 
     def _act_fn(self, v, obs_stats, observations, noise):
         """Actions of the behaviour policy (before the host's exploration)."""
-        raise NotImplementedError
+        return self.model.act(v, obs_stats, observations, noise)
 
     def _mode_fn(self, v, obs_stats, observations):
         """Actions of the test policy."""
-        raise NotImplementedError
+        return self.model.mode(v, obs_stats, observations)
 
     def _update_fn(self, carry, xs, arrays, obs_stats, scheduled):
         """The whole update: ``(carry, logs)`` after the steps of ``xs`` (leading axis: the
         optimisation steps), ``carry = {'v', 'targets', 'states'}``; ``scheduled``: the
-        scheduled learning rates (scalar arrays, :meth:`Agent.set_progress`)."""
+        scheduled settings' values (scalar arrays, :meth:`Agent.set_progress`)."""
         xp = self.xp
         if self._fused:
             carry, ys = xp.scan(
@@ -188,42 +178,33 @@ class OffPolicyAgent(Agent):
         return carry, {k: xp.mean(y) for k, y in ys.items()}
 
     def _scan_step(self, carry, x, arrays, obs_stats, scheduled):
-        # the learning rates of the step being traced, read by _minimize
-        self._step_lrs = scheduled
-        try:
-            return self._learn_step(carry, x, arrays, obs_stats)
-        finally:
-            self._step_lrs = None
+        rates = {role: self._part_rates(scheduled, role) for role in self._updater_logs}
+        return self._learn_step(carry, x, arrays, obs_stats, rates)
 
-    def _learn_step(self, carry, x, arrays, obs_stats):
-        """One optimisation step: ``(carry, scalars)``."""
-        raise NotImplementedError
+    def _learn_step(self, carry, x, arrays, obs_stats, rates):
+        """One optimisation step: each updater's step on the batch of ``x['indices']`` (the
+        critic's, then the actor's), then the targets' soft update: ``(carry, scalars)``."""
+        v, targets, states = carry["v"], carry["targets"], carry["states"]
+        batch = self._batch(arrays, x["indices"])
+        logs = {}
+        for role, prefix in self._updater_logs.items():
+            v, states, infos = self._parts[role].step(
+                v, targets, states, batch, obs_stats, x, rates[role]
+            )
+            logs.update({f"{prefix}/{k}": a for k, a in infos.items()})
+        targets = self._soft_update(targets, v)
+        return {"v": v, "targets": targets, "states": states}, logs
 
     def _batch(self, arrays, indices):
         """The n-step transitions of the windows ``indices`` ``[n, batch]``; constants."""
-        batch = n_step_batch(self.xp, arrays, indices, discount=self.config["discount"])
+        batch = n_step_batch(self.xp, arrays, indices, discount=self.replay.discount)
         return {k: self.xp.stop_gradient(a) for k, a in batch.items()}
 
-    def _minimize(self, part, loss_fn, v, state):
-        """Gradients of ``loss_fn`` (returning ``loss`` or ``(loss, infos)``) on the part's
-        variables ``v``, clipped, and a step of the part's optimiser."""
-        xp = self.xp
-        loss, grads, *aux = xp.execute_with_gradients(loss_fn, v)
-        clip = self.config["gradient_clip"]
-        if clip:
-            grads = xp.clip_by_global_norm(grads, clip)[0]
-        optimizer = self.optimizers[part]
-        lr = (getattr(self, "_step_lrs", None) or {}).get(_LEARNING_RATE_OF_PART.get(part))
-        if lr is not None:
-            optimizer = copy.copy(optimizer)
-            optimizer.lr = lr
-        new_v, new_state = optimizer.step(v, grads, state)
-        return new_v, new_state, {"loss": loss, **(aux[0] if aux else {})}
-
-    def _soft_update(self, targets, v, parts):
-        """The targets of ``parts`` moved towards ``v`` by ``target_tau``."""
-        tau = self.config["target_tau"]
-        moved = soft_update({p: targets[p] for p in parts}, {p: v[p] for p in parts}, tau)
+    def _soft_update(self, targets, v):
+        """Every target moved towards its part of ``v`` by the model's ``target_tau``."""
+        parts = tuple(targets)
+        tau = self.model.target_tau
+        moved = polyak_update({p: targets[p] for p in parts}, {p: v[p] for p in parts}, tau)
         return {**targets, **moved}
 
     # ------------------------------------------------------------------------------------------
@@ -231,8 +212,12 @@ class OffPolicyAgent(Agent):
     # ------------------------------------------------------------------------------------------
 
     def _act_noise(self, count: int) -> np.ndarray | None:
-        """Noise that the behaviour policy's compiled function takes (None: none)."""
-        return None
+        """Noise that the behaviour policy's compiled function takes (None: none): standard
+        normal where the model's policy samples."""
+        if not self.model.samples:
+            return None
+        size = self.model.action_size
+        return self.rng.standard_normal((count, size)).astype(self.np_dtype)
 
     def _random_actions(self, count: int) -> np.ndarray:
         """Uniformly random actions (``[-1, 1]`` for Box, indices for Discrete)."""
@@ -241,9 +226,16 @@ class OffPolicyAgent(Agent):
         size = int(np.prod(self.action_space.shape))
         return self.rng.uniform(-1.0, 1.0, size=(count, size)).astype(self.np_dtype)
 
+    def _num_actions(self) -> Any:
+        """What an ε-greedy exploration draws from (None for Box actions)."""
+        return None
+
     def _policy_actions(self, observations: np.ndarray) -> np.ndarray:
-        """Actions of the behaviour policy with the host's exploration (none here)."""
-        return self._behaviour_actions(observations)
+        """Actions of the behaviour policy with the host's exploration."""
+        actions = self._behaviour_actions(observations)
+        return self.exploration(
+            actions, self.rng, num_actions=self._num_actions(), steps=self.steps
+        )
 
     def _behaviour_actions(self, observations: np.ndarray) -> np.ndarray:
         """Actions of the compiled acting function, before any noise added on the host."""
@@ -255,7 +247,7 @@ class OffPolicyAgent(Agent):
     def step(self, observations: Any) -> np.ndarray:
         self._check_initialized()
         obs = self._observations(observations)
-        if self.steps < self.config["start_steps"]:
+        if self.steps < self.exploration.start_steps:
             actions = self._random_actions(obs.shape[0])
         else:
             actions = self._policy_actions(obs)
@@ -268,9 +260,6 @@ class OffPolicyAgent(Agent):
         mode = self._mode(self.v, self.obs_stats, self._asarray(obs))
         return self._env_actions(np.asarray(self.xp.to_numpy(mode)))
 
-    def _reset_exploration(self, resets: np.ndarray) -> None:
-        """Restart the exploration of the workers whose episode ended."""
-
     # ------------------------------------------------------------------------------------------
     # Learning
     # ------------------------------------------------------------------------------------------
@@ -279,9 +268,9 @@ class OffPolicyAgent(Agent):
         self._check_initialized()
         if self._pending is None:
             raise RuntimeError(f"{type(self).__name__}.update called before step")
-        dtype = self.np_dtype
+        dtype, replay = self.np_dtype, self.replay
         resets = np.asarray(resets, bool)
-        self.replay.store(
+        replay.store(
             observations=self._pending["observations"],
             actions=self._pending["actions"],
             rewards=np.asarray(rewards, dtype),
@@ -291,44 +280,47 @@ class OffPolicyAgent(Agent):
         )
         if self.observation_normalizer is not None:
             self.observation_normalizer.record(self._pending["observations"])
-        self._reset_exploration(resets)
+        self.exploration.reset(resets)
         workers = self._pending["observations"].shape[0]
         self._pending = None
         self.steps += workers
-        if self.steps < self.config["update_after"] or not self.replay.ready():
+        if self.steps < replay.update_after or not replay.ready():
             return {}
         self._since_update += workers
-        if self._since_update < self.config["update_every"]:
+        if self._since_update < replay.update_every:
             return {}
-        self._since_update -= self.config["update_every"]
+        self._since_update -= replay.update_every
         return self._learn()
 
     def _draw(self, iterations: int) -> dict[str, Any]:
         """The inputs of the optimisation steps drawn from the agent's generator: the batches'
-        windows ``indices`` and the agent's noise, each with a leading ``[iterations]``."""
-        c = self.config
-        return {"indices": self.replay.windows(self.rng, iterations, c["batch_size"])}
+        windows ``indices``, then each updater's noise, each with a leading ``[iterations]``."""
+        batch_size = self.replay.batch_size
+        xs = {"indices": self.replay.windows(self.rng, iterations, batch_size)}
+        for updater in self._updaters.values():
+            xs.update(updater.draw(self.rng, iterations, batch_size))
+        return xs
 
     def _learn(self) -> dict[str, float]:
-        xp, c = self.xp, self.config
+        xp, replay = self.xp, self.replay
         action_dtype = np.int32 if self.action_kind != "Box" else self.np_dtype
-        self.replay.flush(
+        replay.flush(
             xp,
             device=self.device,
             dtypes={"actions": action_dtype, "observations": self.np_dtype},
-            chunk_steps=-(-c["update_every"] // self.replay.workers),
+            chunk_steps=-(-replay.update_every // replay.workers),
             # the replay's old arrays are donated: written in place on jax, never read again
             compile=lambda fn: self._compile(fn, "replay_write", donate_argnums=0),
         )
-        xs = self._placed(self._draw(c["batch_iterations"]))
+        xs = self._placed(self._draw(replay.batch_iterations))
         carry = {"v": self.v, "targets": self.targets, "states": self.optimizer_states}
         scheduled = self._scheduled_arrays()
-        carry, logs = self._update(carry, xs, self.replay.arrays, self.obs_stats, scheduled)
+        carry, logs = self._update(carry, xs, replay.arrays, self.obs_stats, scheduled)
         self.v, self.targets = carry["v"], carry["targets"]
         self.optimizer_states = carry["states"]
         self.updates += 1
         out = {k: float(np.asarray(xp.to_numpy(x))) for k, x in logs.items()}
-        out["critic/iterations"] = float(c["batch_iterations"])
+        out["critic/iterations"] = float(replay.batch_iterations)
         if self.observation_normalizer is not None:
             self.observation_normalizer.update()
             self._refresh_stats()
@@ -337,12 +329,6 @@ class OffPolicyAgent(Agent):
     # ------------------------------------------------------------------------------------------
     # Checkpoints
     # ------------------------------------------------------------------------------------------
-
-    def _exploration_state(self) -> dict[str, Any]:
-        return {}
-
-    def _load_exploration_state(self, state: dict[str, Any]) -> None:
-        pass
 
     def _arrays(self) -> dict[str, Any]:
         arrays: dict[str, Any] = {
@@ -353,7 +339,7 @@ class OffPolicyAgent(Agent):
         }
         if self.observation_normalizer is not None:
             arrays["observation_normalizer"] = self.observation_normalizer.state_dict()
-        exploration = self._exploration_state()
+        exploration = self.exploration.state_dict()
         if exploration:
             arrays["exploration"] = exploration
         if self._pending is not None:
@@ -367,7 +353,7 @@ class OffPolicyAgent(Agent):
         self.replay.load_state_dict(arrays["replay"], self.xp, device=self.device)
         if self.observation_normalizer is not None:
             self.observation_normalizer.load_state_dict(arrays["observation_normalizer"])
-        self._load_exploration_state(arrays.get("exploration", {}))
+        self.exploration.load_state_dict(arrays.get("exploration", {}))
         self._pending = dict(arrays["pending"]) if "pending" in arrays else None
         self._refresh_stats()
 

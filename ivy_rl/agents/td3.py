@@ -12,17 +12,25 @@ Example:
 
 from __future__ import annotations
 
+from functools import partial
 from typing import Any
 
-import numpy as np
-
-from ivy_rl.agents.ddpg import DDPG
+from ivy_rl.agents.ddpg import DDPG, MODEL, UPDATER
+from ivy_rl.off_policy_models import ActorQModel
+from ivy_rl.off_policy_updaters import (
+    TwinCriticDeterministicPolicyGradient,
+    TwinCriticDeterministicQLearning,
+)
 
 __all__ = ["TD3"]
 
 
 class TD3(DDPG):
     """Twin delayed DDPG.
+
+    Parts: as DDPG's, with twin critics, a
+    :class:`~ivy_rl.off_policy_updaters.TwinCriticDeterministicPolicyGradient` and a
+    :class:`~ivy_rl.off_policy_updaters.TwinCriticDeterministicQLearning`.
 
     Args:
         policy_delay: critic steps per actor step (``batch_iterations`` is a multiple of it).
@@ -35,7 +43,20 @@ class TD3(DDPG):
     """
 
     _defaults: dict[str, Any] = dict(policy_delay=2, target_noise=0.2, target_noise_clip=0.5)
-    _critics = 2
+    parts = {
+        **DDPG.parts,
+        "model": (partial(ActorQModel, policy="deterministic", critics=2), MODEL),
+        "actor_updater": (TwinCriticDeterministicPolicyGradient, {"actor_lr": "lr", **UPDATER}),
+        "critic_updater": (
+            TwinCriticDeterministicQLearning,
+            {
+                "critic_lr": "lr",
+                "target_noise": "target_noise",
+                "target_noise_clip": "target_noise_clip",
+                **UPDATER,
+            },
+        ),
+    }
 
     def _check_config(self, config):
         if config["batch_iterations"] % config["policy_delay"]:
@@ -45,42 +66,25 @@ class TD3(DDPG):
             )
 
     def _draw(self, iterations):
-        c = self.config
-        delay = c["policy_delay"]
-        groups = iterations // delay
-        indices = self.replay.windows(self.rng, iterations, c["batch_size"])
-        action_size = int(np.prod(self.action_space.shape))
-        noise = self.rng.standard_normal((groups, delay, c["batch_size"], action_size))
-        return {
-            "indices": indices.reshape(groups, delay, *indices.shape[1:]),
-            "noise": noise.astype(self.np_dtype),
-        }
+        # grouped by actor step: [groups, policy_delay, ...]
+        delay = self.config["policy_delay"]
+        xs = super()._draw(iterations)
+        return {k: a.reshape(iterations // delay, delay, *a.shape[1:]) for k, a in xs.items()}
 
-    def _target_values(self, v, targets, batch, obs_stats, x):
-        xp, c = self.xp, self.config
-        following = batch["next_observations"]
-        actions = self.model.actor(following, obs_stats, v=targets["actor"]).mode()
-        smoothing = xp.clip(
-            c["target_noise"] * x["noise"], -c["target_noise_clip"], c["target_noise_clip"]
-        )
-        actions = xp.clip(actions + smoothing, -1.0, 1.0)
-        return xp.min(self._q(targets["critic"], following, actions, obs_stats), axis=0)
-
-    def _actor_loss(self, actor_v, critic_v, batch, obs_stats, x):
-        observations = batch["observations"]
-        actions = self.model.actor(observations, obs_stats, v=actor_v).mode()
-        return -self.xp.mean(self._q(critic_v, observations, actions, obs_stats)[0])
-
-    def _learn_step(self, carry, x, arrays, obs_stats):
+    def _learn_step(self, carry, x, arrays, obs_stats, rates):
         xp = self.xp
         v, targets, states = carry["v"], carry["targets"], carry["states"]
         losses = []
         for i in range(self.config["policy_delay"]):
-            v, states, loss, batch = self._critic_step(
-                v, targets, states, x["indices"][i], arrays, obs_stats, {"noise": x["noise"][i]}
+            batch = self._batch(arrays, x["indices"][i])
+            noise = {k: a[i] for k, a in x.items() if k != "indices"}
+            v, states, infos = self.critic_updater.step(
+                v, targets, states, batch, obs_stats, noise, rates["critic_updater"]
             )
-            losses.append(loss)
-        v, states, actor_infos = self._actor_step(v, states, batch, obs_stats, x)
-        targets = self._soft_update(targets, v, tuple(targets))
+            losses.append(infos["loss"])
+        v, states, actor_infos = self.actor_updater.step(
+            v, targets, states, batch, obs_stats, {}, rates["actor_updater"]
+        )
+        targets = self._soft_update(targets, v)
         logs = {"critic/loss": xp.mean(xp.stack(losses)), "actor/loss": actor_infos["loss"]}
         return {"v": v, "targets": targets, "states": states}, logs
