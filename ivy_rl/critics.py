@@ -13,6 +13,8 @@ Example:
 
 from __future__ import annotations
 
+import warnings
+
 import math
 from collections.abc import Callable, Sequence
 from typing import Any
@@ -265,12 +267,17 @@ class QNetwork(ivy.Module):
 
 
 def soft_update(target_v: Nest, v: Nest, tau: float, *, f: Framework = None) -> Nest:
-    """Target networks' soft update ``(1 - tau) * target_v + tau * v`` (Polyak averaging;
-    ``tau=1`` copies); :func:`ivy_rl.models.polyak_update` under the name agents use.
+    """Deprecated: :func:`ivy_rl.models.polyak_update` (the same function, the one name kept).
 
     Example:
-        >>> targets = soft_update(targets, {"critic": v["critic"]}, 0.005)
+        >>> targets = polyak_update(targets, {"critic": v["critic"]}, 0.005)
     """
+    warnings.warn(
+        "ivy_rl.critics.soft_update is deprecated: use ivy_rl.models.polyak_update (the same "
+        "function)",
+        DeprecationWarning,
+        stacklevel=2,
+    )
     return polyak_update(target_v, v, tau, f=f)
 
 

@@ -41,7 +41,7 @@ import numpy as np
 from ivy.nest import map_nest, multi_map_nest
 from ivy.typing import Array
 from ivy_rl.agents.agent import Agent
-from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
+from ivy_rl.agents.fusion import check_fusion, fusion_level
 from ivy_rl.models import ActorCriticModel
 from ivy_rl.normalizers import MeanStd, ReturnNormalizer, _fold_moments, _standard_deviation
 from ivy_rl.replays import Segment
@@ -204,11 +204,7 @@ class A2C(Agent):
             built[role] = part
         self.model, self.replay = built["model"], built["replay"]
         self.actor_updater, self.critic_updater = built["actor_updater"], built["critic_updater"]
-        if config["fusion"] not in FUSION_LEVELS:
-            raise ValueError(
-                f"{name}: unknown fusion {config['fusion']!r}; choose one of "
-                f"{', '.join(map(repr, FUSION_LEVELS))}"
-            )
+        check_fusion(name, config["fusion"])
         super().__init__(**config)
 
     # ------------------------------------------------------------------------------------------
@@ -245,10 +241,7 @@ class A2C(Agent):
         self._refresh_stats()
         self._act = self._compile(self._act_fn, "act")
         self._mode = self._compile(self._mode_fn, "mode")
-        self.fusion = self.config["fusion"]
-        if self.fusion == "auto":
-            unrolls = self.compiled and compiled_scan_unrolls(f=xp)
-            self.fusion = "steps" if unrolls else "update"
+        self.fusion = fusion_level(self.config["fusion"], compiled=self.compiled, f=xp)
         self._fused = self.fusion == "update"
         self._compiled_steps: dict[str, Callable] = {}
         fn = self._update_fn

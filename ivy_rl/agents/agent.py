@@ -374,6 +374,32 @@ class Agent:
         """Actions for a batch of observations during tests (no exploration)."""
         raise NotImplementedError
 
+    def predict(
+        self,
+        observation: Any,
+        state: Any = None,
+        episode_start: Any = None,
+        deterministic: bool = False,
+    ) -> tuple[np.ndarray, None]:
+        """The action for an observation (or a batch), as stable-baselines3's
+        ``model.predict``: ``deterministic=True`` acts as in tests (:meth:`test_step`), False
+        explores as in training (:meth:`step`). ``state`` and ``episode_start`` are accepted
+        for stable-baselines3's signature (the agents keep no recurrent state).
+
+        Returns:
+            ``(action, None)``: one action for one observation, a batch for a batch.
+
+        Example:
+            >>> action, _ = agent.predict(obs, deterministic=True)
+            >>> obs, reward, terminated, truncated, info = env.step(action)
+        """
+        self._check_initialized()
+        obs = np.asarray(observation)
+        single = obs.shape == tuple(self.observation_space.shape)
+        batch = obs[None] if single else obs
+        actions = self.test_step(batch) if deterministic else self.step(batch)
+        return (actions[0] if single else actions), None
+
     def update(
         self, observations: Any, rewards: Any, resets: Any, terminations: Any
     ) -> dict[str, float]:

@@ -37,7 +37,7 @@ import numpy as np
 
 import ivy
 from ivy_rl.agents.agent import Agent
-from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
+from ivy_rl.agents.fusion import check_fusion, fusion_level
 from ivy_rl.schedules import as_schedule
 from ivy_rl.updaters import at_rate
 from ivy_rl.models import (
@@ -148,11 +148,7 @@ class DifferentiableAgent(Agent):
                 f"{sorted(config)}"
             )
         config.update(settings)
-        if config["fusion"] not in FUSION_LEVELS:
-            raise ValueError(
-                f"{type(self).__name__}: unknown fusion {config['fusion']!r}; choose one of "
-                f"{', '.join(map(repr, FUSION_LEVELS))}"
-            )
+        check_fusion(type(self).__name__, config["fusion"])
         for key in ("batch_size", "horizon", "update_every"):
             if not isinstance(config[key], int) or config[key] < 1:
                 raise ValueError(
@@ -218,10 +214,7 @@ class DifferentiableAgent(Agent):
         self._action_half = tuple(float(x) for x in (high - low) / 2)
         self.actor_optimizer = ivy.Adam(as_schedule(c["actor_lr"])(0.0), f=xp)
         self._build_learner()
-        self.fusion = c["fusion"]
-        if self.fusion == "auto":
-            unrolls = self.compiled and compiled_scan_unrolls(f=xp)
-            self.fusion = "steps" if unrolls else "update"
+        self.fusion = fusion_level(c["fusion"], compiled=self.compiled, f=xp)
         # 'steps': the rollout and its gradient run eagerly (a compiler that unrolls loops
         # would unroll the whole rollout and its backward pass); the critic's steps compile
         self._fused = self.fusion == "update"
