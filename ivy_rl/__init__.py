@@ -9,7 +9,8 @@ bootstrapped (partial-episode bootstrapping); optionally the remaining time is a
 
 Modules: :mod:`ivy_rl.returns` (λ-returns, GAE, n-step returns), :mod:`ivy_rl.distributions`,
 :mod:`ivy_rl.models`, :mod:`ivy_rl.normalizers`, :mod:`ivy_rl.replays`, :mod:`ivy_rl.updaters`,
-:mod:`ivy_rl.agents`, :mod:`ivy_rl.environments`, :mod:`ivy_rl.trainer`, :mod:`ivy_rl.logger`;
+:mod:`ivy_rl.agents`, :mod:`ivy_rl.environments`, :mod:`ivy_rl.trainer`, :mod:`ivy_rl.checkpoints`,
+:mod:`ivy_rl.console`, :mod:`ivy_rl.logger`, :mod:`ivy_rl.evaluation`;
 commands ``python -m ivy_rl.train``, ``python -m ivy_rl.plot`` and ``python -m ivy_rl.play``.
 
 ``import ivy_rl`` imports no deep-learning framework.
@@ -65,6 +66,7 @@ from ivy_rl.agents import (
     Uniform,
     make,
 )
+from ivy_rl.evaluation import evaluate
 from ivy_rl.returns import generalized_advantages, lambda_returns, n_step_returns
 
 __all__ = [
@@ -97,6 +99,8 @@ __all__ = [
     "AGENTS",
     "make",
     "Trainer",
+    "TrainingInterrupted",
+    "evaluate",
     "lambda_returns",
     "generalized_advantages",
     "n_step_returns",
@@ -105,8 +109,8 @@ __all__ = [
 
 def __getattr__(name: str):
     # the trainer (environments, workers) is imported on first use
-    if name == "Trainer":
-        from ivy_rl.trainer import Trainer
+    if name in ("Trainer", "TrainingInterrupted"):
+        from ivy_rl import trainer
 
-        return Trainer
+        return getattr(trainer, name)
     raise AttributeError(f"module 'ivy_rl' has no attribute {name!r}")

@@ -20,13 +20,20 @@ USER_ERRORS = (ValueError, TypeError, FileNotFoundError, ImportError, ivy.errors
 
 def command_line(main: Callable[[list[str] | None], Any], argv: list[str] | None = None) -> None:
     """Run a command's ``main``; an error the user can fix is printed as ``error: ...`` on one
-    line, with exit status 2 (as argparse does for malformed arguments)."""
+    line, with exit status 2 (as argparse does for malformed arguments); Ctrl-C exits with
+    status 130 and no traceback."""
     try:
         main(argv)
     except USER_ERRORS as error:
         message = " ".join(str(error).split())
         print(f"error: {message}", file=sys.stderr)
         raise SystemExit(2) from None
+    except KeyboardInterrupt as interrupt:
+        # Ctrl-C: no traceback; a run the trainer stopped has said where it saved and how to
+        # resume (its TrainingInterrupted is ``reported``)
+        if not getattr(interrupt, "reported", False):
+            print("interrupted", file=sys.stderr)
+        raise SystemExit(130) from None
 
 
 def check_framework(framework: str, dtype: str = "float32") -> None:

@@ -259,15 +259,22 @@ class TransitionReplay:
     # ------------------------------------------------------------------------------------------
 
     def state_dict(self) -> dict[str, np.ndarray]:
-        """The arrays (as numpy), the staged steps and the ring's counters."""
+        """The filled rows of the arrays (as numpy), the staged steps and the ring's counters.
+
+        Until the ring is full its filled rows are the first ``stored * workers`` (it fills
+        from row 0), and only those are kept: a replay of a million rows that holds twenty
+        thousand steps saves twenty thousand rows. :meth:`load_state_dict` puts them back into
+        arrays of the whole ring.
+        """
         state = {
             "position": np.asarray(self.position, np.int64),
             "stored": np.asarray(self.stored, np.int64),
             "workers": np.asarray(self.workers, np.int64),
         }
+        filled = self.stored * self.workers
         for key, value in (self.arrays or {}).items():
             # a copy: the arrays may be written in place by later flushes
-            state[f"arrays.{key}"] = np.array(ivy.to_numpy(value), copy=True)
+            state[f"arrays.{key}"] = np.array(ivy.to_numpy(value[:filled]), copy=True)
         for key in self._specs:
             if self._count:
                 state[f"staged.{key}"] = self._staging[key][: self._count].copy()
@@ -285,8 +292,19 @@ class TransitionReplay:
         }
         self.capacity = max(self.size // max(self.workers, 1), self.return_steps)
         arrays = {k.split(".", 1)[1]: v for k, v in state.items() if k.startswith("arrays.")}
-        # copies: the arrays may be written in place, and must not alias the state's
-        self.arrays = {k: xp.asarray(np.array(v), device=device) for k, v in arrays.items()}
+        rows = self.capacity * self.workers
+        if any(len(v) > rows for v in arrays.values()):
+            raise ValueError(
+                f"TransitionReplay.load_state_dict: the state holds more than the {rows} rows "
+                f"of this replay (size {self.size}, {self.workers} workers)"
+            )
+        # the ring's arrays, with the saved rows first (the filled rows, or the whole ring as
+        # earlier checkpoints held it); copies: they may be written in place
+        self.arrays = {}
+        for key, value in arrays.items():
+            ring = np.zeros((rows, *value.shape[1:]), value.dtype)
+            ring[: len(value)] = value
+            self.arrays[key] = xp.asarray(ring, device=device)
         self.arrays = self.arrays or None
         staged = {k.split(".", 1)[1]: v for k, v in state.items() if k.startswith("staged.")}
         self._count = len(next(iter(staged.values()))) if staged else 0

@@ -38,6 +38,7 @@ __all__ = [
     "make_vector_env",
     "Workers",
     "check_environment_id",
+    "closest_ids",
     "resolve_wrappers",
 ]
 
@@ -96,14 +97,15 @@ class TimeFeature(gym.ObservationWrapper):
 
 
 def check_environment_id(env_id: str) -> None:
-    """Raise a ValueError listing the registered ids when ``env_id`` is not registered.
+    """Raise a ValueError naming the three closest registered ids when ``env_id`` is not
+    registered.
 
     ``env_id`` may name the module that registers it, as Gymnasium's ``gymnasium.make`` allows:
     ``"my_package.envs:MyTask-v0"`` imports ``my_package.envs`` first.
 
     Example:
         >>> check_environment_id("CartPol-v1")
-        ValueError: unknown environment 'CartPol-v1'; did you mean: CartPole-v1? ...
+        ValueError: unknown environment 'CartPol-v1'; did you mean: CartPole-v1, CartPole-v0, ...
     """
     if not isinstance(env_id, str) or not env_id:
         raise TypeError(f"environment must be a Gymnasium id (a string), got {env_id!r}")
@@ -126,12 +128,35 @@ def check_environment_id(env_id: str) -> None:
             pass
         if name in gym.registry:
             return
-    available = sorted(gym.registry)
-    close = difflib.get_close_matches(name, available, n=3)
-    hint = f" did you mean: {', '.join(close)}?" if close else ""
+    if not name.startswith("ivy_gym/"):
+        try:  # ivy_gym's ids are candidates too
+            import ivy_gym.gymnasium  # noqa: F401
+        except ImportError:
+            pass
+    close = closest_ids(name, sorted(gym.registry))
     raise ValueError(
-        f"unknown environment {env_id!r};{hint} registered environments: {', '.join(available)}"
+        f"unknown environment {env_id!r}; did you mean: {', '.join(close)}? (gymnasium."
+        "pprint_registry() lists every registered id)"
     )
+
+
+def closest_ids(name: str, ids: Sequence[str], n: int = 3) -> list[str]:
+    """The ``n`` ids most like ``name`` (ignoring case; difflib's ratio), best first.
+
+    Example:
+        >>> closest_ids("cartpole", ["CartPole-v1", "Pendulum-v1", "Acrobot-v1"], 2)
+        ['CartPole-v1', 'Acrobot-v1']
+    """
+    lowered = name.lower()
+
+    def likeness(candidate: str) -> float:
+        other = candidate.lower()
+        ratio = difflib.SequenceMatcher(None, lowered, other).ratio()
+        # an id the name is part of (a version left out, a namespace added) comes first
+        return ratio + (1.0 if lowered and lowered in other else 0.0)
+
+    # ties: the later id first (the newest version)
+    return sorted(sorted(ids, reverse=True), key=lambda candidate: -likeness(candidate))[:n]
 
 
 def resolve_wrappers(

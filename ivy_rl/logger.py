@@ -124,6 +124,20 @@ class Logger:
             self.columns.extend(k for k in row if k not in self.columns)
         self._rewrite()
 
+    def pending(self) -> dict[str, Any]:
+        """The values stored in the epoch so far (a checkpoint taken within an epoch keeps
+        them): ``{'values': {key: [...]}, 'stats': [keys]}``."""
+        return {
+            "values": {k: list(v) for k, v in self._values.items()},
+            "stats": sorted(self._stats),
+        }
+
+    def restore_pending(self, pending: dict[str, Any] | None) -> None:
+        """Continue an epoch with the values of :meth:`pending`."""
+        pending = pending or {}
+        self._values = {k: [float(x) for x in v] for k, v in pending.get("values", {}).items()}
+        self._stats = set(pending.get("stats", ()))
+
     def progress(self, steps: int, epoch_steps: int, epoch_length: int, max_steps: int) -> None:
         """Draw the progress bar of the epoch on stderr (at most ten times a second)."""
         if self.quiet:
@@ -167,7 +181,8 @@ def _format(value: Any) -> str:
 
 
 def read_log(path: str) -> list[dict[str, Any]]:
-    """The rows of a ``log.csv`` as dicts of floats (empty cells are left out).
+    """The rows of a ``log.csv`` as dicts of numbers: ints where a cell holds an integer (the
+    counters), floats elsewhere; empty cells are left out. Written back, a row reads the same.
 
     Example:
         >>> rows = read_log("runs/ppo/log.csv"); rows[-1]["test/episode_score/mean"]
@@ -175,8 +190,15 @@ def read_log(path: str) -> list[dict[str, Any]]:
     with open(path, newline="") as fh:
         rows = []
         for raw in csv.DictReader(fh):
-            rows.append({k: float(v) for k, v in raw.items() if v not in ("", None)})
+            rows.append({k: _number(v) for k, v in raw.items() if v not in ("", None)})
     return rows
+
+
+def _number(text: str) -> int | float:
+    try:
+        return int(text)
+    except ValueError:
+        return float(text)
 
 
 class _TensorBoard:

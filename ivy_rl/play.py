@@ -57,8 +57,8 @@ def play(
         >>> play("runs/ppo-cartpole", episodes=1, video="play.gif")
     """
     from ivy_rl.agents import make
+    from ivy_rl.checkpoints import check_checkpoint, usable_checkpoint
     from ivy_rl.environments import make_env
-    from ivy_rl.trainer import check_checkpoint, usable_checkpoint
 
     if episodes < 1:
         raise ValueError(f"episodes must be >= 1, got {episodes}")
@@ -80,6 +80,9 @@ def play(
     _cli.check_device(device, framework)
     _cli.enable_float64(framework, config["dtype"])
     render_mode = "human" if render else ("rgb_array" if video else None)
+    # Gymnasium draws with pygame, whose SDL opens an audio device when it starts and, with no
+    # desktop session (XDG_RUNTIME_DIR), prints an error on success: no sound is ever played
+    os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
     env = make_env(
         config["environment"],
         env_kwargs=config.get("env_kwargs"),
@@ -118,6 +121,7 @@ def play(
     print(summary(results))
     if video:
         _write_video(video, frames, fps)
+        print(f"wrote {video} ({len(frames)} frames, {fps} fps)")
     return results
 
 

@@ -124,12 +124,16 @@ def _parser() -> argparse.ArgumentParser:
         "limits are bootstrapped through)",
     )
     p.add_argument("--seed", type=int)
-    p.add_argument("--out", help="the run's folder (default: runs/<agent>-<env>-<seed>)")
+    p.add_argument(
+        "--out", help="the run's folder (default: runs/<agent>-<env>-<framework>-<seed>)"
+    )
     p.add_argument("--eager", action="store_true", help="do not compile the agent's functions")
     p.add_argument("--tensorboard", action="store_true", help="also log to TensorBoard")
     p.add_argument("--resume", action="store_true", help="continue the run in --out")
     p.add_argument("--overwrite", action="store_true", help="start again in a used --out")
-    p.add_argument("--quiet", action="store_true", help="no progress bar or table")
+    p.add_argument(
+        "--quiet", action="store_true", help="print only the summary (no progress bar or table)"
+    )
     p.add_argument(
         "--threads",
         type=int,
@@ -153,7 +157,8 @@ def _flag(key: str) -> str:
 
 
 def _default_out(settings: dict[str, Any]) -> str:
-    name = f"{settings['agent']}-{settings['environment']}-{settings['seed']}"
+    """``runs/<agent>-<environment>-<framework>-<seed>``: a run on each framework has its own."""
+    name = "-".join(str(settings[key]) for key in ("agent", "environment", "framework", "seed"))
     return os.path.join("runs", name.replace("/", "_").replace(":", "_"))
 
 
@@ -202,6 +207,14 @@ def _check(settings: dict[str, Any]) -> None:
             continue
         if isinstance(value, bool) or not isinstance(value, int) or value < minimum:
             raise ValueError(f"{_flag(key)} must be an integer >= {minimum}, got {value!r}")
+    workers, steps = settings["workers"], settings["steps"]
+    if steps % workers and not _simulates(settings["agent"]):
+        low = steps - steps % workers
+        options = " or ".join(str(n) for n in (low, low + workers) if n)
+        raise ValueError(
+            f"--steps {steps} is not a multiple of --workers {workers} (each step of the workers "
+            f"is {workers} environment steps, and a run stops exactly at --steps): use {options}"
+        )
     if settings["ray_groups"] is not None:
         if settings["vectorization"] != "ray":
             raise ValueError("--ray-groups needs --vectorization ray")
@@ -219,6 +232,15 @@ def _check(settings: dict[str, Any]) -> None:
 
     check_environment_id(settings["environment"])
     resolve_wrappers(settings["wrappers"])
+
+
+def _simulates(agent: str) -> bool:
+    """Whether the agent counts steps of its own rollouts (its steps need not be whole steps of
+    the workers)."""
+    from ivy_rl.agents import AGENTS
+
+    cls = {name.lower(): cls for name, cls in AGENTS.items()}.get(str(agent).lower())
+    return bool(getattr(cls, "differentiable", False))
 
 
 def main(argv: list[str] | None = None) -> list[dict[str, Any]]:

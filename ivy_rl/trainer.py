@@ -1,15 +1,13 @@
 """The trainer: steps the environments, hands the agent observations, rewards, resets and
 terminations, runs test episodes each epoch on an environment of their own, logs, keeps the best
-model, and saves checkpoints that resume exactly.
+model, and saves checkpoints that resume exactly (:mod:`ivy_rl.checkpoints` holds their format),
+on any framework. What it prints is :mod:`ivy_rl.console`'s: a start line, a progress bar over
+the whole run, a line while the agent compiles, a table per epoch and a summary.
 
-A checkpoint (``<out>/checkpoints/step_<steps>/``) holds the agent's whole state (weights,
-optimiser states, normalisers, replay, random generator) and the trainer's (counters, the
-environments' seeds and the actions of their current episodes, which bring the environments
-back to the same state). Resuming therefore continues with the same numbers as a run that was
-never interrupted, and a checkpoint written on one framework continues on another. A checkpoint
-is written into a hidden folder and renamed once complete; the last ``keep_checkpoints`` are
-kept, so that a checkpoint damaged later (a full disk, a copy cut short) has a predecessor to
-resume from. The agent with the best mean test score so far is kept in ``<out>/best/``.
+Ctrl-C stops a run cleanly: the trainer finishes the step it is in, saves a checkpoint there
+(within an epoch too: the epoch's values so far are kept) and raises
+:class:`TrainingInterrupted` after printing how to resume; a second Ctrl-C stops at once,
+without saving.
 
 Example:
     >>> trainer = Trainer(steps=100_000, epoch_steps=10_000)
@@ -18,25 +16,43 @@ Example:
 
 from __future__ import annotations
 
-import glob
-import importlib
+import contextlib
 import json
 import os
 import shutil
+import signal
+import threading
 import time
-import zipfile
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 
 import ivy
 from ivy_rl.agents import Agent, make
+from ivy_rl.checkpoints import (
+    RUN_ENTRIES,
+    CheckpointError,
+    check_checkpoint,
+    checkpoints,
+    latest_checkpoint,
+    load_checkpoint,
+    read_json,
+    save_best,
+    save_checkpoint,
+    usable_checkpoint,
+    write_json,
+)
+from ivy_rl.console import Console, command, format_duration
 from ivy_rl.environments import Workers, make_env
 from ivy_rl.logger import Logger
+from ivy_rl.threads import set_threads
 
 __all__ = [
     "Trainer",
+    "TrainingInterrupted",
+    # kept here for code that imports them from the trainer (their home is ivy_rl.checkpoints
+    # and ivy_rl.threads)
     "CheckpointError",
     "checkpoints",
     "check_checkpoint",
@@ -46,7 +62,6 @@ __all__ = [
     "set_threads",
 ]
 
-RUN_ENTRIES = ("config.json", "log.csv", "checkpoints", "best", "tensorboard")
 # settings that define a run: resuming it with other values is refused
 RUN_DEFINING = (
     "agent",
@@ -64,194 +79,19 @@ RUN_DEFINING = (
 )
 
 
-class CheckpointError(ValueError):
-    """A checkpoint that cannot be read; the message names the file."""
+class TrainingInterrupted(KeyboardInterrupt):
+    """A run stopped by Ctrl-C, after the console said so (and how to resume).
 
-
-def _step_of(path: str) -> int:
-    try:
-        return int(os.path.basename(path).rsplit("_", 1)[1])
-    except (IndexError, ValueError):
-        return -1
-
-
-def checkpoints(out: str) -> list[str]:
-    """The complete checkpoints of a run (those with ``trainer.json``), oldest first.
-
-    Example:
-        >>> checkpoints("runs/ppo")
-        ['runs/ppo/checkpoints/step_90000', 'runs/ppo/checkpoints/step_100000']
+    Attributes:
+        checkpoint: the checkpoint saved where it stopped (None: nothing was saved).
+        steps: the run's steps when it stopped.
     """
-    paths = glob.glob(os.path.join(out, "checkpoints", "step_*"))
-    paths = [p for p in paths if _step_of(p) >= 0]
-    paths = [p for p in paths if os.path.exists(os.path.join(p, "trainer.json"))]
-    return sorted(paths, key=_step_of)
 
+    reported = True  # the console has told the user; the command line exits quietly
 
-def latest_checkpoint(out: str) -> str | None:
-    """The folder of the last complete checkpoint of a run (``<out>/checkpoints/step_<n>``), or
-    None.
-
-    Example:
-        >>> latest_checkpoint("runs/ppo")
-        'runs/ppo/checkpoints/step_100000'
-    """
-    found = checkpoints(out)
-    return found[-1] if found else None
-
-
-def _read_json(path: str) -> Any:
-    try:
-        with open(path) as fh:
-            return json.load(fh)
-    except FileNotFoundError:
-        raise CheckpointError(f"{path} is missing") from None
-    except (json.JSONDecodeError, UnicodeDecodeError) as error:
-        raise CheckpointError(f"{path} is not valid JSON ({error})") from None
-
-
-def _read_npz(path: str) -> dict[str, np.ndarray]:
-    try:
-        with np.load(path, allow_pickle=False) as data:
-            return {key: data[key] for key in data.files}
-    except FileNotFoundError:
-        raise CheckpointError(f"{path} is missing") from None
-    except (zipfile.BadZipFile, ValueError, OSError, EOFError) as error:
-        raise CheckpointError(f"{path} is damaged ({type(error).__name__}: {error})") from None
-
-
-def check_checkpoint(path: str) -> None:
-    """Read every file of a checkpoint (an agent's folder, or a trainer's checkpoint holding
-    ``agent/``); raise :class:`CheckpointError` naming the first file that is missing or
-    damaged (truncated arrays, broken JSON).
-
-    Example:
-        >>> check_checkpoint("runs/ppo/checkpoints/step_100000")
-    """
-    agent = os.path.join(path, "agent")
-    if os.path.exists(os.path.join(path, "trainer.json")):
-        _read_json(os.path.join(path, "trainer.json"))
-        _read_npz(os.path.join(path, "workers.npz"))
-    elif not os.path.isdir(agent):
-        agent = path
-    _read_json(os.path.join(agent, "agent.json"))
-    _read_npz(os.path.join(agent, "arrays.npz"))
-
-
-def usable_checkpoint(out: str, *, warn: Callable[[str], None] | None = None) -> str | None:
-    """The last checkpoint of a run whose files all read (:func:`check_checkpoint`); damaged
-    later ones are skipped, each with a message to ``warn``.
-
-    Returns:
-        The checkpoint's folder, or None when the run has none.
-
-    Raises:
-        CheckpointError: every checkpoint is damaged (naming the files).
-
-    Example:
-        >>> usable_checkpoint("runs/ppo", warn=print)
-    """
-    found = checkpoints(out)
-    problems = []
-    for path in reversed(found):
-        try:
-            check_checkpoint(path)
-        except CheckpointError as error:
-            problems.append(str(error))
-            continue
-        if problems and warn is not None:
-            warn(
-                f"skipping damaged checkpoints ({'; '.join(problems)}); using "
-                f"{os.path.basename(path)}"
-            )
-        return path
-    if problems:
-        raise CheckpointError(f"no usable checkpoint in {out}: {'; '.join(problems)}")
-    return None
-
-
-def set_threads(xp: Any, threads: int) -> str:
-    """Set the intra-op threads of the framework behind ``xp`` (a backend namespace, or a
-    framework's name: a name does not load ivy's backend, and tensorflow's threads can only be
-    set before anything, ivy's backend included, runs on it) to ``threads``.
-
-    The setter is found by what the framework offers, not by its name: a
-    ``set_num_threads`` function (torch; its inter-op pool is left alone, it can be sized only
-    before its first use), ``config.threading``'s intra- and inter-op setters (tensorflow; they
-    are settable only before its first operation, afterwards a value that differs is reported in
-    a warning), or XLA's ``XLA_FLAGS`` (jax: ``--xla_cpu_multi_thread_eigen=false`` and
-    ``intra_op_parallelism_threads=N`` for one thread, read when XLA starts, so they act only if
-    set before jax's first computation; afterwards a warning says so). Frameworks with none of
-    these (numpy, whose element-wise functions use one thread) are left as they are.
-
-    Args:
-        xp: a backend namespace (``ivy.get_framework(f="torch")``) or a framework's name.
-        threads: intra-op threads, an integer >= 1 (1: small models run fastest on a shared
-            machine).
-
-    Returns:
-        What was done, in words (``'torch.set_num_threads(1)'``, ``'not settable'``...).
-
-    Example:
-        >>> set_threads(ivy.get_framework(f="torch"), 1)
-        'torch.set_num_threads(1)'
-    """
-    _check_count("threads", threads, 1)
-    threads = int(threads)
-    name = xp if isinstance(xp, str) else str(getattr(xp, "backend", ""))
-    try:
-        native = importlib.import_module(ivy.framework_handler.native_package(name))
-    except (ImportError, ivy.framework_handler.UnknownFrameworkError):
-        return "not settable"
-    name = native.__name__
-    if callable(getattr(native, "set_num_threads", None)):
-        native.set_num_threads(threads)
-        return f"{name}.set_num_threads({threads})"
-    threading = getattr(getattr(native, "config", None), "threading", None)
-    if threading is not None and hasattr(threading, "set_intra_op_parallelism_threads"):
-        pairs = (
-            (
-                threading.get_intra_op_parallelism_threads,
-                threading.set_intra_op_parallelism_threads,
-            ),
-            (
-                threading.get_inter_op_parallelism_threads,
-                threading.set_inter_op_parallelism_threads,
-            ),
-        )
-        for get, put in pairs:
-            if get() == threads:
-                continue
-            try:
-                put(threads)
-            except RuntimeError:
-                _warn(
-                    f"{name} already ran operations with {get() or 'its default'} threads; its "
-                    f"threads can be set only before: set them ({put.__name__}) first in the "
-                    "process, or run the command in a new process"
-                )
-                return f"{name}: not changed (already started)"
-        return f"{name}.config.threading: intra/inter-op {threads}"
-    try:
-        bridge = importlib.import_module(f"{name}._src.xla_bridge")
-    except ImportError:
-        bridge = None
-    if bridge is not None and hasattr(bridge, "backends_are_initialized"):
-        if threads != 1:
-            return f"{name}: XLA's default threads (only one thread can be asked for)"
-        flags = "--xla_cpu_multi_thread_eigen=false intra_op_parallelism_threads=1"
-        current = os.environ.get("XLA_FLAGS", "")
-        if flags in current:
-            return f"{name}: XLA_FLAGS {flags}"
-        if bridge.backends_are_initialized():
-            _warn(
-                f"{name} has started XLA, which reads its threads from XLA_FLAGS only when it "
-                f"starts: set XLA_FLAGS='{flags}' before the process's first {name} computation"
-            )
-            return f"{name}: not changed (already started)"
-        os.environ["XLA_FLAGS"] = f"{current} {flags}".strip()
-        return f"{name}: XLA_FLAGS {flags}"
-    return "not settable"
+    def __init__(self, checkpoint: str | None, steps: int) -> None:
+        super().__init__(f"training interrupted at step {steps}")
+        self.checkpoint, self.steps = checkpoint, steps
 
 
 def _check_count(name: str, value: Any, minimum: int, *, optional: bool = False) -> None:
@@ -266,15 +106,17 @@ class Trainer:
 
     Args:
         steps: environment steps in total (all workers together, and the steps an agent
-            simulates in its own differentiable rollouts).
+            simulates in its own differentiable rollouts): a multiple of the workers, where the
+            run stops exactly.
         epoch_steps: steps per epoch (one log row and one round of test episodes per epoch);
-            default: ``steps / 20``.
+            default: ``steps / 20``, rounded to whole steps of the workers.
         save_steps: steps between checkpoints (taken at the end of an epoch); default: every
             epoch. A checkpoint is always saved at the end.
         test_episodes: test episodes (with ``agent.test_step``) at the end of each epoch, on a
             separate environment; 0: none.
         keep_checkpoints: the number of checkpoints kept (the last ones); None: all.
-        show_progress: print the progress bar and the table of each epoch.
+        show_progress: print the start line, the progress bar, compilations and the table of
+            each epoch (False: only the summary at the end and interruptions).
         tensorboard: also write the scalars to TensorBoard (``<out>/tensorboard``).
         threads: intra-op threads of the agent's framework (:func:`set_threads`), set when a
             run starts; 1 (the default) is fastest for small models, above all on a shared
@@ -305,6 +147,7 @@ class Trainer:
         self.max_steps = int(steps)
         self.epoch_steps = int(epoch_steps or max(self.max_steps // 20, 1))
         self.save_steps = int(save_steps or self.epoch_steps)
+        self._default_epoch, self._default_save = epoch_steps is None, save_steps is None
         self.test_episodes = int(test_episodes)
         self.keep_checkpoints = keep_checkpoints
         self.show_progress = show_progress
@@ -381,6 +224,7 @@ class Trainer:
         )
         self.test_env = None
         try:
+            self._check_steps(agent, self.workers.num_workers)
             self.test_env = make_env(
                 environment, env_kwargs=env_kwargs, time_feature=time_feature, wrappers=wrappers
             )
@@ -400,25 +244,64 @@ class Trainer:
             raise
         self.agent, self.seed, self.out = agent, int(seed), out
         self.config = record
-        self.logger = Logger(out, tensorboard=self.tensorboard, quiet=not self.show_progress)
+        self.environment = environment
+        self.logger = Logger(out, tensorboard=self.tensorboard, quiet=True)
+        self.console = Console(quiet=not self.show_progress)
         num = self.workers.num_workers
         self.steps, self.epochs, self.episodes, self.elapsed = 0, 0, 0, 0.0
         self.scores, self.lengths = np.zeros(num), np.zeros(num, np.int64)
-        self.best_score = -np.inf
+        self.best_score, self.best_steps = -np.inf, None
+        self._epoch_begin, self._epoch_elapsed, self._since_save = 0, 0.0, 0
         self._compile_baseline: int | None = None
         self._tested = False
+        self._stop_requested = False
+        self.checkpoint: str | None = checkpoint
         try:
             if checkpoint is not None:
                 observations = self._load(checkpoint)
             else:
                 observations = self.workers.start()
                 self.logger.restore(0) if out else None
-            self._loop(observations)
+            self.console.start(self._start_line(checkpoint))
+            if checkpoint is not None and self._total_steps() >= self.max_steps:
+                self._report_finished(checkpoint)
+                return self.logger.rows
+            self._session_start = (time.monotonic(), self._total_steps())
+            with self._interruptible():
+                try:
+                    self._loop(observations)
+                except TrainingInterrupted:
+                    raise
+                except KeyboardInterrupt:  # a second Ctrl-C: stopped at once, nothing saved
+                    self._report_interrupted(None)
+                    raise TrainingInterrupted(None, self._total_steps()) from None
+            self.console.close()
+            self.console.summary(self._summary())
         finally:
+            self.console.close()
             self.logger.close()
             self.workers.close()
             self.test_env.close()
         return self.logger.rows
+
+    def _check_steps(self, agent: Any, workers: int) -> None:
+        """Steps and epochs in whole steps of the workers: ``steps`` must be a multiple of
+        ``workers`` (the run stops exactly there), and the default epoch is rounded to one.
+        Agents that simulate steps of their own (differentiable rollouts) are exempt."""
+        if getattr(agent, "differentiable", False) or workers == 1:
+            return
+        if self.max_steps % workers:
+            low = self.max_steps - self.max_steps % workers
+            options = " or ".join(f"{n:,}".replace(",", "") for n in (low, low + workers) if n)
+            raise ValueError(
+                f"steps={self.max_steps} is not a multiple of the {workers} workers (each step "
+                f"of the workers is {workers} environment steps): use {options}"
+            )
+        if self._default_epoch:
+            per_epoch = max(round(self.max_steps / 20 / workers), 1) * workers
+            self.epoch_steps = per_epoch
+            if self._default_save:
+                self.save_steps = per_epoch
 
     # ------------------------------------------------------------------------------------------
     # Set-up
@@ -510,7 +393,7 @@ class Trainer:
     def _write_config(self, out: str, record: dict[str, Any], resume: bool, overwrite: bool):
         path = os.path.join(out, "config.json")
         if resume and os.path.exists(path):
-            saved = _read_json(path)
+            saved = read_json(path)
             differ = [
                 f"{key}: this run {record[key]!r}, the saved run {saved[key]!r}"
                 for key in RUN_DEFINING
@@ -528,7 +411,7 @@ class Trainer:
                 elif os.path.exists(target):
                     os.remove(target)
         os.makedirs(out, exist_ok=True)
-        _write_json(path, record)
+        write_json(path, record)
 
     # ------------------------------------------------------------------------------------------
 
@@ -538,14 +421,25 @@ class Trainer:
 
     def _loop(self, observations: np.ndarray) -> None:
         agent, logger, num = self.agent, self.logger, self.workers.num_workers
+        console = self.console
         counts_compiles = hasattr(agent, "compiles")
         simulates = hasattr(agent, "simulated_steps")
         set_progress = getattr(agent, "set_progress", None)
         start = time.monotonic() - self.elapsed
-        epoch_start, epoch_begin = time.monotonic(), self._total_steps()
-        since_save = 0
+        epoch_start = time.monotonic() - self._epoch_elapsed
         total = self._total_steps()
+        if counts_compiles:
+            console.watch_compiles(
+                lambda: agent.compiles,
+                f"the {type(agent).__name__}'s functions on {agent.xp.backend}",
+            )
+        console.progress(total, self.max_steps, elapsed=self.elapsed, force=True)
         while total < self.max_steps:
+            if self._stop_requested:
+                self.elapsed = time.monotonic() - start
+                self._epoch_elapsed = time.monotonic() - epoch_start
+                self._stop_here()
+            console.tick()
             actions = agent.step(observations)
             observations, infos = self.workers.step(actions)
             if set_progress is not None:
@@ -559,19 +453,19 @@ class Trainer:
             self.lengths += 1
             self.steps += num
             before, total = total, self._total_steps()
-            since_save += total - before
+            self._since_save += total - before
             for i in np.flatnonzero(infos["resets"]):
                 logger.store("train/episode_score", self.scores[i], stats=True)
                 logger.store("train/episode_length", self.lengths[i], stats=True)
                 self.scores[i], self.lengths[i] = 0.0, 0
                 self.episodes += 1
-            epoch_steps = total - epoch_begin
-            if self.show_progress:
-                logger.progress(total, epoch_steps, self.epoch_steps, self.max_steps)
+            epoch_steps = total - self._epoch_begin
+            console.progress(total, self.max_steps, elapsed=time.monotonic() - start)
             last = total >= self.max_steps
             if epoch_steps >= self.epoch_steps or last:
                 test_start = time.monotonic()
                 self._test()
+                console.tick()
                 test_seconds = time.monotonic() - test_start
                 self.epochs += 1
                 now = time.monotonic()
@@ -591,11 +485,127 @@ class Trainer:
                 if counts_compiles:
                     fixed["train/compiles"] = int(agent.compiles)
                 row = logger.dump(fixed)
+                console.table(row)
                 self._keep_best(row)
-                epoch_start, epoch_begin = time.monotonic(), total
-                if self.out is not None and (since_save >= self.save_steps or last):
+                epoch_start, self._epoch_begin, self._epoch_elapsed = time.monotonic(), total, 0.0
+                if self.out is not None and (self._since_save >= self.save_steps or last):
                     self._save()
-                    since_save = 0
+                console.progress(total, self.max_steps, elapsed=self.elapsed, force=True)
+
+    # ------------------------------------------------------------------------------------------
+    # What the run prints, and Ctrl-C
+    # ------------------------------------------------------------------------------------------
+
+    @contextlib.contextmanager
+    def _interruptible(self):
+        """While training, a first Ctrl-C asks the loop to stop after its step (and save); a
+        second one stops at once. Only in the main thread (where Python delivers signals)."""
+        if threading.current_thread() is not threading.main_thread():
+            yield
+            return
+
+        def handler(signum, frame):
+            if self._stop_requested:
+                raise KeyboardInterrupt
+            self._stop_requested = True
+            what = "saving a checkpoint" if self.out is not None else "no --out: nothing is saved"
+            self.console.print(
+                f"Ctrl-C: stopping after this step ({what}); Ctrl-C again stops at once "
+                "without saving",
+                always=True,
+                error=True,
+            )
+
+        previous = signal.signal(signal.SIGINT, handler)
+        try:
+            yield
+        finally:
+            signal.signal(signal.SIGINT, previous)
+
+    def _stop_here(self) -> None:
+        """Save where the loop stands (between steps), say how to resume, and stop."""
+        path = self._save() if self.out is not None else None
+        self._report_interrupted(path)
+        raise TrainingInterrupted(path, self._total_steps())
+
+    def _report_interrupted(self, saved: str | None) -> None:
+        steps = self._total_steps()
+        lines = [f"interrupted at step {steps:,} of {self.max_steps:,}"]
+        if saved is not None:
+            lines[0] += f": saved {saved}"
+        elif self.out is not None:
+            last = latest_checkpoint(self.out)
+            lines[0] += ", not saved" + (
+                f" (the last checkpoint is {os.path.basename(last)})" if last else ""
+            )
+        if self.out is not None and (saved or latest_checkpoint(self.out)):
+            lines.append(
+                f"resume with: {command('python', '-m', 'ivy_rl.train', '--out', self.out, '--resume')}"
+            )
+        self.console.print("\n".join(lines), always=True, error=True)
+
+    def _start_line(self, checkpoint: str | None) -> str:
+        agent = self.agent
+        how = "compiled" if getattr(agent, "compiled", True) else "eager"
+        where = f"{agent.xp.backend} ({agent.dtype}, {agent.device}, {how})"
+        workers = self.workers.num_workers
+        folder = f" -> {self.out}" if self.out is not None else " (no --out: nothing is saved)"
+        if checkpoint is not None:
+            return (
+                f"resuming {type(agent).__name__} on {self.environment} with {where} from step "
+                f"{self._total_steps():,} ({os.path.relpath(checkpoint, self.out)}) to "
+                f"{self.max_steps:,} steps{folder}"
+            )
+        return (
+            f"training {type(agent).__name__} on {self.environment} with {where}: "
+            f"{self.max_steps:,} steps, {workers} worker{'s' if workers > 1 else ''}, seed "
+            f"{self.seed}{folder}"
+        )
+
+    def _report_finished(self, checkpoint: str) -> None:
+        steps = self._total_steps()
+        self.console.print(
+            f"the run in {self.out} has done its {self.max_steps:,} steps (its last checkpoint, "
+            f"{os.path.basename(checkpoint)}, is at step {steps:,}): nothing to train; to go on, "
+            f"resume with --steps above {steps:,}",
+            always=True,
+        )
+        self.console.summary(self._summary(finished=False))
+
+    def _summary(self, *, finished: bool = True) -> list[str]:
+        """The end of a run: steps, time, the best and last test scores, the folder and the
+        commands that play, plot and continue it."""
+        lines = []
+        if finished:
+            steps = self._total_steps()
+            done, seconds = (
+                steps - self._session_start[1],
+                time.monotonic() - self._session_start[0],
+            )
+            rate = f" ({done / seconds:,.0f} steps/s)" if done > 0 and seconds > 0 else ""
+            lines.append(f"finished: {steps:,} steps in {format_duration(self.elapsed)}{rate}")
+        scores = [r.get("test/episode_score/mean") for r in self.logger.rows]
+        scores = [
+            (s, r.get("train/steps")) for s, r in zip(scores, self.logger.rows) if s is not None
+        ]
+        if scores:
+            best, at = max(scores, key=lambda pair: pair[0])
+            lines.append(
+                f"test score: best {best:.2f} at step {int(at):,}, last {scores[-1][0]:.2f} "
+                f"(mean of {self.test_episodes} episode{'s' if self.test_episodes > 1 else ''})"
+            )
+        if self.out is not None:
+            best = os.path.join(self.out, "best")
+            play = ["python", "-m", "ivy_rl.play", self.out] + (
+                ["--best"] if os.path.isdir(best) else []
+            )
+            lines += [
+                f"run folder: {self.out}",
+                f"  play:   {command(*play)}",
+                f"  plot:   {command('python', '-m', 'ivy_rl.plot', self.out, '--out', os.path.join(self.out, 'curves.png'))}",
+                f"  go on:  {command('python', '-m', 'ivy_rl.train', '--out', self.out, '--resume', '--steps', 2 * self.max_steps)}",
+            ]
+        return lines
 
     def _check_compiles(self, where: str) -> None:
         """Warn (once per growth) when the agent compiles again after its first update."""
@@ -643,30 +653,15 @@ class Trainer:
         if self.out is None or score is None or not score > self.best_score:
             return
         self.best_score = float(score)
-        best = os.path.join(self.out, "best")
-        partial = os.path.join(self.out, ".best.partial")
-        shutil.rmtree(partial, ignore_errors=True)
-        self.agent.save(os.path.join(partial, "agent"))
-        _write_json(
-            os.path.join(partial, "best.json"),
-            {"steps": row["train/steps"], "epochs": self.epochs, "test_score": self.best_score},
-        )
-        shutil.rmtree(best, ignore_errors=True)
-        os.replace(partial, best)
+        self.best_steps = int(row["train/steps"])
+        record = {"steps": row["train/steps"], "epochs": self.epochs, "test_score": self.best_score}
+        save_best(self.out, self.agent, record)
 
     # ------------------------------------------------------------------------------------------
-    # Checkpoints
+    # Checkpoints (their format: ivy_rl.checkpoints)
     # ------------------------------------------------------------------------------------------
 
-    def _save(self) -> None:
-        root = os.path.join(self.out, "checkpoints")
-        name = f"step_{self._total_steps()}"
-        path, partial = os.path.join(root, name), os.path.join(root, f".{name}.partial")
-        shutil.rmtree(partial, ignore_errors=True)
-        self.agent.save(os.path.join(partial, "agent"))
-        arrays, meta = self.workers.state_dict()
-        with open(os.path.join(partial, "workers.npz"), "wb") as fh:
-            np.savez(fh, **arrays)
+    def _save(self) -> str:
         state = {
             "steps": self.steps,
             "epochs": self.epochs,
@@ -675,32 +670,34 @@ class Trainer:
             "scores": self.scores.tolist(),
             "lengths": self.lengths.tolist(),
             "best_score": self.best_score if np.isfinite(self.best_score) else None,
-            "workers": meta,
+            # the epoch in progress (a checkpoint taken within an epoch: Ctrl-C)
+            "epoch_begin": self._epoch_begin,
+            "epoch_elapsed": self._epoch_elapsed,
+            "since_save": 0,
+            "pending": self.logger.pending(),
         }
-        _write_json(os.path.join(partial, "trainer.json"), state)
-        shutil.rmtree(path, ignore_errors=True)
-        os.replace(partial, path)  # the checkpoint appears complete, or not at all
-        if self.keep_checkpoints is not None:
-            kept = checkpoints(self.out)
-            for old in kept[: -self.keep_checkpoints]:
-                shutil.rmtree(old, ignore_errors=True)
+        path = save_checkpoint(
+            self.out, self._total_steps(), self.agent, self.workers, state,
+            keep=self.keep_checkpoints,
+        )  # fmt: skip
+        self._since_save = 0
+        self.checkpoint = path
+        return path
 
     def _load(self, path: str) -> np.ndarray:
-        state = _read_json(os.path.join(path, "trainer.json"))
-        agent_path = os.path.join(path, "agent")
-        try:
-            self.agent.load(agent_path)
-        except (KeyError, OSError, zipfile.BadZipFile, json.JSONDecodeError) as error:
-            raise CheckpointError(f"cannot load the agent of {agent_path}: {error}") from None
-        arrays = _read_npz(os.path.join(path, "workers.npz"))
-        observations = self.workers.load_state_dict(arrays, state["workers"])
+        state, observations = load_checkpoint(path, self.agent, self.workers)
         self.steps, self.epochs = int(state["steps"]), int(state["epochs"])
         self.episodes, self.elapsed = int(state["episodes"]), float(state["elapsed"])
         self.scores = np.asarray(state["scores"], np.float64)
         self.lengths = np.asarray(state["lengths"], np.int64)
         best = state.get("best_score")
         self.best_score = -np.inf if best is None else float(best)
+        # checkpoints from before the epoch in progress was saved were taken at an epoch's end
+        self._epoch_begin = int(state.get("epoch_begin", self._total_steps()))
+        self._epoch_elapsed = float(state.get("epoch_elapsed", 0.0))
+        self._since_save = int(state.get("since_save", 0))
         self.logger.restore(self.epochs)
+        self.logger.restore_pending(state.get("pending"))
         return observations
 
 
@@ -734,16 +731,6 @@ def _qualified(obj: Any) -> str:
     return f"{obj.__module__}:{obj.__qualname__}"
 
 
-def _json_value(value: Any) -> Any:
-    if isinstance(value, np.generic):
-        return value.item()
-    if isinstance(value, np.ndarray):
-        return value.tolist()
-    if isinstance(value, type):
-        return _qualified(value)
-    return str(value)  # schedules and other settings written as text
-
-
 def _same(key: str, saved: Any, value: Any) -> bool:
     if key == "agent":
         return str(saved).lower() == str(value).lower()
@@ -751,10 +738,6 @@ def _same(key: str, saved: Any, value: Any) -> bool:
 
 
 def _jsonable(value: Any) -> Any:
-    return json.loads(json.dumps(value, default=_json_value))
+    from ivy_rl.checkpoints import json_value
 
-
-def _write_json(path: str, value: Any) -> None:
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as fh:
-        json.dump(value, fh, indent=1, default=_json_value)
+    return json.loads(json.dumps(value, default=json_value))

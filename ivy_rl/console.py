@@ -1,0 +1,269 @@
+"""What a training run prints: a start line, a progress bar over the whole run (with the rate,
+elapsed time and estimated time left), a line while the agent compiles, a table per epoch, and a
+summary at the end (the best score, the run's folder, how to play, plot and continue it).
+
+On a terminal the bar is redrawn in place on stderr (at most ten times a second); where stderr is
+a file or a pipe (a run under ``nohup``, a job's log) a progress line is written at most every
+``line_seconds`` instead. Quiet, only the summary and what the user must know (an interrupted
+run, a finished run resumed) are printed.
+
+Example:
+    >>> console = Console()
+    >>> console.start("training PPO on CartPole-v1 with torch: 100,000 steps -> runs/ppo")
+    >>> console.progress(5_000, 100_000, elapsed=4.2)
+"""
+
+from __future__ import annotations
+
+import collections
+import shlex
+import sys
+import threading
+import time
+from collections.abc import Callable
+from typing import Any, TextIO
+
+__all__ = ["Console", "format_duration", "command"]
+
+
+def format_duration(seconds: float) -> str:
+    """``h:mm:ss`` (``d days, h:mm:ss`` past a day).
+
+    Example:
+        >>> format_duration(3725.2)
+        '1:02:05'
+    """
+    if seconds != seconds or seconds in (float("inf"), float("-inf")):
+        return "?"
+    seconds = int(round(max(seconds, 0.0)))
+    days, rest = divmod(seconds, 86400)
+    hours, rest = divmod(rest, 3600)
+    minutes, secs = divmod(rest, 60)
+    text = f"{hours}:{minutes:02d}:{secs:02d}"
+    return f"{days} day{'s' if days > 1 else ''}, {text}" if days else text
+
+
+def command(*words: Any) -> str:
+    """A shell command line, quoting what needs it.
+
+    Example:
+        >>> command("python", "-m", "ivy_rl.play", "runs/my run")
+        "python -m ivy_rl.play 'runs/my run'"
+    """
+    return " ".join(shlex.quote(str(w)) for w in words)
+
+
+class Console:
+    """The run's console.
+
+    Args:
+        quiet: print only the summary and the messages a user must see (interruptions).
+        stdout, stderr: streams (default: ``sys.stdout`` and ``sys.stderr`` when written).
+        line_seconds: seconds between progress lines where stderr is not a terminal.
+        compile_seconds: how long a call runs, with the agent's compilations growing, before
+            the console says that it compiles.
+
+    Example:
+        >>> Console(quiet=True).summary(["finished: 1,000 steps in 0:00:02"])
+    """
+
+    def __init__(
+        self,
+        *,
+        quiet: bool = False,
+        stdout: TextIO | None = None,
+        stderr: TextIO | None = None,
+        line_seconds: float = 30.0,
+        compile_seconds: float = 2.0,
+    ) -> None:
+        self.quiet = quiet
+        self._stdout, self._stderr = stdout, stderr
+        self.line_seconds = line_seconds
+        self.compile_seconds = compile_seconds
+        self._bar_shown = False
+        self._last_draw = -float("inf")
+        self._samples: collections.deque = collections.deque()
+        self._lock = threading.RLock()
+        self._watch: threading.Thread | None = None
+        self._stop = threading.Event()
+        self._tick = (time.monotonic(), 0)  # (when the loop last ticked, compilations then)
+        self._compiling_since: float | None = None
+        self._last_progress: tuple[int, int, float] | None = None
+
+    # streams, looked up when written (so that redirections made later are followed)
+    @property
+    def stdout(self) -> TextIO:
+        return self._stdout or sys.stdout
+
+    @property
+    def stderr(self) -> TextIO:
+        return self._stderr or sys.stderr
+
+    @property
+    def tty(self) -> bool:
+        isatty = getattr(self.stderr, "isatty", None)
+        try:
+            return bool(isatty and isatty())
+        except ValueError:  # a closed stream
+            return False
+
+    # ------------------------------------------------------------------------------------------
+
+    def _clear_bar(self) -> None:
+        if self._bar_shown:
+            self.stderr.write("\r\033[K")
+            self.stderr.flush()
+            self._bar_shown = False
+
+    def print(self, text: str, *, always: bool = False, error: bool = False) -> None:
+        """Print lines (on stdout; ``error``: on stderr), above the progress bar; nothing when
+        quiet unless ``always``."""
+        if self.quiet and not always:
+            return
+        with self._lock:
+            self._clear_bar()
+            stream = self.stderr if error else self.stdout
+            stream.write(text.rstrip("\n") + "\n")
+            stream.flush()
+            if self._last_progress is not None and self.tty:
+                self._draw(*self._last_progress)
+
+    def start(self, text: str) -> None:
+        """The start line: what trains where, and where the run is written."""
+        self.print(text)
+
+    def progress(self, steps: int, max_steps: int, *, elapsed: float, force: bool = False) -> None:
+        """Update the progress bar: ``steps`` of ``max_steps`` done, ``elapsed`` seconds of the
+        run so far (earlier sessions of a resumed run included)."""
+        now = time.monotonic()
+        self._samples.append((now, steps))
+        while len(self._samples) > 2 and now - self._samples[1][0] > 30.0:
+            self._samples.popleft()  # the rate over the last half minute
+        self._last_progress = (steps, max_steps, elapsed)
+        if self.quiet:
+            return
+        interval = 0.1 if self.tty else self.line_seconds
+        if not force and now - self._last_draw < interval:
+            return
+        with self._lock:
+            self._draw(steps, max_steps, elapsed)
+
+    def rate(self) -> float | None:
+        """Steps per second over the last half minute (None before two measurements)."""
+        if len(self._samples) < 2:
+            return None
+        (t0, s0), (t1, s1) = self._samples[0], self._samples[-1]
+        return (s1 - s0) / (t1 - t0) if t1 > t0 and s1 > s0 else None
+
+    def bar(self, steps: int, max_steps: int, elapsed: float, width: int = 30) -> str:
+        """The progress line: percent, bar, steps, rate, elapsed time and time left.
+
+        Example:
+            >>> Console().bar(5_000, 20_000, 12.0)
+            ' 25% [#######-----------------------] 5,000/20,000 steps | ... | elapsed 0:00:12'
+        """
+        done = min(steps / max(max_steps, 1), 1.0)
+        filled = int(width * done)
+        rate = self.rate()
+        speed = f"{rate:,.0f} steps/s" if rate else "- steps/s"
+        left = format_duration((max_steps - steps) / rate) if rate else "?"
+        return (
+            f"{100 * done:3.0f}% [{'#' * filled}{'-' * (width - filled)}] "
+            f"{steps:,}/{max_steps:,} steps | {speed} | elapsed {format_duration(elapsed)} | "
+            f"left {left}"
+        )
+
+    def _draw(self, steps: int, max_steps: int, elapsed: float) -> None:
+        self._last_draw = time.monotonic()
+        line = self.bar(steps, max_steps, elapsed)
+        if self.tty:
+            self.stderr.write("\r\033[K" + line)
+            self._bar_shown = True
+        else:
+            self.stderr.write(line + "\n")
+        self.stderr.flush()
+
+    def table(self, row: dict[str, Any]) -> None:
+        """An epoch's row as a table (means; no std, min and max)."""
+        keys = [k for k in row if not k.endswith(("/std", "/min", "/max"))]
+        if not keys:
+            return
+        width = max(len(k) for k in keys)
+        line = "-" * (width + 16)
+        lines = [line, *(f"| {k:<{width}} | {_format(row[k]):>10} |" for k in keys), line]
+        self.print("\n".join(lines))
+
+    def summary(self, lines: list[str]) -> None:
+        """The end of the run: printed even when quiet."""
+        self.print("\n".join(lines), always=True)
+
+    # ------------------------------------------------------------------------------------------
+    # Compilation
+    # ------------------------------------------------------------------------------------------
+
+    def watch_compiles(self, compiles: Callable[[], int], what: str) -> None:
+        """Watch a long call: when the loop has not ticked (:meth:`tick`) for
+        ``compile_seconds`` and ``compiles()`` grew meanwhile, say that ``what`` compiles (the
+        agent's compiled functions count a compilation when they meet a new signature, before
+        compiling); when the loop ticks again, say how long it took."""
+        if self.quiet or self._watch is not None:
+            return
+        self._compiles, self._what = compiles, what
+        self._tick = (time.monotonic(), self._count())
+        self._watch = threading.Thread(target=self._watching, name="ivy_rl-console", daemon=True)
+        self._watch.start()
+
+    def _count(self) -> int:
+        try:
+            return int(self._compiles())
+        except Exception:  # read while the loop changes it: try again later
+            return -1
+
+    def tick(self) -> None:
+        """The training loop is between calls (cheap: call it every step)."""
+        if self._watch is None:
+            return
+        now = time.monotonic()
+        if self._compiling_since is not None:
+            with self._lock:
+                took = now - self._compiling_since
+                self._compiling_since = None
+                self.print(f"compiled in {format_duration(took)}", error=True)
+        self._tick = (now, self._count())
+
+    def _watching(self) -> None:
+        while not self._stop.wait(0.25):
+            since, before = self._tick
+            if self._compiling_since is not None or time.monotonic() - since < self.compile_seconds:
+                continue
+            now = self._count()
+            if before >= 0 and now > before:
+                with self._lock:
+                    if self._tick[0] != since:  # the loop went on meanwhile
+                        continue
+                    self._compiling_since = since
+                    self.print(
+                        f"compiling {self._what} (its first calls compile; this can take a "
+                        "few minutes on torch) ...",
+                        error=True,
+                    )
+
+    def close(self) -> None:
+        """Stop watching, and end the progress bar's line."""
+        self._stop.set()
+        if self._watch is not None:
+            self._watch.join(timeout=1.0)
+            self._watch = None
+        with self._lock:
+            self._clear_bar()
+            self._last_progress = None  # what is printed next is not redrawn under a bar
+
+
+def _format(value: Any) -> str:
+    if isinstance(value, float):
+        if value != 0 and (abs(value) >= 1e6 or abs(value) < 1e-3):
+            return f"{value:.3e}"
+        return f"{value:.4g}"
+    if isinstance(value, int):
+        return f"{value:,}" if abs(value) >= 10_000 else str(value)
+    return str(value)
