@@ -13,9 +13,8 @@ Example:
 
 from __future__ import annotations
 
-import warnings
-
 import math
+import warnings
 from collections.abc import Callable, Sequence
 from typing import Any
 

@@ -46,7 +46,11 @@ class NoNoise:
         self.start_steps = _start_steps(start_steps, type(self).__name__)
 
     def __call__(
-        self, actions: np.ndarray, rng: np.random.Generator, *, num_actions: Any = None,
+        self,
+        actions: np.ndarray,
+        rng: np.random.Generator,
+        *,
+        num_actions: Any = None,
         steps: int = 0,
     ) -> np.ndarray:
         """The actions to take given the policy's ``actions`` (``num_actions`` and ``steps``:

@@ -23,8 +23,13 @@ import numpy as np
 
 import ivy
 from ivy.typing import Framework
-from ivy_rl.critics import BranchingQHead, CriticEnsemble, DiscreteQHead, QNetwork
-from ivy_rl.critics import action_value_critic
+from ivy_rl.critics import (
+    BranchingQHead,
+    CriticEnsemble,
+    DiscreteQHead,
+    QNetwork,
+    action_value_critic,
+)
 from ivy_rl.models import (
     Actor,
     ActorCriticWithTargets,
@@ -264,7 +269,10 @@ class QModel:
             )
         else:
             head = DiscreteQHead(
-                torso.out_size, self.branch_sizes[0], dueling=self.dueling, weight_init=init,
+                torso.out_size,
+                self.branch_sizes[0],
+                dueling=self.dueling,
+                weight_init=init,
                 **build,
             )
         self.q_network = QNetwork(ObservationEncoder(observation_size, f=f), torso, head)

@@ -184,9 +184,7 @@ class TwinCriticSoftPolicyGradient(OffPolicyUpdater):
     ) -> None:
         super().__init__(lr, gradient_clip)
         if not initial_temperature > 0:
-            raise ValueError(
-                f"SAC: initial_temperature must be > 0, got {initial_temperature}"
-            )
+            raise ValueError(f"SAC: initial_temperature must be > 0, got {initial_temperature}")
         as_schedule(temperature_lr, name="TwinCriticSoftPolicyGradient: temperature_lr")
         self.initial_temperature = initial_temperature
         self.temperature_lr, self.target_entropy = temperature_lr, target_entropy
@@ -601,4 +599,3 @@ class QLearning(DeterministicQLearning):
             size = xp.abs(error)
             losses.append(xp.mean(xp.where(size < 1.0, 0.5 * xp.square(error), size - 0.5)))
         return xp.mean(xp.stack(losses))
-

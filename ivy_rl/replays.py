@@ -23,7 +23,41 @@ import numpy as np
 
 from ivy_rl.buffers import TransitionReplay
 
-__all__ = ["Segment", "Transitions"]
+__all__ = ["Segment", "Transitions", "Rollouts"]
+
+
+class Rollouts:
+    """The replay part of the agents that learn through ivy_gym's gradients (APG, SHAC): no
+    stored data (the differentiable rollouts are the data), but their shape and cadence.
+
+    Args:
+        batch_size: rollouts per update (SHAC: simulated environments carried across updates).
+        horizon: steps per rollout.
+        update_every: trainer steps between updates.
+        discount: γ of the rollouts' returns.
+
+    Example:
+        >>> APG(replay=Rollouts(batch_size=16, horizon=32, update_every=1))
+    """
+
+    def __init__(
+        self,
+        batch_size: int = 64,
+        horizon: int = 32,
+        update_every: int = 16,
+        discount: float = 0.99,
+    ) -> None:
+        for name, value in (
+            ("batch_size", batch_size),
+            ("horizon", horizon),
+            ("update_every", update_every),
+        ):
+            if not isinstance(value, int) or isinstance(value, bool) or value < 1:
+                raise ValueError(f"Rollouts: {name} must be a positive integer, got {value!r}")
+        if not 0.0 <= discount <= 1.0:
+            raise ValueError(f"Rollouts: discount must be in [0, 1], got {discount}")
+        self.batch_size, self.horizon, self.update_every = batch_size, horizon, update_every
+        self.discount = float(discount)
 
 
 class Transitions(TransitionReplay):

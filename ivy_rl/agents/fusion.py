@@ -52,8 +52,7 @@ def check_fusion(who: str, fusion: str) -> str:
     """
     if fusion not in FUSION_LEVELS:
         raise ValueError(
-            f"{who}: unknown fusion {fusion!r}; choose one of "
-            f"{', '.join(map(repr, FUSION_LEVELS))}"
+            f"{who}: unknown fusion {fusion!r}; choose one of {', '.join(map(repr, FUSION_LEVELS))}"
         )
     return fusion
 

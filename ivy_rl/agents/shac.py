@@ -24,18 +24,15 @@ Example:
 
 from __future__ import annotations
 
+from functools import partial
 from typing import Any
 
 import numpy as np
 
-import ivy
-from ivy_rl import updaters
 from ivy_rl.agents.through_gym import DifferentiableAgent
-from ivy_rl.models import Critic, ObservationEncoder, ValueHead, orthogonal_init, polyak_update
+from ivy_rl.differentiable_parts import ActorValueModel, TargetValueRegression
 from ivy_rl.normalizers import _fold_moments, _standard_deviation
 from ivy_rl.returns import _lambda_returns
-from ivy_rl.schedules import as_schedule
-from ivy_rl.updaters import at_rate
 
 __all__ = ["SHAC"]
 
@@ -78,21 +75,36 @@ class SHAC(DifferentiableAgent):
         normalize_returns=True,
     )
 
+    parts = {
+        **DifferentiableAgent.parts,
+        "model": (
+            partial(ActorValueModel, critic=True),
+            {
+                "hidden_sizes": "hidden_sizes",
+                "activation": "activation",
+                "critic_hidden_sizes": "critic_hidden_sizes",
+                "normalize_returns": "normalize_returns",
+            },
+        ),
+        "critic_updater": (
+            TargetValueRegression,
+            {
+                "critic_lr": "lr",
+                "critic_gradient_clip": "gradient_clip",
+                "trace_decay": "trace_decay",
+                "critic_iterations": "iterations",
+                "critic_batches": "batches",
+                "target_update": "target_update",
+            },
+        ),
+    }
+
     def _build_learner(self) -> None:
-        c, xp = self.config, self.xp
-        sizes = tuple(c["critic_hidden_sizes"] or c["hidden_sizes"])
-        torso = self._torso(sizes)
-        head = ValueHead(
-            torso.out_size, weight_init=orthogonal_init(self.rng, 1.0), **self._build_args()
-        )
-        self.critic = Critic(ObservationEncoder(self._obs_dim, f=xp), torso, head)
-        self.critic_optimizer = ivy.Adam(as_schedule(c["critic_lr"])(0.0), f=xp)
-        critic_v = self._placed(self.critic.v)
-        self.v = {
-            "actor": self._placed(self.actor.v),
-            "critic": critic_v,
-            "target": self._placed(self.critic.v),
-        }
+        c = self.config
+        self.critic_updater.initialize(self.xp)
+        self.critic_optimizer = self.critic_updater.optimizer
+        v = self.model.v
+        self.v = {k: self._placed(v[k]) for k in ("actor", "critic", "target")}
         self.optimizer_states = {
             "actor": self.actor_optimizer.init(self.v["actor"]),
             "critic": self.critic_optimizer.init(self.v["critic"]),
@@ -135,7 +147,7 @@ class SHAC(DifferentiableAgent):
             scheduled["critic_lr"],
         )
         logs["critic/loss"] = self.xp.mean(ys["loss"])
-        target_v = polyak_update(v["target"], critic_v, self.config["target_update"], f=self.xp)
+        target_v = self.critic_updater.update_target(v["target"], critic_v)
         new_v = {"actor": actor_v, "critic": critic_v, "target": target_v}
         new_states = {"actor": actor_state, "critic": critic_state}
         return new_v, new_states, moments, data["final_state"], data["ended"], logs
@@ -224,23 +236,7 @@ class SHAC(DifferentiableAgent):
         return batch, moments
 
     def _critic_step(self, carry, indices, batch, lr):
-        xp = self.xp
-        critic_v, critic_state = carry
-        part = {k: xp.take(a, indices, axis=0) for k, a in batch.items()}
-
-        def loss_fn(w):
-            values = self.critic.normalized(w, part["observations"], None)
-            weights = part["weights"]
-            return updaters.value_loss(xp, values * weights, part["targets"] * weights)
-
-        loss, grads = xp.execute_with_gradients(loss_fn, critic_v)[:2]
-        clip = self.config["critic_gradient_clip"]
-        if clip:
-            grads = xp.clip_by_global_norm(grads, clip)[0]
-        critic_v, critic_state = at_rate(self.critic_optimizer, lr).step(
-            critic_v, grads, critic_state
-        )
-        return (critic_v, critic_state), {"loss": loss}
+        return self.critic_updater.step(self.critic, carry, indices, batch, lr)
 
     # ------------------------------------------------------------------------------------------
     # Learning
@@ -249,12 +245,7 @@ class SHAC(DifferentiableAgent):
     def _orders(self) -> np.ndarray:
         """``[critic_iterations * critic_batches, size]`` indices of the critic's mini-batches."""
         c = self.config
-        total = c["batch_size"] * c["horizon"]
-        rows = [
-            self.rng.permutation(total).reshape(c["critic_batches"], -1)
-            for _ in range(c["critic_iterations"])
-        ]
-        return np.concatenate(rows).astype(np.int32)
+        return self.critic_updater.orders(self.rng, c["batch_size"] * c["horizon"])
 
     def _learn(self) -> dict[str, float]:
         c, xp = self.config, self.xp

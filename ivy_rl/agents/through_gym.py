@@ -29,24 +29,16 @@ Example:
 from __future__ import annotations
 
 import importlib
-import math
 from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
-import ivy
 from ivy_rl.agents.agent import Agent
 from ivy_rl.agents.fusion import check_fusion, fusion_level
-from ivy_rl.schedules import as_schedule
-from ivy_rl.updaters import at_rate
-from ivy_rl.models import (
-    Actor,
-    DeterministicHead,
-    MLPTorso,
-    ObservationEncoder,
-    orthogonal_init,
-)
+from ivy_rl.differentiable_parts import ActorValueModel, AnalyticPolicyGradient
+from ivy_rl.explorations import NormalNoise
+from ivy_rl.replays import Rollouts
 
 __all__ = ["DifferentiableAgent", "environment_core"]
 
@@ -137,23 +129,33 @@ class DifferentiableAgent(Agent):
         fusion="auto",
     )
 
+    #: the flat settings of the parts (SHAC adds its critic's)
+    parts = {
+        "model": (
+            ActorValueModel,
+            {"hidden_sizes": "hidden_sizes", "activation": "activation"},
+        ),
+        "replay": (
+            Rollouts,
+            {
+                "batch_size": "batch_size",
+                "horizon": "horizon",
+                "update_every": "update_every",
+                "discount": "discount",
+            },
+        ),
+        "exploration": (NormalNoise, {"exploration_noise": "scale"}),
+        "actor_updater": (
+            AnalyticPolicyGradient,
+            {"actor_lr": "lr", "actor_gradient_clip": "gradient_clip"},
+        ),
+    }
+
     def __init__(self, **settings: Any) -> None:
-        config = {}
-        for cls in reversed(type(self).__mro__):
-            config.update(getattr(cls, "_defaults", {}))
-        unknown = sorted(set(settings) - set(config))
-        if unknown:
-            raise TypeError(
-                f"{type(self).__name__} got unknown settings {unknown}; its settings are "
-                f"{sorted(config)}"
-            )
-        config.update(settings)
+        config, parts = self._composed(settings)
         check_fusion(type(self).__name__, config["fusion"])
-        for key in ("batch_size", "horizon", "update_every"):
-            if not isinstance(config[key], int) or config[key] < 1:
-                raise ValueError(
-                    f"{type(self).__name__}: {key} must be a positive integer, got {config[key]!r}"
-                )
+        for role, part in parts.items():
+            setattr(self, role, part)
         super().__init__(**config)
         self.core = None
         self.simulated_steps = 0
@@ -193,26 +195,23 @@ class DifferentiableAgent(Agent):
         if core is not None:
             self._check_core_spaces(obs_shape)
         self._obs_dim, action_dim = obs_shape[0], self.action_space.shape[0]
-        sizes = tuple(c["hidden_sizes"])
-        torso = self._torso(sizes)
-        self.actor = Actor(
-            ObservationEncoder(self._obs_dim, f=xp),
-            torso,
-            DeterministicHead(
-                torso.out_size,
-                action_dim,
-                noise_scale=c["exploration_noise"],
-                weight_init=orthogonal_init(self.rng, 0.01),
-                **self._build_args(),
-            ),
+        self.model.initialize(
+            self._obs_dim,
+            action_dim,
+            rng=self.rng,
+            dtype=self.dtype,
+            device=self.device,
+            f=xp,
         )
+        self.actor, self.critic = self.model.actor, self.model.critic
         low, high = (
             self.action_space.low.astype(np.float64),
             self.action_space.high.astype(np.float64),
         )
         self._action_low = tuple(float(x) for x in low)
         self._action_half = tuple(float(x) for x in (high - low) / 2)
-        self.actor_optimizer = ivy.Adam(as_schedule(c["actor_lr"])(0.0), f=xp)
+        self.actor_updater.initialize(xp)
+        self.actor_optimizer = self.actor_updater.optimizer
         self._build_learner()
         self.fusion = fusion_level(c["fusion"], compiled=self.compiled, f=xp)
         # 'steps': the rollout and its gradient run eagerly (a compiler that unrolls loops
@@ -232,21 +231,6 @@ class DifferentiableAgent(Agent):
                 f"({core.observation_dim},), ({core.action_dim},); wrappers that change them "
                 "(e.g. time_feature) cannot be differentiated through"
             )
-
-    def _build_args(self) -> dict[str, Any]:
-        return {"dtype": self.dtype, "device": self.device, "f": self.xp}
-
-    def _torso(self, sizes) -> MLPTorso:
-        """An MLP torso over the core's observations, initialised from the agent's generator
-        (the same seed gives the same weights on every backend)."""
-        init = orthogonal_init(self.rng, math.sqrt(2.0))
-        return MLPTorso(
-            self._obs_dim,
-            sizes,
-            self.config["activation"],
-            weight_init=init,
-            **self._build_args(),
-        )
 
     def _build_learner(self) -> None:
         """Create ``self.v`` (``{'actor': ...}`` and more) and ``self.optimizer_states``."""
@@ -287,16 +271,9 @@ class DifferentiableAgent(Agent):
         return self.xp.asarray([[gamma**t] for t in range(steps)], dtype=dtype)
 
     def _actor_minimize(self, loss_fn, actor_v, actor_state, lr):
-        """A step of the actor on ``loss_fn`` at the learning rate ``lr`` (the scheduled value,
-        a scalar array), its gradient's global norm clipped."""
-        xp = self.xp
-        loss, grads, aux = xp.execute_with_gradients(loss_fn, actor_v)
-        norm = _global_norm(xp, grads)
-        clip = self.config["actor_gradient_clip"]
-        if clip:
-            grads = xp.clip_by_global_norm(grads, clip)[0]
-        actor_v, actor_state = at_rate(self.actor_optimizer, lr).step(actor_v, grads, actor_state)
-        return actor_v, actor_state, {"loss": loss, "gradient_norm": norm, **aux}
+        """A step of the actor updater on ``loss_fn`` at the learning rate ``lr`` (the
+        scheduled value, a scalar array)."""
+        return self.actor_updater.minimize(loss_fn, actor_v, actor_state, lr)
 
     def _mode_fn(self, actor_v, observations):
         return self.actor(observations, None, v=actor_v).mode()
@@ -337,9 +314,7 @@ class DifferentiableAgent(Agent):
 
     def step(self, observations: Any) -> np.ndarray:
         self._check_initialized()
-        unit = self._unit_actions(observations)
-        noise = self.rng.standard_normal(unit.shape)
-        return self._env_actions(np.clip(unit + self.config["exploration_noise"] * noise, -1, 1))
+        return self._env_actions(self.exploration(self._unit_actions(observations), self.rng))
 
     def test_step(self, observations: Any) -> np.ndarray:
         self._check_initialized()
@@ -399,8 +374,3 @@ class DifferentiableAgent(Agent):
         self.updates = int(meta.get("updates", 0))
         self._calls = int(meta.get("calls", 0))
         self.simulated_steps = int(meta.get("simulated_steps", 0))
-
-
-def _global_norm(xp, grads):
-    leaves = ivy.nest.nest_leaves(grads)
-    return xp.sqrt(sum(xp.sum(g * g) for g in leaves))

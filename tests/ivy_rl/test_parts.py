@@ -12,7 +12,6 @@ import numpy as np
 import pytest
 
 import ivy
-import ivy_rl
 from ivy_rl.explorations import EpsilonGreedy, NoNoise, NormalNoise, make_exploration
 from ivy_rl.models import polyak_update
 from ivy_rl.off_policy_models import ActorQModel, QModel
@@ -129,9 +128,10 @@ def test_deterministic_updaters_match_numpy(diff_backend):
     states = {"critic": critic.optimizer.init(v["critic"])}
     new_v, _, infos = critic.step(v, targets, states, batch, None, {}, {})
     np.testing.assert_allclose(float(_np(infos["loss"])), expected_loss, rtol=1e-10)
-    assert _np(new_v["actor"]["head"]["layer"]["w"]).tolist() == _np(
-        v["actor"]["head"]["layer"]["w"]
-    ).tolist()
+    assert (
+        _np(new_v["actor"]["head"]["layer"]["w"]).tolist()
+        == _np(v["actor"]["head"]["layer"]["w"]).tolist()
+    )
     actor = _updater(DeterministicPolicyGradient, xp, model, lr=1e-3)
     loss = actor.loss(v["actor"], v["critic"], batch, None, {})
     obs = raw["observations"]
@@ -182,7 +182,10 @@ def test_sac_temperature_follows_the_entropy_gap(diff_backend):
     states = {k: opt.init(v[k]) for k, opt in actor.optimizers().items()}
     states.update({k: opt.init(v[k]) for k, opt in critic.optimizers().items()})
     rng = np.random.default_rng(8)
-    x = {k: xp.asarray(a[0]) for k, a in {**critic.draw(rng, 1, BATCH), **actor.draw(rng, 1, BATCH)}.items()}
+    x = {
+        k: xp.asarray(a[0])
+        for k, a in {**critic.draw(rng, 1, BATCH), **actor.draw(rng, 1, BATCH)}.items()
+    }
     v, states, infos = critic.step(v, model.target_v, states, batch, None, x, {})
     v, states, infos = actor.step(v, model.target_v, states, batch, None, x, {})
     # Adam's first step is lr * sign(-gradient); the gradient of -log α (H* - H) is H - H*
@@ -274,7 +277,11 @@ def test_an_agent_of_parts_equals_the_agent_of_the_same_settings():
     parts = SAC(
         model=ActorQModel((8,), policy="squashed_gaussian", critics=2, targets=("critic",)),
         replay=Transitions(
-            1_000_000, return_steps=2, batch_size=8, batch_iterations=2, update_after=6,
+            1_000_000,
+            return_steps=2,
+            batch_size=8,
+            batch_iterations=2,
+            update_after=6,
             update_every=4,
         ),
         exploration=NoNoise(start_steps=6),
