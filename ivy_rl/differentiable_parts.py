@@ -21,6 +21,7 @@ import numpy as np
 
 import ivy
 from ivy.typing import Framework, Nest
+from ivy_rl import settings as _s
 from ivy_rl import updaters
 from ivy_rl.models import (
     Actor,
@@ -52,6 +53,13 @@ class ActorValueModel:
     Example:
         >>> ActorValueModel((64, 64), critic=True)
     """
+
+    settings = {
+        "hidden_sizes": _s.SIZES,
+        "activation": _s.ACTIVATION,
+        "critic_hidden_sizes": _s.CRITIC_SIZES,
+        "normalize_returns": _s.Setting("bool", meaning="the critic predicts normalised returns"),
+    }
 
     def __init__(
         self,
@@ -115,6 +123,8 @@ class AnalyticPolicyGradient(GradientUpdater):
         >>> ivy_rl.agents.APG(actor_updater=AnalyticPolicyGradient(lr=1e-2))
     """
 
+    settings = {"lr": _s.LR, "gradient_clip": _s.CLIP}
+
     def __init__(self, lr: Any = 1e-3, gradient_clip: float = 1.0) -> None:
         super().__init__(lr, gradient_clip)
 
@@ -146,6 +156,15 @@ class TargetValueRegression(GradientUpdater):
     Example:
         >>> TargetValueRegression(lr=2e-3, iterations=8, batches=4)
     """
+
+    settings = {
+        "lr": _s.LR,
+        "gradient_clip": _s.CLIP,
+        "trace_decay": _s.TRACE_DECAY,
+        "iterations": _s.Setting("int", 1, meaning="passes of critic regression per update"),
+        "batches": _s.Setting("int", 1, meaning="critic mini-batches per pass"),
+        "target_update": _s.Setting("float", 0.0, 1.0, meaning="step of the target critic"),
+    }
 
     def __init__(
         self,

@@ -17,6 +17,8 @@ from typing import Any
 
 import numpy as np
 
+from ivy_rl import settings as _s
+
 __all__ = [
     "NoNoise",
     "NormalNoise",
@@ -25,6 +27,10 @@ __all__ = [
     "EXPLORATIONS",
     "make_exploration",
 ]
+
+
+_START = _s.Setting("int", 0, meaning="steps of random actions at the start")
+SCALE = _s.Setting("float", 0.0, meaning="scale of the exploration noise")
 
 
 class NoNoise:
@@ -38,6 +44,8 @@ class NoNoise:
         >>> NoNoise()(np.zeros((2, 1)), rng)
         array([[0.], [0.]])
     """
+
+    settings = {"start_steps": _START}
 
     #: the name of the exploration in the flat settings (``exploration='none'``)
     name = "none"
@@ -77,6 +85,8 @@ class NormalNoise(NoNoise):
         >>> NormalNoise(0.1)(actions, rng)
     """
 
+    settings = {"scale": SCALE, "start_steps": _START}
+
     name = "normal"
 
     def __init__(self, scale: float = 0.1, *, start_steps: int = 0) -> None:
@@ -103,6 +113,8 @@ class OrnsteinUhlenbeckNoise(NoNoise):
     Example:
         >>> OrnsteinUhlenbeckNoise(scale=0.2, theta=0.15, dt=0.01)(actions, rng)
     """
+
+    settings = {"scale": SCALE, "start_steps": _START}
 
     name = "ornstein_uhlenbeck"
 
@@ -153,6 +165,13 @@ class EpsilonGreedy(NoNoise):
         >>> actions = explore(greedy, rng, num_actions=2, steps=500)
     """
 
+    settings = {
+        "start": _s.Setting("float", 0.0, 1.0, meaning="initial epsilon"),
+        "end": _s.Setting("float", 0.0, 1.0, meaning="final epsilon"),
+        "decay_steps": _s.Setting("int", 0, meaning="steps of epsilon's linear decay"),
+        "start_steps": _START,
+    }
+
     name = "epsilon_greedy"
 
     def __init__(
@@ -202,7 +221,9 @@ EXPLORATIONS = {
 }
 
 
-def make_exploration(name: str, scale: float = 0.1, *, start_steps: int = 0) -> NoNoise:
+def make_exploration(
+    name: str = "normal", scale: float = 0.1, *, start_steps: int = 0
+) -> NoNoise:
     """An exploration noise by name: ``'normal'``, ``'ornstein_uhlenbeck'`` or ``'none'``
     (``start_steps``: steps of uniformly random actions first).
 
@@ -221,3 +242,10 @@ def _start_steps(value: Any, who: str) -> int:
     if isinstance(value, bool) or int(value) != value or value < 0:
         raise ValueError(f"{who}: start_steps must be an integer >= 0, got {value!r}")
     return int(value)
+
+
+make_exploration.settings = {
+    "name": _s.Setting("str", choices=tuple(EXPLORATIONS), meaning="the exploration noise"),
+    "scale": SCALE,
+    "start_steps": _START,
+}

@@ -30,6 +30,7 @@ import numpy as np
 
 import ivy
 from ivy.typing import Array, Framework, Nest
+from ivy_rl import settings as _s
 from ivy_rl.distributions import Categorical, Deterministic, Normal, SquashedNormal
 
 __all__ = [
@@ -633,6 +634,23 @@ class ActorCriticModel:
         >>> model = ActorCriticModel(hidden_sizes=(64, 64), activation="tanh")
         >>> agent = ivy_rl.PPO(model=model)
     """
+
+    settings = {
+        "hidden_sizes": _s.Setting("sizes", meaning="hidden sizes of the actor's torso"),
+        "critic_hidden_sizes": _s.CRITIC_SIZES,
+        "activation": _s.ACTIVATION,
+        "head": _s.Setting(
+            "str",
+            optional=True,
+            choices=("gaussian", "squashed_gaussian", "categorical"),
+            meaning="policy head (None: by action space)",
+        ),
+        "log_std_init": _s.Setting("float", meaning="initial log std of Gaussian heads"),
+        "normalize_observations": _s.Setting(
+            "bool", meaning="normalise observations by their running mean and std"
+        ),
+        "normalize_returns": _s.Setting("bool", meaning="the critic predicts normalised returns"),
+    }
 
     def __init__(
         self,

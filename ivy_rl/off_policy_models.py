@@ -23,6 +23,7 @@ import numpy as np
 
 import ivy
 from ivy.typing import Framework
+from ivy_rl import settings as _s
 from ivy_rl.critics import (
     BranchingQHead,
     CriticEnsemble,
@@ -70,6 +71,19 @@ class ActorQModel:
     Example:
         >>> ActorQModel(policy="deterministic", critics=2)  # TD3's
     """
+
+    settings = {
+        "hidden_sizes": _s.SIZES,
+        "critic_hidden_sizes": _s.CRITIC_SIZES,
+        "activation": _s.ACTIVATION,
+        "normalize_observations": _s.Setting(
+            "bool", meaning="normalise observations by their running mean and std"
+        ),
+        "target_tau": _s.Setting("float", 0.0, 1.0, open_low=True, meaning="soft update of targets"),
+        "v_min": _s.Setting("float", meaning="lowest value of the categorical critic's support"),
+        "v_max": _s.Setting("float", meaning="highest value of the categorical critic's support"),
+        "atoms": _s.Setting("int", 2, meaning="atoms of the categorical critic's support"),
+    }
 
     def __init__(
         self,
@@ -218,6 +232,14 @@ class QModel:
     Example:
         >>> ivy_rl.agents.DQN(model=QModel((64, 64), dueling=False))
     """
+
+    settings = {
+        "hidden_sizes": _s.SIZES,
+        "activation": _s.ACTIVATION,
+        "dueling": _s.Setting("bool", meaning="a dueling head"),
+        "normalize_observations": ActorQModel.settings["normalize_observations"],
+        "target_tau": ActorQModel.settings["target_tau"],
+    }
 
     samples = False
     targets = ("q",)

@@ -34,6 +34,7 @@ import numpy as np
 
 import ivy
 from ivy.typing import Array, Nest
+from ivy_rl import settings as _s
 from ivy_rl.critics import project_categorical
 from ivy_rl.schedules import as_schedule
 from ivy_rl.updaters import GradientUpdater, at_rate
@@ -65,6 +66,7 @@ class OffPolicyUpdater(GradientUpdater):
 
     #: the part of the variables this updater trains
     part = "actor"
+    settings = {"lr": _s.LR, "gradient_clip": _s.CLIP}
 
     def initialize(
         self, xp: Any, model: Any = None, *, dtype: Any = None, device: Any = None
@@ -174,6 +176,15 @@ class TwinCriticSoftPolicyGradient(OffPolicyUpdater):
         >>> TwinCriticSoftPolicyGradient(lr=3e-4, initial_temperature=0.1)
     """
 
+    settings = {
+        **OffPolicyUpdater.settings,
+        "initial_temperature": _s.Setting("float", 0.0, open_low=True, meaning="initial alpha"),
+        "temperature_lr": _s.Setting("schedule", 0.0, meaning="learning rate of log alpha"),
+        "target_entropy": _s.Setting(
+            "float", optional=True, meaning="the entropy alpha steers to (None: -action size)"
+        ),
+    }
+
     def __init__(
         self,
         lr: Any = 1e-3,
@@ -263,6 +274,19 @@ class MaximumAPosterioriPolicyOptimization(OffPolicyUpdater):
     Example:
         >>> MaximumAPosterioriPolicyOptimization(num_samples=20, epsilon=0.1)
     """
+
+    settings = {
+        **OffPolicyUpdater.settings,
+        "num_samples": _s.Setting("int", 1, meaning="actions sampled per state"),
+        "epsilon": _s.Setting("float", 0.0, open_low=True, meaning="E-step's KL bound"),
+        "epsilon_mean": _s.Setting("float", 0.0, open_low=True, meaning="KL bound of the mean"),
+        "epsilon_std": _s.Setting("float", 0.0, open_low=True, meaning="KL bound of the scale"),
+        "initial_log_temperature": _s.Setting("float", meaning="initial temperature dual"),
+        "initial_log_alpha_mean": _s.Setting("float", meaning="initial dual of the mean"),
+        "initial_log_alpha_std": _s.Setting("float", meaning="initial dual of the scale"),
+        "min_log_dual": _s.Setting("float", meaning="lower bound of the duals"),
+        "dual_lr": _s.Setting("schedule", 0.0, open_low=True, meaning="duals' learning rate"),
+    }
 
     def __init__(
         self,
@@ -458,6 +482,12 @@ class TwinCriticDeterministicQLearning(DeterministicQLearning):
         >>> TwinCriticDeterministicQLearning(target_noise=0.2, target_noise_clip=0.5)
     """
 
+    settings = {
+        **OffPolicyUpdater.settings,
+        "target_noise": _s.Setting("float", 0.0, meaning="target smoothing noise"),
+        "target_noise_clip": _s.Setting("float", 0.0, meaning="bound of the target noise"),
+    }
+
     def __init__(
         self,
         lr: Any = 1e-3,
@@ -531,6 +561,11 @@ class ExpectedSARSA(DeterministicQLearning):
         num_samples: actions sampled per next state.
     """
 
+    settings = {
+        **OffPolicyUpdater.settings,
+        "num_samples": MaximumAPosterioriPolicyOptimization.settings["num_samples"],
+    }
+
     def __init__(self, lr: Any = 3e-4, gradient_clip: float = 0.0, num_samples: int = 20) -> None:
         super().__init__(lr, gradient_clip)
         self.num_samples = int(num_samples)
@@ -565,6 +600,8 @@ class QLearning(DeterministicQLearning):
     Example:
         >>> ivy_rl.agents.DQN(updater=QLearning(lr=1e-3, double=False))
     """
+
+    settings = {**OffPolicyUpdater.settings, "double": _s.Setting("bool", meaning="double Q")}
 
     part = "q"
 

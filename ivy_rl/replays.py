@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from ivy_rl import settings as _s
 from ivy_rl.buffers import TransitionReplay
 
 __all__ = ["Segment", "Transitions", "Rollouts"]
@@ -39,6 +40,13 @@ class Rollouts:
     Example:
         >>> APG(replay=Rollouts(batch_size=16, horizon=32, update_every=1))
     """
+
+    settings = {
+        "batch_size": _s.Setting("int", 1, meaning="rollouts per update"),
+        "horizon": _s.Setting("int", 1, meaning="steps of the differentiable rollouts"),
+        "update_every": _s.Setting("int", 1, meaning="trainer steps between updates"),
+        "discount": _s.DISCOUNT,
+    }
 
     def __init__(
         self,
@@ -77,6 +85,16 @@ class Transitions(TransitionReplay):
     Example:
         >>> SAC(replay=Transitions(100_000, batch_size=128, update_every=50))
     """
+
+    settings = {
+        "size": _s.Setting("int", 1, meaning="transitions kept by the replay"),
+        "return_steps": _s.Setting("int", 1, meaning="n of the n-step returns"),
+        "batch_size": _s.Setting("int", 1, meaning="transitions per optimisation step"),
+        "batch_iterations": _s.Setting("int", 1, meaning="optimisation steps per update"),
+        "discount": _s.DISCOUNT,
+        "update_after": _s.Setting("int", 0, meaning="steps before the first update"),
+        "update_every": _s.Setting("int", 1, meaning="environment steps between updates"),
+    }
 
     def __init__(
         self,
@@ -119,6 +137,17 @@ class Segment:
     Example:
         >>> seg = Segment(size=2048, batch_size=64, batch_iterations=10)
     """
+
+    settings = {
+        "size": _s.Setting("int", 1, meaning="steps per worker between updates"),
+        "batch_size": _s.Setting(
+            "int", 1, optional=True, meaning="transitions per mini-batch (None: the segment)"
+        ),
+        "batch_iterations": _s.Setting("int", 1, meaning="passes over the segment per update"),
+        "discount": _s.DISCOUNT,
+        "trace_decay": _s.TRACE_DECAY,
+        "normalize_advantages": _s.Setting("bool", meaning="standardise each segment's advantages"),
+    }
 
     def __init__(
         self,

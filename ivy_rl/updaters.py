@@ -25,6 +25,7 @@ from typing import Any
 import ivy
 from ivy.nest import map_nest, multi_map_nest
 from ivy.typing import Array, Nest
+from ivy_rl import settings as _s
 from ivy_rl.schedules import Schedule, as_schedule
 
 __all__ = [
@@ -224,6 +225,7 @@ class GradientUpdater:
     """
 
     has_optimizer = True
+    settings = {"lr": _s.LR, "gradient_clip": _s.CLIP}
 
     def __init__(self, lr: float | str | Schedule = 3e-4, gradient_clip: float = 0.0) -> None:
         schedule = as_schedule(lr, name=f"{type(self).__name__}: lr")
@@ -302,6 +304,10 @@ class StochasticPolicyGradient(GradientUpdater):
     """
 
     needs_distribution = False  # whether the replay keeps the acting policy's parameters
+    settings = {
+        **GradientUpdater.settings,
+        "entropy_coeff": _s.Setting("float", 0.0, meaning="weight of the entropy bonus"),
+    }
 
     def __init__(
         self, lr: float = 3e-4, entropy_coeff: float = 0.0, gradient_clip: float = 0.0
@@ -330,6 +336,14 @@ class ClippedRatio(StochasticPolicyGradient):
     Example:
         >>> ivy_rl.PPO(actor_updater=ClippedRatio(lr=1e-3, ratio_clip=0.2, kl_threshold=None))
     """
+
+    settings = {
+        **StochasticPolicyGradient.settings,
+        "ratio_clip": _s.Setting("schedule", 0.0, open_low=True, meaning="PPO's epsilon"),
+        "kl_threshold": _s.Setting(
+            "float", optional=True, meaning="KL that stops PPO's actor (None: never)"
+        ),
+    }
 
     def __init__(
         self,
@@ -381,6 +395,16 @@ class TrustRegionPolicyGradient:
 
     has_optimizer = False
     needs_distribution = True
+    settings = {
+        "max_kl": _s.Setting("float", 0.0, open_low=True, meaning="trust-region radius"),
+        "cg_steps": _s.Setting("int", 1, meaning="conjugate-gradient iterations"),
+        "damping": _s.Setting("float", 0.0, meaning="damping of Fisher-vector products"),
+        "backtrack_steps": _s.Setting("int", 1, meaning="candidate steps of the line search"),
+        "backtrack_coefficient": _s.Setting(
+            "float", 0.0, 1.0, open_low=True, open_high=True, meaning="shrink between candidates"
+        ),
+        "entropy_coeff": StochasticPolicyGradient.settings["entropy_coeff"],
+    }
 
     def __init__(
         self,

@@ -16,7 +16,14 @@ from ivy_rl.agents.apg import APG
 from ivy_rl.agents.baselines import Constant, Uniform
 from ivy_rl.agents.d4pg import D4PG
 from ivy_rl.agents.ddpg import DDPG
-from ivy_rl.agents.defaults import DEFAULTS, check_setting, defaults_for, task_family
+from ivy_rl.agents.defaults import (
+    DEFAULTS,
+    SETTINGS,
+    check_setting,
+    defaults_for,
+    settings_table,
+    task_family,
+)
 from ivy_rl.agents.dqn import DQN, BranchingDQN
 from ivy_rl.agents.fusion import FUSION_LEVELS, compiled_scan_unrolls
 from ivy_rl.agents.mpo import MPO
@@ -25,6 +32,7 @@ from ivy_rl.agents.sac import SAC
 from ivy_rl.agents.shac import SHAC
 from ivy_rl.agents.td3 import TD3
 from ivy_rl.agents.trpo import TRPO
+from ivy_rl.settings import Setting
 
 __all__ = [
     "Agent",
@@ -46,6 +54,8 @@ __all__ = [
     "make",
     "DEFAULTS",
     "task_family",
+    "settings_table",
+    "check_setting",
     "compiled_scan_unrolls",
     "FUSION_LEVELS",
 ]
@@ -68,19 +78,31 @@ AGENTS: dict[str, type[Agent]] = {
 }
 
 
-def make(name: str, *, environment: Any = None, **settings: Any) -> Agent:
-    """An agent by name (``'PPO'``, ``'A2C'``, ``'TRPO'``, ``'Uniform'``, ``'Constant'``;
-    case-insensitive) with the defaults of the environment's task family
-    (:data:`~ivy_rl.agents.defaults.DEFAULTS`), overridden by ``settings``.
+def _resolve(name: str) -> str:
+    """The key of :data:`AGENTS` for ``name`` (case-insensitive); a ValueError otherwise."""
+    by_lower = {key.lower(): key for key in AGENTS}
+    key = by_lower.get(str(name).lower())
+    if key is None:
+        raise ValueError(f"unknown agent {name!r}; available agents: {', '.join(AGENTS)}")
+    return key
 
-    Every setting is checked (type and range) before anything is built, and the error names
-    it; ``agent.config`` holds every value used.
+
+def make(name: str, *, environment: Any = None, **settings: Any) -> Agent:
+    """An agent by name (``'PPO'``, ``'SAC'``, ``'DQN'``, ...; case-insensitive) with the
+    defaults of the environment's task family (:data:`~ivy_rl.agents.defaults.DEFAULTS`),
+    overridden by ``settings``.
+
+    ``make(name)`` is ``AGENTS[name]()``; with an environment, the family's row may change
+    some defaults (``python -m ivy_rl.agents.defaults SAC Pendulum-v1`` lists them). Every
+    setting is checked once (type and range, declared by the agent's parts) before anything is
+    built, and the error names it; ``agent.config`` holds every value used.
 
     Args:
         name: the agent's name.
         environment: a Gymnasium id (or environment) whose family's defaults apply; None: the
             agent's own defaults.
-        settings: settings that override the defaults (JSON values, as ``--agent-kwargs``).
+        settings: settings that override the defaults (JSON values, as ``--agent-kwargs``),
+            or parts (``model=``, ``replay=``, ...).
 
     Returns:
         The agent, not initialized.
@@ -89,10 +111,15 @@ def make(name: str, *, environment: Any = None, **settings: Any) -> Agent:
         >>> make("PPO", environment="CartPole-v1").config["segment_size"]
         32
     """
-    by_lower = {key.lower(): key for key in AGENTS}
-    key = by_lower.get(str(name).lower())
-    if key is None:
-        raise ValueError(f"unknown agent {name!r}; available agents: {', '.join(AGENTS)}")
-    merged = {**defaults_for(key, environment), **settings}
-    checked = {k: check_setting(k, v) for k, v in merged.items()}
-    return AGENTS[key](**checked)
+    key = _resolve(name)
+    return AGENTS[key](**{**defaults_for(key, environment), **settings})
+
+
+make.resolve = _resolve
+
+# every agent's flat settings, derived from their parts, for check_setting
+for _cls in AGENTS.values():
+    if _cls.parts is not None or _cls.own_settings:
+        for _name, (_spec, _, _) in _cls.settings().items():
+            SETTINGS.setdefault(_name, _spec)
+SETTINGS.setdefault("value", Setting("any", meaning="Constant's action"))

@@ -41,7 +41,7 @@ import numpy as np
 from ivy.nest import map_nest, multi_map_nest
 from ivy.typing import Array
 from ivy_rl.agents.agent import Agent
-from ivy_rl.agents.fusion import check_fusion, fusion_level
+from ivy_rl.agents.fusion import FUSION, check_fusion, fusion_level
 from ivy_rl.models import ActorCriticModel
 from ivy_rl.normalizers import MeanStd, ReturnNormalizer, _fold_moments, _standard_deviation
 from ivy_rl.replays import Segment
@@ -113,27 +113,9 @@ class A2C(Agent):
     """
 
     learns = True
-    _defaults: dict[str, Any] = dict(
-        hidden_sizes=(64, 64),
-        critic_hidden_sizes=None,
-        activation="tanh",
-        head=None,
-        log_std_init=0.0,
-        normalize_observations=True,
-        normalize_returns=False,
-        segment_size=256,
-        batch_size=None,
-        critic_iterations=40,
-        discount=0.99,
-        trace_decay=0.95,
-        normalize_advantages=True,
-        actor_lr=3e-4,
-        entropy_coeff=0.0,
-        actor_gradient_clip=0.0,
-        critic_lr=1e-3,
-        critic_gradient_clip=0.0,
-        fusion="auto",
-    )
+    own_settings = {"fusion": FUSION}
+    #: A2C's defaults where they differ from its parts' (see :meth:`Agent.settings`)
+    _defaults: dict[str, Any] = dict(segment_size=256, critic_iterations=40, fusion="auto")
     scheduled = ("actor_lr", "critic_lr")
     _MODEL = (
         "hidden_sizes",
@@ -179,32 +161,18 @@ class A2C(Agent):
         critic_updater: Any = None,
         **settings: Any,
     ) -> None:
-        name = type(self).__name__
         given = {
             "model": model,
             "replay": replay,
             "actor_updater": actor_updater,
             "critic_updater": critic_updater,
         }
-        config = self._checked_settings(settings, f", and its parts {', '.join(self.parts)}")
-        built = {}
-        for role, (cls, names) in self.parts.items():
-            part = given[role]
-            if part is None:
-                part = cls(**{param: config[flat] for flat, param in names.items()})
-            else:
-                clash = sorted(set(settings) & set(names))
-                if clash:
-                    raise TypeError(
-                        f"{name}: settings {clash} belong to the {role} given; set them on it"
-                    )
-                for flat, param in names.items():
-                    if hasattr(part, param):
-                        config[flat] = getattr(part, param)
-            built[role] = part
+        config, built = self._composed(
+            {**settings, **{role: part for role, part in given.items() if part is not None}}
+        )
         self.model, self.replay = built["model"], built["replay"]
         self.actor_updater, self.critic_updater = built["actor_updater"], built["critic_updater"]
-        check_fusion(name, config["fusion"])
+        check_fusion(type(self).__name__, config["fusion"])
         super().__init__(**config)
 
     # ------------------------------------------------------------------------------------------

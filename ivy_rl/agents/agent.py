@@ -60,6 +60,7 @@ from ivy.stateful.checkpoint import flat_dict_to_nest, nest_to_flat_dict
 from ivy.typing import Framework, Nest
 from ivy_rl.models import check_observation_space, space_kind
 from ivy_rl.schedules import as_schedule, is_schedule
+from ivy_rl.settings import Setting, check, declared
 
 __all__ = ["Agent"]
 
@@ -82,13 +83,68 @@ class Agent:
     #: the settings this agent reads at the run's progress (a schedule or a number each)
     scheduled: tuple[str, ...] = ()
 
-    #: settings of a base class that this agent does not read
-    _unused: tuple[str, ...] = ()
-
     #: the agent's parts, as in Tonic: ``{role: (factory, {flat setting: the factory's
     #: parameter})}``; a part given to the constructor (``SAC(model=...)``) replaces the one the
     #: flat settings would build. None: an agent without parts.
     parts: dict[str, tuple[Any, dict[str, str]]] | None = None
+
+    #: settings the agent reads itself rather than a part (``fusion``, TD3's
+    #: ``policy_delay``): ``{name: Setting}``, their defaults in ``_defaults``
+    own_settings: dict[str, Setting] = {}
+
+    #: the agent's defaults where they differ from its parts' (each part's default is its
+    #: constructor's): ``{flat setting: value}``, merged along the class hierarchy
+    _defaults: dict[str, Any] = {}
+
+    @classmethod
+    def settings(cls) -> dict[str, tuple[Setting, Any, str | None]]:
+        """The agent's flat settings, derived from its parts: ``{name: (Setting, default,
+        role)}`` (role: the part the setting builds, None for the agent's own settings).
+
+        Each part declares its settings once (``settings`` of its class: type, bounds,
+        meaning; the default is its constructor's); the agent maps them to flat names in
+        :attr:`parts` and states the defaults that differ from its parts' in ``_defaults``.
+
+        Example:
+            >>> spec, default, role = SAC.settings()["batch_size"]
+            >>> default, role
+            (256, 'replay')
+        """
+        table: dict[str, tuple[Setting, Any, str | None]] = {}
+        for role, (factory, names) in (cls.parts or {}).items():
+            spec = declared(factory)
+            for flat, param in names.items():
+                if param not in spec:
+                    raise TypeError(
+                        f"{cls.__name__}: the {role}'s parameter {param!r} (setting {flat!r}) "
+                        "is not declared in its class's settings"
+                    )
+                table.setdefault(flat, (*spec[param], role))
+        defaults: dict[str, Any] = {}
+        for klass in reversed(cls.__mro__):
+            for name, spec in vars(klass).get("own_settings", {}).items():
+                table[name] = (spec, None, None)
+            defaults.update(vars(klass).get("_defaults", {}))
+        for name, value in defaults.items():
+            if name in table:
+                table[name] = (table[name][0], value, table[name][2])
+        return table
+
+    @classmethod
+    def _checked_settings(cls, settings: dict[str, Any], also: str = "") -> dict[str, Any]:
+        """The defaults of :meth:`settings` overridden by ``settings`` (an unknown one is a
+        TypeError that lists the known ones, then ``also``), each checked once
+        (:func:`ivy_rl.settings.check`)."""
+        table = cls.settings()
+        unknown = sorted(set(settings) - set(table))
+        if unknown:
+            raise TypeError(
+                f"{cls.__name__} got unknown settings {unknown}; its settings are "
+                f"{sorted(table)}{also}"
+            )
+        config = {name: default for name, (_, default, _) in table.items()}
+        config.update(settings)
+        return {k: check(k, table[k][0], v) for k, v in config.items()}
 
     @classmethod
     def _composed(cls, settings: dict[str, Any]) -> tuple[dict[str, Any], dict[str, Any]]:
@@ -130,27 +186,6 @@ class Agent:
         (``{'lr': ...}`` for an updater whose ``lr`` is the flat ``actor_lr``)."""
         names = (self.parts or {})[role][1]
         return {param: scheduled[flat] for flat, param in names.items() if flat in scheduled}
-
-    @classmethod
-    def _checked_settings(cls, settings: dict[str, Any], also: str = "") -> dict[str, Any]:
-        """The ``_defaults`` of every class in the MRO, less ``_unused``, overridden by
-        ``settings`` (an unknown one is a TypeError that lists the known ones, then ``also``),
-        each checked by :func:`~ivy_rl.agents.defaults.check_setting`."""
-        from ivy_rl.agents.defaults import check_setting
-
-        config: dict[str, Any] = {}
-        for klass in reversed(cls.__mro__):
-            config.update(getattr(klass, "_defaults", {}))
-        for key in cls._unused:
-            config.pop(key, None)
-        unknown = sorted(set(settings) - set(config))
-        if unknown:
-            raise TypeError(
-                f"{cls.__name__} got unknown settings {unknown}; its settings are "
-                f"{sorted(config)}{also}"
-            )
-        config.update(settings)
-        return {k: check_setting(k, v) for k, v in config.items()}
 
     def __init__(self, **config: Any) -> None:
         name = type(self).__name__

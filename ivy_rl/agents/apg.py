@@ -45,7 +45,7 @@ class APG(DifferentiableAgent):
         >>> APG(horizon=64, actor_lr=1e-3)
     """
 
-    _defaults: dict[str, Any] = dict(horizon=64, batch_size=64, update_every=16, actor_lr=1e-3)
+    _defaults: dict[str, Any] = dict(horizon=64)
 
     def _build_learner(self) -> None:
         self.v = self._placed({"actor": self.actor.v})

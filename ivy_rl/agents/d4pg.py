@@ -37,7 +37,7 @@ class D4PG(DDPG):
         >>> D4PG(v_min=-1000.0, v_max=0.0, atoms=51)
     """
 
-    _defaults: dict[str, Any] = dict(v_min=-150.0, v_max=150.0, atoms=51, return_steps=5)
+    _defaults: dict[str, Any] = dict(return_steps=5)
     parts = {
         **DDPG.parts,
         "model": (

@@ -18,7 +18,6 @@ Example:
 from __future__ import annotations
 
 from functools import partial
-from typing import Any
 
 from ivy_rl.agents.off_policy import OffPolicyAgent
 from ivy_rl.explorations import make_exploration
@@ -69,7 +68,6 @@ class DDPG(OffPolicyAgent):
     """
 
     supported_action_spaces = ("Box",)
-    _defaults: dict[str, Any] = dict(exploration="normal", exploration_scale=0.1)
     parts = {
         "model": (partial(ActorQModel, policy="deterministic"), MODEL),
         "replay": (Transitions, REPLAY),

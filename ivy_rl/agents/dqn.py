@@ -55,18 +55,7 @@ class DQN(OffPolicyAgent):
     """
 
     supported_action_spaces = ("Discrete",)
-    _unused = ("actor_lr", "critic_hidden_sizes")
-    _defaults: dict[str, Any] = dict(
-        hidden_sizes=(64, 64),
-        dueling=True,
-        double=True,
-        epsilon_start=1.0,
-        epsilon_end=0.05,
-        epsilon_decay_steps=10_000,
-        start_steps=0,
-        batch_size=128,
-        target_tau=0.01,
-    )
+    _defaults: dict[str, Any] = dict(start_steps=0, batch_size=128)
     parts = {
         "model": (
             QModel,

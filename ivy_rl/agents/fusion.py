@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import ivy
 from ivy.typing import Framework
+from ivy_rl.settings import Setting
 
 __all__ = ["FUSION_LEVELS", "compiled_scan_unrolls", "check_fusion", "fusion_level"]
 
@@ -70,3 +71,11 @@ def fusion_level(fusion: str, *, compiled: bool, f: Framework = None) -> str:
     if fusion != "auto":
         return check_fusion("fusion_level", fusion)
     return "steps" if compiled and compiled_scan_unrolls(f=f) else "update"
+
+
+#: the setting ``fusion`` of the agents that compile their updates
+FUSION = Setting(
+    "str",
+    choices=FUSION_LEVELS,
+    meaning="what one compiled function holds ('auto': by the framework's compiled_loops)",
+)

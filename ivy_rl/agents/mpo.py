@@ -19,7 +19,6 @@ Example:
 from __future__ import annotations
 
 from functools import partial
-from typing import Any
 
 from ivy_rl.agents.ddpg import DDPG, MODEL, UPDATER
 from ivy_rl.explorations import NoNoise
@@ -61,21 +60,7 @@ class MPO(DDPG):
         >>> MPO(hidden_sizes=(256, 256), num_samples=20)
     """
 
-    _unused = ("exploration", "exploration_scale")
     scheduled = ("actor_lr", "critic_lr", "dual_lr")
-    _defaults: dict[str, Any] = dict(
-        num_samples=20,
-        epsilon=0.1,
-        epsilon_mean=1e-3,
-        epsilon_std=1e-6,
-        initial_log_temperature=1.0,
-        initial_log_alpha_mean=1.0,
-        initial_log_alpha_std=10.0,
-        min_log_dual=-18.0,
-        dual_lr=1e-2,
-        actor_lr=3e-4,
-        critic_lr=3e-4,
-    )
     parts = {
         "model": (partial(ActorQModel, policy="gaussian"), MODEL),
         "replay": DDPG.parts["replay"],

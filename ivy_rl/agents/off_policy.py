@@ -25,7 +25,7 @@ import numpy as np
 
 import ivy
 from ivy_rl.agents.agent import Agent
-from ivy_rl.agents.fusion import check_fusion, fusion_level
+from ivy_rl.agents.fusion import FUSION, check_fusion, fusion_level
 from ivy_rl.buffers import n_step_batch
 from ivy_rl.models import polyak_update
 from ivy_rl.normalizers import MeanStd
@@ -57,25 +57,9 @@ class OffPolicyAgent(Agent):
 
     learns = True
     scheduled: tuple[str, ...] = ("actor_lr", "critic_lr")
-    _defaults: dict[str, Any] = dict(
-        hidden_sizes=(256, 256),
-        critic_hidden_sizes=None,
-        activation="relu",
-        replay_size=1_000_000,
-        return_steps=1,
-        batch_size=256,
-        start_steps=1000,
-        update_after=1000,
-        update_every=50,
-        batch_iterations=50,
-        discount=0.99,
-        actor_lr=1e-3,
-        critic_lr=1e-3,
-        target_tau=0.005,
-        gradient_clip=0.0,
-        normalize_observations=True,
-        fusion="auto",
-    )
+    own_settings = {"fusion": FUSION}
+    #: the off-policy agents' defaults where they differ from their parts'
+    _defaults: dict[str, Any] = dict(start_steps=1000, fusion="auto")
 
     #: the parts' roles and the prefix of their logs
     _updater_logs: dict[str, str] = {"critic_updater": "critic", "actor_updater": "actor"}

@@ -44,16 +44,9 @@ class PPO(A2C):
         >>> PPO(ratio_clip=0.2, kl_threshold=0.015, epochs=10, batch_size=64)
     """
 
-    _unused = ("critic_iterations",)
     scheduled = ("actor_lr", "critic_lr", "ratio_clip")
     _defaults: dict[str, Any] = dict(
-        segment_size=2048,
-        batch_size=64,
-        epochs=10,
-        ratio_clip=0.2,
-        kl_threshold=0.015,
-        actor_gradient_clip=0.5,
-        critic_gradient_clip=0.5,
+        segment_size=2048, batch_size=64, actor_gradient_clip=0.5, critic_gradient_clip=0.5
     )
     parts = {
         **A2C.parts,

@@ -18,7 +18,6 @@ Example:
 from __future__ import annotations
 
 from functools import partial
-from typing import Any
 
 from ivy_rl.agents.ddpg import DDPG, MODEL, UPDATER
 from ivy_rl.explorations import NoNoise
@@ -48,11 +47,7 @@ class SAC(DDPG):
         >>> SAC(initial_temperature=0.1, temperature_lr=3e-4)
     """
 
-    _unused = ("exploration", "exploration_scale")
     scheduled = ("actor_lr", "critic_lr", "temperature_lr")
-    _defaults: dict[str, Any] = dict(
-        initial_temperature=1.0, temperature_lr=1e-3, target_entropy=None
-    )
     parts = {
         "model": (
             partial(ActorQModel, policy="squashed_gaussian", critics=2, targets=("critic",)),

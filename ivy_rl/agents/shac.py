@@ -60,20 +60,7 @@ class SHAC(DifferentiableAgent):
     """
 
     scheduled: tuple[str, ...] = ("actor_lr", "critic_lr")
-    _defaults: dict[str, Any] = dict(
-        horizon=32,
-        batch_size=64,
-        update_every=16,
-        actor_lr=2e-3,
-        critic_hidden_sizes=None,
-        critic_lr=2e-3,
-        critic_gradient_clip=0.0,
-        trace_decay=0.95,
-        critic_iterations=8,
-        critic_batches=4,
-        target_update=0.8,
-        normalize_returns=True,
-    )
+    _defaults: dict[str, Any] = dict(actor_lr=2e-3)
 
     parts = {
         **DifferentiableAgent.parts,

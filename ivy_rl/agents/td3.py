@@ -21,6 +21,7 @@ from ivy_rl.off_policy_updaters import (
     TwinCriticDeterministicPolicyGradient,
     TwinCriticDeterministicQLearning,
 )
+from ivy_rl.settings import Setting
 
 __all__ = ["TD3"]
 
@@ -42,7 +43,10 @@ class TD3(DDPG):
         >>> TD3(hidden_sizes=(64, 64), policy_delay=2)
     """
 
-    _defaults: dict[str, Any] = dict(policy_delay=2, target_noise=0.2, target_noise_clip=0.5)
+    own_settings = {
+        "policy_delay": Setting("int", 1, meaning="critic steps per actor step"),
+    }
+    _defaults: dict[str, Any] = dict(policy_delay=2)
     parts = {
         **DDPG.parts,
         "model": (partial(ActorQModel, policy="deterministic", critics=2), MODEL),

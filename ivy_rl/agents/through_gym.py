@@ -35,7 +35,7 @@ from typing import Any
 import numpy as np
 
 from ivy_rl.agents.agent import Agent
-from ivy_rl.agents.fusion import check_fusion, fusion_level
+from ivy_rl.agents.fusion import FUSION, check_fusion, fusion_level
 from ivy_rl.differentiable_parts import ActorValueModel, AnalyticPolicyGradient
 from ivy_rl.explorations import NormalNoise
 from ivy_rl.replays import Rollouts
@@ -116,18 +116,8 @@ class DifferentiableAgent(Agent):
     differentiable = True
     scheduled: tuple[str, ...] = ("actor_lr",)
     supported_action_spaces = ("Box",)
-    _defaults: dict[str, Any] = dict(
-        hidden_sizes=(64, 64),
-        activation="tanh",
-        actor_lr=1e-3,
-        actor_gradient_clip=1.0,
-        discount=0.99,
-        batch_size=64,
-        horizon=32,
-        update_every=16,
-        exploration_noise=0.1,
-        fusion="auto",
-    )
+    own_settings = {"fusion": FUSION}
+    _defaults: dict[str, Any] = dict(fusion="auto")
 
     #: the flat settings of the parts (SHAC adds its critic's)
     parts = {

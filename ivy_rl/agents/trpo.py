@@ -10,8 +10,6 @@ Example:
 
 from __future__ import annotations
 
-from typing import Any
-
 from ivy_rl.agents.a2c import A2C
 from ivy_rl.updaters import TrustRegionPolicyGradient
 
@@ -43,14 +41,6 @@ class TRPO(A2C):
             >>> TRPO(max_kl=0.01, cg_steps=10, backtrack_steps=10)
     """
 
-    _unused = ("actor_lr", "actor_gradient_clip")
-    _defaults: dict[str, Any] = dict(
-        max_kl=0.01,
-        cg_steps=10,
-        damping=0.1,
-        backtrack_steps=10,
-        backtrack_coefficient=0.8,
-    )
     _TRUST_REGION = ("max_kl", "cg_steps", "damping", "backtrack_steps", "backtrack_coefficient")
     parts = {
         **A2C.parts,
