@@ -161,8 +161,13 @@ def check(actual, expected, backend: str, *, dtype=None, signed_zeros=False, **o
 FD_STEP = 1e-5  # central differences of float64 functions
 
 
-def native_value_and_grads(backend, fn, arrays, weights):
-    """``sum(fn(*arrays) * weights)`` and its gradients, by the framework's own autodiff."""
+def native_value_and_grads(backend, fn, arrays, weights, jit=True):
+    """``sum(fn(*arrays) * weights)`` and its gradients, by the framework's own autodiff.
+
+    On jax the gradient is jitted by default: one compilation instead of one dispatch per
+    primitive, the faster for large programs (dynamics). ``jit=False`` runs it eagerly, the
+    faster for many small functions called once each (jax caches each primitive's compilation
+    across them, where a jitted program is compiled per function and input shape)."""
     if backend == "torch":
         import torch
 
@@ -176,9 +181,9 @@ def native_value_and_grads(backend, fn, arrays, weights):
         def loss(*inputs):
             return jnp.sum(fn(*inputs) * weights)
 
-        # jitted: one compilation instead of one per primitive (the eager path is tested too,
-        # by the forward passes of the finite differences)
-        value_and_grad = jax.jit(jax.value_and_grad(loss, argnums=tuple(range(len(arrays)))))
+        value_and_grad = jax.value_and_grad(loss, argnums=tuple(range(len(arrays))))
+        if jit:
+            value_and_grad = jax.jit(value_and_grad)
         value, grads = value_and_grad(*[_jax_native(np.asarray(a)) for a in arrays])
         return float(value), [np.asarray(g) for g in grads]
     if backend == "tensorflow":

@@ -16,8 +16,10 @@ def call(backend, name, args, kwargs=None):
 
 def gradients(backend, fn, args, weights):
     """Gradients of ``sum(weights * fn(*args))`` with respect to each of ``args``, by the
-    framework's own autodiff (``tests/helpers.py``); float64 numpy in and out."""
-    return native_value_and_grads(backend, fn, args, weights)[1]
+    framework's own autodiff (``tests/helpers.py``), eagerly (each function is small and called
+    once per input set: a jitted program per function and shape took five times as long on
+    jax); float64 numpy in and out."""
+    return native_value_and_grads(backend, fn, args, weights, jit=False)[1]
 
 
 def finite_difference(fn, args, weights, wrt=0, h=1e-7):
