@@ -259,7 +259,7 @@ def register_framework(
         >>> ivy.register_framework("array_api_strict", "array_api_strict")
         >>> import array_api_strict as xp
         >>> ivy.sin(xp.asarray([0.0]))               # inferred from the array's type
-        Array([0.], dtype=array_api_strict.float32)
+        Array([0.], dtype=array_api_strict.float64)
     """
     if name in _BACKENDS and _BACKENDS[name].namespace is None:
         raise ValueError(f"{name!r} is one of ivy's own backends; choose another name")

@@ -16,7 +16,7 @@ different insertion order line up; :func:`unflatten_nest` restores each dict's o
 Example:
     >>> v = {"w": np.ones((2, 3)), "b": np.zeros(3)}
     >>> ivy.nest.map_nest(lambda x: x * 2, v)["w"].sum()
-    12.0
+    np.float64(12.0)
 """
 
 from __future__ import annotations

@@ -50,7 +50,7 @@ class Ant(MuJoCoEnv):
     docstring). The action (eight motors' controls in [-1, 1]) is held for ``frame_skip`` steps
     of RK4 (``timestep`` 0.01). Observation ``[qpos[2:], qvel, clip(cfrc_ext[1:],
     *contact_force_range)]`` (the external forces on the 13 bodies, as ``mj_rnePostConstraint``
-    gives them after the step; zero after a reset, as Gymnasium's). Reward:
+    gives them after the step; zero after a reset, as Gymnasium's). Reward::
 
         forward_reward_weight * x_velocity + healthy_reward * healthy
             - ctrl_cost_weight * |action|^2 - contact_cost_weight * |clip(cfrc_ext)|^2

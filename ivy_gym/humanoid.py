@@ -59,7 +59,7 @@ class Humanoid(MuJoCoEnv):
     steps of RK4 (``timestep`` 0.003, PGS). Observation, by default: ``[qpos[2:], qvel,
     cinert[1:], cvel[1:], qfrc_actuator[6:], cfrc_ext[1:]]``, the body inertias, velocities,
     actuator forces and external forces as MuJoCo leaves them after the step (after a reset:
-    ``mj_forward``'s, with zero controls and zero ``cfrc_ext``). Reward:
+    ``mj_forward``'s, with zero controls and zero ``cfrc_ext``). Reward::
 
         forward_reward_weight * x_velocity + healthy_reward * healthy
             - ctrl_cost_weight * |ctrl|^2 - clip(contact_cost_weight * |cfrc_ext|^2,

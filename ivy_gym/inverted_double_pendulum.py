@@ -89,7 +89,7 @@ class InvertedDoublePendulum(MuJoCoEnv):
 
     Gymnasium's task (``swing_up=False``), with ``(x, y)`` the tip's horizontal position and
     height where MuJoCo's ``site_xpos`` leaves them after the step (the last RK4 stage, see the
-    module's docstring):
+    module's docstring)::
 
         terminated = y <= 1 or the state is not finite
         reward = healthy_reward * (not terminated) - 0.01 x**2 - (y - 2)**2
@@ -105,7 +105,7 @@ class InvertedDoublePendulum(MuJoCoEnv):
 
     Swing-up (``swing_up=True``): the initial state hangs down, ``hinge = pi``, ``hinge2 = 0``
     (the second pole continues the first), with the same noise; it never terminates, and the
-    reward of the new state is smooth:
+    reward of the new state is smooth::
 
         reward = tip_height / 1.2 - swing_up_velocity_cost * |qvel|**2
                  - swing_up_action_cost * action**2 - barrier(slider)

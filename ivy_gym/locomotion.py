@@ -121,7 +121,7 @@ class Hopper(_Runner):
     angle), then the thigh, leg and foot hinges. The action (three motors' controls in [-1, 1])
     is held for ``frame_skip`` steps of the model's RK4 (``timestep`` 0.002). Observation
     ``[qpos[1:], clip(qvel, -10, 10)]`` (``qpos`` whole when
-    ``exclude_current_positions_from_observation`` is False). Reward:
+    ``exclude_current_positions_from_observation`` is False). Reward::
 
         forward_reward_weight * x_velocity + healthy_reward * healthy
             - ctrl_cost_weight * |action|^2

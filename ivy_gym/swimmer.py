@@ -28,7 +28,7 @@ class Swimmer(Env):
     from ``num_urchins`` fixed urchins.
 
     Semi-implicit Euler: ``xy_vel += dt * action;  xy += dt * xy_vel``. Reward, of the new state,
-    smooth and in [0, 1]:
+    smooth and in [0, 1]::
 
         exp(-goal_sharpness |xy - goal|**2) * prod_i (1 - exp(-urchin_sharpness |xy - urchin_i|**2))
 

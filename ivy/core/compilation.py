@@ -44,6 +44,7 @@ def compile_native(
     :func:`compile_fn`, which can also choose the framework at the first call.
 
     Example:
+        >>> step = lambda x: jnp.sin(x) * 2
         >>> step = ivy.compile_native(step, f='jax')
     """
 
@@ -77,9 +78,12 @@ def compile_fn(
         The compiled function, called like ``fn``.
 
     Example:
+        >>> train_step = lambda v, batch: {"w": v["w"] - 0.1 * ivy.mean(batch) * v["w"]}
+        >>> v, batch = {"w": jnp.ones(3)}, jnp.arange(4.0)
         >>> step = ivy.compile_fn(train_step)
         >>> v = step(v, batch)  # traced and compiled on this first call, for v's framework
         >>> write = ivy.compile_fn(lambda x, i, u: ivy.put_rows(x, i, u), donate_argnums=0)
+        >>> x, indices, rows = jnp.zeros((4, 2)), jnp.array([0, 2]), jnp.ones((2, 2))
         >>> x = write(x, indices, rows)  # on jax, in place: the x passed in is deleted
     """
     options = dict(

@@ -121,7 +121,7 @@ def fori_loop(
 
     Example:
         >>> ivy.fori_loop(0, 3, lambda i, x: x * 2.0, np.float32(1.0))
-        8.0
+        np.float32(8.0)
     """
 
 

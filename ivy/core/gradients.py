@@ -367,6 +367,8 @@ def jacobian(
         A function of ``x`` returning the Jacobian ``(*batch, *out_shape, *in_shape)``.
 
     Example:
+        >>> forward_kinematics = lambda q: jnp.stack([jnp.cos(q).sum(-1), jnp.sin(q).sum(-1)], -1)
+        >>> joint_angles = jnp.zeros((5, 3))
         >>> J = ivy.jacobian(forward_kinematics)(joint_angles)  # (batch, n) -> (batch, m, n)
     """
 

@@ -224,7 +224,7 @@ def taylor_switch(
         >>> sinc = lambda x_sq: ivy.taylor_switch(
         ...     x_sq, (1.0, -1 / 6, 1 / 120, -1 / 5040), lambda x: ivy.sin(x) / x)
         >>> sinc(np.array([0.0, np.pi ** 2]))
-        array([1.0000000e+00, 3.8981718e-17])
+        array([1.00000000e+00, 3.89817183e-17])
     """
     xp = _fh.get_framework(x_sq, f=f)
     small = x_sq < threshold

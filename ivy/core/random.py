@@ -24,6 +24,7 @@ are drawn once, when the function is traced, with a warning; use ``ivy.compile_f
 Example:
     >>> ivy.seed(0)
     >>> noisy = ivy.compile_fn(lambda x: x + ivy.random_normal(shape=x.shape, f="jax"))
+    >>> x = jnp.zeros(3)
     >>> a, b = noisy(x), noisy(x)  # different draws; ivy.seed(0) then repeats a, b
 """
 

@@ -4,6 +4,8 @@ Each array is stored under its path in the nest joined by ``'/'`` (``'layers/0/w
 ``ivy.to_numpy``, so a checkpoint written on one backend loads on any other.
 
 Example:
+    >>> torch_model = ivy.MLP(4, (8,), 1, f="torch")
+    >>> jax_model = ivy.MLP(4, (8,), 1, f="jax")
     >>> save_weights("mlp.npz", torch_model.v)
     >>> jax_model.v = load_weights("mlp.npz", like=jax_model.v)
 """
@@ -26,8 +28,9 @@ def nest_to_flat_dict(nest: Nest) -> dict[str, Any]:
     """``{'a/b': leaf}`` for every leaf of a nest of dicts (and lists or tuples, by index).
 
     Example:
+        >>> w = np.zeros(2)
         >>> nest_to_flat_dict({"layers": {"0": {"w": w}}})
-        {'layers/0/w': w}
+        {'layers/0/w': array([0., 0.])}
     """
     flat: dict[str, Any] = {}
 
@@ -55,8 +58,9 @@ def flat_dict_to_nest(flat: dict[str, Any]) -> dict[str, Any]:
     """The nest of dicts of a ``{'a/b': leaf}`` dict (inverse of :func:`nest_to_flat_dict`).
 
     Example:
+        >>> w = np.zeros(2)
         >>> flat_dict_to_nest({"layers/0/w": w})
-        {'layers': {'0': {'w': w}}}
+        {'layers': {'0': {'w': array([0., 0.])}}}
     """
     nest: dict[str, Any] = {}
     for path, leaf in flat.items():
@@ -76,6 +80,7 @@ def save_weights(path: str | os.PathLike, v: Nest) -> None:
         v: nest of dicts of arrays (e.g. ``module.v`` or an optimizer state).
 
     Example:
+        >>> model = ivy.MLP(4, (8,), 1, f="torch")
         >>> save_weights("mlp.npz", model.v)
     """
     import numpy as np  # imported on use: ``import ivy`` imports no framework
@@ -109,6 +114,8 @@ def load_weights(
         A nest of dicts of arrays of the chosen framework.
 
     Example:
+        >>> model = ivy.MLP(4, (8,), 1, f="jax")
+        >>> save_weights("mlp.npz", ivy.MLP(4, (8,), 1, f="torch").v)
         >>> model.v = load_weights("mlp.npz", like=model.v)
         >>> v = load_weights("mlp.npz", f="jax")
     """

@@ -280,6 +280,7 @@ class Module:
         """Write the variables to a portable ``.npz`` checkpoint that any backend can load.
 
         Example:
+            >>> model = ivy.MLP(4, (8,), 1, f="torch")
             >>> model.save("mlp.npz")
         """
         from ivy.stateful.checkpoint import save_weights
@@ -296,6 +297,7 @@ class Module:
             The module itself.
 
         Example:
+            >>> ivy.MLP(4, (8,), 1, f="torch").save("mlp.npz")
             >>> model = ivy.MLP(4, (8,), 1, f="jax").load("mlp.npz")  # written with torch
         """
         from ivy.stateful.checkpoint import load_weights

@@ -65,6 +65,7 @@ class Optimizer:
             ``{'step': 0-d array, <slot>: nest like v, ...}``.
 
         Example:
+            >>> model = ivy.MLP(4, (8,), 1, f="torch")
             >>> state = ivy.Adam(1e-3).init(model.v)
             >>> sorted(state)
             ['mu', 'nu', 'step']
@@ -90,6 +91,9 @@ class Optimizer:
             ``(new_v, new_state)``.
 
         Example:
+            >>> from ivy import execute_with_gradients
+            >>> v, opt = {"w": torch.ones(3)}, ivy.Adam(1e-3)
+            >>> loss_fn, state = (lambda v: ivy.sum(v["w"] ** 2)), opt.init(v)
             >>> loss, grads = execute_with_gradients(loss_fn, v)
             >>> v, state = opt.step(v, grads, state)
         """
@@ -127,6 +131,8 @@ class Optimizer:
             The step function.
 
         Example:
+            >>> model, x, y = ivy.MLP(4, (8,), 1, f="jax"), jnp.ones((2, 4)), jnp.ones((2, 1))
+            >>> opt = ivy.Adam(1e-3)
             >>> step = opt.training_step(lambda v, x, y: ivy.mse(model(x, v=v), y), compile=True)
             >>> v, state = model.v, opt.init(model.v)
             >>> loss, v, state = step(v, state, x, y)
@@ -149,6 +155,10 @@ class Optimizer:
         The state is created on the first call, and again whenever another module is passed.
 
         Example:
+            >>> from ivy import execute_with_gradients
+            >>> model, x, y = ivy.MLP(4, (8,), 1, f="torch"), torch.ones(2, 4), torch.ones(2, 1)
+            >>> opt = ivy.SGD(0.1)
+            >>> loss_fn = lambda v: ivy.mse(model(x, v=v), y)
             >>> loss, grads = execute_with_gradients(loss_fn, model.v)
             >>> opt.update(model, grads)
         """
@@ -169,6 +179,8 @@ class Optimizer:
             The loss before the update (``(loss, *aux)`` when ``loss_fn`` returns aux values).
 
         Example:
+            >>> model, x, y = ivy.MLP(4, (8,), 1, f="torch"), torch.ones(2, 4), torch.ones(2, 1)
+            >>> opt = ivy.Adam(1e-3)
             >>> loss = opt.minimize(model, lambda v: ivy.mse(model(x, v=v), y))
         """
         loss, grads, *aux = execute_with_gradients(loss_fn, module.v)
@@ -197,6 +209,8 @@ class Optimizer:
             The step function.
 
         Example:
+            >>> model, opt = ivy.MLP(4, (8,), 1, f="jax"), ivy.Adam(1e-3)
+            >>> batches = [(jnp.ones((2, 4)), jnp.ones((2, 1)))] * 3
             >>> train = opt.module_step(model, lambda v, x, y: ivy.mse(model(x, v=v), y),
             ...                         compile=True)
             >>> for x, y in batches:
@@ -303,6 +317,8 @@ class SGD(Optimizer):
 
     Example:
         >>> opt = ivy.SGD(0.1, momentum=0.9)
+        >>> v = {"w": torch.ones(3)}
+        >>> loss, grads = ivy.execute_with_gradients(lambda v: ivy.sum(v["w"] ** 2), v)
         >>> v, state = opt.step(v, grads, opt.init(v))
     """
 
@@ -362,6 +378,8 @@ class Adam(Optimizer):
 
     Example:
         >>> opt = ivy.Adam(1e-3)
+        >>> model, x, y = ivy.MLP(4, (8,), 1, f="torch"), torch.ones(2, 4), torch.ones(2, 1)
+        >>> loss, grads = ivy.execute_with_gradients(lambda v: ivy.mse(model(x, v=v), y), model.v)
         >>> state = opt.init(model.v)
         >>> v, state = opt.step(model.v, grads, state)
     """
@@ -438,6 +456,7 @@ class AdamW(Adam):
 
     Example:
         >>> opt = ivy.AdamW(1e-3, weight_decay=0.01)
+        >>> model, x, y = ivy.MLP(4, (8,), 1, f="torch"), torch.ones(2, 4), torch.ones(2, 1)
         >>> loss = opt.minimize(model, lambda v: ivy.mse(model(x, v=v), y))
     """
 
