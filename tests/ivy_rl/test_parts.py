@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 import ivy
+import ivy_rl
 from ivy_rl.explorations import EpsilonGreedy, NoNoise, NormalNoise, make_exploration
 from ivy_rl.models import polyak_update
 from ivy_rl.off_policy_models import ActorQModel, QModel
@@ -299,3 +300,48 @@ def test_an_agent_of_parts_equals_the_agent_of_the_same_settings():
     assert DQN(updater=QLearning(lr=5e-4, double=False)).config["double"] is False
     assert set(SAC.parts) == {"model", "replay", "exploration", "actor_updater", "critic_updater"}
     assert set(DQN.parts) == {"model", "replay", "exploration", "updater"}
+
+
+# ----------------------------------------------------------------------------------------------
+# Settings: declared once by the parts, derived by the agents
+# ----------------------------------------------------------------------------------------------
+
+
+def test_every_agents_settings_are_derived_from_its_parts():
+    from ivy_rl.agents import AGENTS
+    from ivy_rl.settings import declared
+
+    for name, cls in AGENTS.items():
+        if cls.parts is None:
+            continue
+        table = cls.settings()
+        assert set(cls().config) == set(table), name
+        for factory, names in cls.parts.values():
+            spec = declared(factory)
+            for flat, param in names.items():
+                assert table[flat][0] == spec[param][0], (name, flat)
+        # an agent's default that is not one of its settings would be a typo
+        own = vars(cls).get("_defaults", {})
+        assert set(own) <= set(table), (name, set(own) - set(table))
+    spec, default, role = AGENTS["SAC"].settings()["batch_size"]
+    assert (default, role, spec.kind) == (256, "replay", "int")
+    assert AGENTS["DQN"].settings()["batch_size"][1] == 128  # DQN's difference from its replay
+
+
+def test_settings_are_checked_once_with_the_parts_declarations():
+    from ivy_rl.agents import SAC, TD3
+
+    with pytest.raises(ValueError, match="setting 'target_tau' must be a number > 0 and <= 1"):
+        SAC(target_tau=0.0)
+    with pytest.raises(TypeError, match="setting 'policy_delay' must be an integer >= 1"):
+        TD3(policy_delay=1.5)
+    assert SAC(hidden_sizes=[8, 8]).config["hidden_sizes"] == (8, 8)
+    assert ivy_rl.agents.check_setting("batch_iterations", 3) == 3
+
+
+def test_settings_table_states_where_make_differs_from_the_constructor():
+    rows = {r["name"]: r for r in ivy_rl.agents.settings_table("SAC", "Pendulum-v1")}
+    assert rows["batch_size"]["agent_default"] == ivy_rl.agents.SAC().config["batch_size"]
+    made = ivy_rl.agents.make("SAC", environment="Pendulum-v1").config
+    assert all(made[name] == row["family_default"] for name, row in rows.items())
+    assert rows["hidden_sizes"]["part"] == "model" and rows["fusion"]["part"] == "agent"
