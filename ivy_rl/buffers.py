@@ -38,7 +38,7 @@ import numpy as np
 import ivy
 from ivy.typing import Array, Framework
 
-__all__ = ["TransitionReplay", "n_step_batch", "put_ring_rows"]
+__all__ = ["TransitionReplay", "n_step_batch", "put_ring_rows", "held_dtype"]
 
 _FLAGS = ("resets", "terminations")
 
@@ -162,8 +162,9 @@ class TransitionReplay:
         Args:
             xp: the backend namespace.
             device: where the arrays live.
-            dtypes: numpy dtypes to store each array in (default: the staged dtypes), e.g. the
-                agent's float dtype and int32 indices.
+            dtypes: numpy dtypes to store each array in, e.g. the agent's float dtype and
+                int32 indices (default: the staged dtypes, 64-bit ones as 32-bit where the
+                backend holds no 64-bit types: jax as it starts, :func:`held_dtype`).
             chunk_steps: steps per written piece (immutable arrays).
             compile: compiles the writer (immutable arrays; default: run as it is), e.g.
                 ``lambda fn: ivy.compile_fn(fn, donate_argnums=0)`` (its first argument is the
@@ -171,7 +172,11 @@ class TransitionReplay:
         """
         if not self._count:
             return
-        dtypes = {k: np.dtype((dtypes or {}).get(k, spec[1])) for k, spec in self._specs.items()}
+        given = dtypes or {}
+        dtypes = {
+            k: np.dtype(given[k]) if k in given else held_dtype(xp, spec[1])
+            for k, spec in self._specs.items()
+        }
         if self.arrays is None:
             self.arrays = {}
             for key, (shape, _) in self._specs.items():
@@ -302,7 +307,7 @@ class TransitionReplay:
         # earlier checkpoints held it); copies: they may be written in place
         self.arrays = {}
         for key, value in arrays.items():
-            ring = np.zeros((rows, *value.shape[1:]), value.dtype)
+            ring = np.zeros((rows, *value.shape[1:]), held_dtype(xp, value.dtype))
             ring[: len(value)] = value
             self.arrays[key] = xp.asarray(ring, device=device)
         self.arrays = self.arrays or None
@@ -313,6 +318,28 @@ class TransitionReplay:
             self._grow_staging(max(64, self._count))
             for key, value in staged.items():
                 self._staging[key][: self._count] = value
+
+
+_NARROWER = {"float64": "float32", "int64": "int32", "uint64": "uint32", "complex128": "complex64"}
+
+
+def held_dtype(xp: Any, dtype: Any) -> np.dtype:
+    """``dtype``, or its 32-bit kind where the backend ``xp`` holds no 64-bit types (jax with
+    its 64-bit types off, as it starts: Gymnasium's float64 observations are then stored in
+    float32, as jax itself would store them).
+
+    Example:
+        >>> held_dtype(ivy.jax, np.float64)  # jax_enable_x64 off
+        dtype('float32')
+    """
+    dtype = np.dtype(dtype)
+    narrower = _NARROWER.get(dtype.name)
+    if narrower is None:
+        return dtype
+    info = getattr(xp, "__array_namespace_info__", None)
+    if info is None or dtype.name in info().dtypes():
+        return dtype
+    return np.dtype(narrower)
 
 
 def put_ring_rows(

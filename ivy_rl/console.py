@@ -125,7 +125,7 @@ class Console:
             stream = self.stderr if error else self.stdout
             stream.write(text.rstrip("\n") + "\n")
             stream.flush()
-            if self._last_progress is not None and self.tty:
+            if self._last_progress is not None and self.tty and not self.quiet:
                 self._draw(*self._last_progress)
 
     def start(self, text: str) -> None:
@@ -228,6 +228,7 @@ class Console:
             with self._lock:
                 took = now - self._compiling_since
                 self._compiling_since = None
+                self._samples.clear()  # the rate from here on, without the compilation
                 self.print(f"compiled in {format_duration(took)}", error=True)
         self._tick = (now, self._count())
 

@@ -80,9 +80,10 @@ def play(
     _cli.check_device(device, framework)
     _cli.enable_float64(framework, config["dtype"])
     render_mode = "human" if render else ("rgb_array" if video else None)
-    # Gymnasium draws with pygame, whose SDL opens an audio device when it starts and, with no
-    # desktop session (XDG_RUNTIME_DIR), prints an error on success: no sound is ever played
-    os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
+    if not render:
+        # frames drawn off screen: Gymnasium's pygame starts SDL's video, which without a
+        # desktop session (no XDG_RUNTIME_DIR) prints an error though it succeeds
+        os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
     env = make_env(
         config["environment"],
         env_kwargs=config.get("env_kwargs"),

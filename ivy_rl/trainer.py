@@ -435,11 +435,11 @@ class Trainer:
             )
         console.progress(total, self.max_steps, elapsed=self.elapsed, force=True)
         while total < self.max_steps:
+            console.tick()
             if self._stop_requested:
                 self.elapsed = time.monotonic() - start
                 self._epoch_elapsed = time.monotonic() - epoch_start
                 self._stop_here()
-            console.tick()
             actions = agent.step(observations)
             observations, infos = self.workers.step(actions)
             if set_progress is not None:

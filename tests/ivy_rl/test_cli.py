@@ -206,3 +206,49 @@ def test_the_best_model_is_kept_and_play_summarises_its_episodes(tmp_path, capsy
 def test_play_summary_reports_the_mean_and_spread():
     line = play.summary([{"score": 10.0, "length": 10}, {"score": 20.0, "length": 30}])
     assert line == "score 15.00 +- 5.00 (min 10.00, max 20.00) over 2 episodes, length 20.0"
+
+
+def test_run_files_default_folders_exact_steps_and_a_log_kept_as_written(tmp_path, monkeypatch):
+    # the default folder names the framework: the same run on a second framework is its own
+    monkeypatch.chdir(tmp_path)
+    base = ["--agent", "Uniform", "--workers", "2", "--steps", "32", "--epoch-steps", "16"]
+    for framework in ("torch", "numpy"):
+        train.main([*base, "--test-episodes", "1", "--quiet", "-f", framework])
+    assert sorted(os.listdir(tmp_path / "runs")) == [
+        "Uniform-CartPole-v1-numpy-0",
+        "Uniform-CartPole-v1-torch-0",
+    ]
+    # --steps is exact: a value that is not whole steps of the workers is refused, naming both
+    with pytest.raises(
+        ValueError, match=r"--steps 9100 is not a multiple of --workers 8.*9096 or 9104"
+    ):
+        train.main(["--steps", "9100", "--workers", "8", "--out", str(tmp_path / "x")])
+    assert not (tmp_path / "x").exists()
+    rows = _uniform(tmp_path / "odd", "--steps", "36", "--workers", "3", "--epoch-steps", "12")
+    assert [r["train/steps"] for r in rows] == [12, 24, 36]
+    # the rows before a resume are kept as written (integers stay integers)
+    out = tmp_path / "runs" / "Uniform-CartPole-v1-torch-0"
+    before = (out / "log.csv").read_text().splitlines()
+    train.main(["--out", str(out), "--resume", "--steps", "48", "--quiet"])
+    after = (out / "log.csv").read_text().splitlines()
+    assert after[: len(before)] == before and len(after) == len(before) + 1
+    assert after[1].split(",")[0] == "16"
+
+
+def test_checkpoints_hold_the_filled_replay_and_best_what_play_needs(tmp_path, capfd):
+    out = tmp_path / "sac"
+    tiny = {"hidden_sizes": [16], "start_steps": 16, "update_after": 16, "update_every": 8}
+    tiny.update(batch_size=16, batch_iterations=1, replay_size=100_000)
+    args = ["--agent", "SAC", "--environment", "Pendulum-v1", "--agent-kwargs", json.dumps(tiny)]
+    _uniform(out, *args, "--eager", "--steps", "48", "--epoch-steps", "48")
+    with np.load(out / "checkpoints" / "step_48" / "agent" / "arrays.npz") as data:
+        rows = {k: data[k].shape[0] for k in data.files if k.startswith("replay/arrays.")}
+    # 48 steps staged on 2 workers, flushed before each update: the filled rows, not 100,000
+    assert rows and set(rows.values()) <= {46, 48}, rows
+    with np.load(out / "best" / "agent" / "arrays.npz") as data:
+        assert not [k for k in data.files if k.startswith(("replay/arrays.", "replay/staged."))]
+    capfd.readouterr()
+    results = play.main([str(out), "--best", "--episodes", "1", "--video", str(tmp_path / "p.gif")])
+    assert results[0]["length"] == 200 and os.path.getsize(tmp_path / "p.gif") > 1000
+    captured = capfd.readouterr()
+    assert "XDG_RUNTIME_DIR" not in captured.err and "wrote " in captured.out

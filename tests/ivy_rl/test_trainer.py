@@ -459,3 +459,35 @@ def test_a_globally_set_framework_gives_the_same_log(tmp_path):
     expected = _rows(_run(tmp_path / "plain", 64, f="jax", compile=True))
     with ivy.set_framework("jax"):
         assert _rows(_run(tmp_path / "set", 64, f="jax", compile=True)) == expected
+
+
+def test_the_replay_saves_its_filled_rows_and_loads_them_into_the_whole_ring():
+    from ivy_rl.buffers import TransitionReplay
+
+    xp = ivy.get_framework(f="numpy")
+    rng = np.random.default_rng(0)
+    replay = TransitionReplay(1_000, return_steps=2)
+    for step in range(7):
+        replay.store(
+            observations=rng.normal(size=(2, 3)), actions=rng.normal(size=(2, 1)),
+            rewards=rng.normal(size=2), next_observations=rng.normal(size=(2, 3)),
+            resets=np.zeros(2, bool), terminations=np.zeros(2, bool),
+        )  # fmt: skip
+        if step == 4:
+            replay.flush(xp)
+    state = replay.state_dict()
+    assert state["arrays.observations"].shape == (10, 3)  # 5 flushed steps of 2 workers
+    assert state["staged.observations"].shape == (2, 2, 3)  # 2 staged steps
+    again = TransitionReplay(1_000, return_steps=2)
+    again.load_state_dict(state, xp)
+    assert again.arrays["observations"].shape == (1_000, 3)
+    for replica in (replay, again):
+        replica.flush(xp)
+    for key, value in replay.arrays.items():
+        np.testing.assert_array_equal(again.arrays[key], value)
+    draw = [r.windows(np.random.default_rng(1), 2, 4) for r in (replay, again)]
+    np.testing.assert_array_equal(*draw)
+    # a state saved with the whole ring (checkpoints before) loads too
+    full = {**replay.state_dict(), **{f"arrays.{k}": v for k, v in replay.arrays.items()}}
+    again.load_state_dict(full, xp)
+    np.testing.assert_array_equal(again.arrays["rewards"], replay.arrays["rewards"])
