@@ -269,7 +269,8 @@ def soft_update(target_v: Nest, v: Nest, tau: float, *, f: Framework = None) -> 
     """Deprecated: :func:`ivy_rl.models.polyak_update` (the same function, the one name kept).
 
     Example:
-        >>> targets = polyak_update(targets, {"critic": v["critic"]}, 0.005)
+        >>> ivy_rl.models.polyak_update({"a": np.zeros(2)}, {"a": np.ones(2)}, 0.5, f="numpy")
+        {'a': array([0.5, 0.5])}
     """
     warnings.warn(
         "ivy_rl.critics.soft_update is deprecated: use ivy_rl.models.polyak_update (the same "

@@ -4,6 +4,9 @@
 exploration :class:`ivy_rl.explorations.NormalNoise`.
 
 Example:
+    >>> from ivy_rl.differentiable_parts import (
+    ...     ActorValueModel, AnalyticPolicyGradient, TargetValueRegression)
+    >>> from ivy_rl.replays import Rollouts
     >>> agent = ivy_rl.agents.SHAC(
     ...     model=ActorValueModel((64, 64), critic=True),
     ...     replay=Rollouts(batch_size=64, horizon=32),
@@ -51,7 +54,8 @@ class ActorValueModel:
             and standard deviation.
 
     Example:
-        >>> ActorValueModel((64, 64), critic=True)
+        >>> model = ivy_rl.differentiable_parts.ActorValueModel((64, 64), critic=True)
+        >>> agent = ivy_rl.agents.SHAC(model=model)
     """
 
     settings = {
@@ -120,7 +124,9 @@ class AnalyticPolicyGradient(GradientUpdater):
         gradient_clip: global norm of the gradient (0: no clipping).
 
     Example:
-        >>> ivy_rl.agents.APG(actor_updater=AnalyticPolicyGradient(lr=1e-2))
+        >>> updater = ivy_rl.differentiable_parts.AnalyticPolicyGradient(lr=1e-2)
+        >>> ivy_rl.agents.APG(actor_updater=updater).config["actor_lr"]
+        0.01
     """
 
     settings = {"lr": _s.LR, "gradient_clip": _s.CLIP}
@@ -154,7 +160,8 @@ class TargetValueRegression(GradientUpdater):
         target_update: step of the target critic per update (1: copy).
 
     Example:
-        >>> TargetValueRegression(lr=2e-3, iterations=8, batches=4)
+        >>> updater = ivy_rl.differentiable_parts.TargetValueRegression(iterations=8, batches=4)
+        >>> agent = ivy_rl.agents.SHAC(critic_updater=updater)
     """
 
     settings = {

@@ -228,7 +228,8 @@ def make_exploration(
     (``start_steps``: steps of uniformly random actions first).
 
     Example:
-        >>> make_exploration("normal", 0.1)
+        >>> ivy_rl.explorations.make_exploration("normal", 0.1, start_steps=1000).start_steps
+        1000
     """
     if name not in EXPLORATIONS:
         raise ValueError(

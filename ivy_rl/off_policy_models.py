@@ -9,7 +9,8 @@ numpy generator in a fixed order (the actor's torso, its head, then each critic)
 gives the same networks on every backend.
 
 Example:
-    >>> model = ActorQModel(hidden_sizes=(64, 64), policy="squashed_gaussian", critics=2)
+    >>> from ivy_rl.off_policy_models import ActorQModel
+    >>> model = ActorQModel((64, 64), policy="squashed_gaussian", critics=2, targets=("critic",))
     >>> agent = ivy_rl.agents.SAC(model=model)
 """
 
@@ -69,7 +70,8 @@ class ActorQModel:
         target_tau: step of the targets' soft updates (1: copy).
 
     Example:
-        >>> ActorQModel(policy="deterministic", critics=2)  # TD3's
+        >>> model = ivy_rl.off_policy_models.ActorQModel(policy="deterministic", critics=2)
+        >>> agent = ivy_rl.agents.TD3(model=model)
     """
 
     settings = {
@@ -230,7 +232,9 @@ class QModel:
         target_tau: step of the target network's soft updates (1: copy).
 
     Example:
-        >>> ivy_rl.agents.DQN(model=QModel((64, 64), dueling=False))
+        >>> model = ivy_rl.off_policy_models.QModel((64, 64), dueling=False)
+        >>> ivy_rl.agents.DQN(model=model).config["dueling"]
+        False
     """
 
     settings = {

@@ -20,6 +20,7 @@ variables of their own (SAC's temperature, MPO's duals) give them in
 :meth:`OffPolicyUpdater.variables`.
 
 Example:
+    >>> from ivy_rl.off_policy_updaters import TwinCriticSoftPolicyGradient, TwinCriticSoftQLearning
     >>> agent = ivy_rl.agents.SAC(
     ...     actor_updater=TwinCriticSoftPolicyGradient(lr=3e-4, initial_temperature=0.1),
     ...     critic_updater=TwinCriticSoftQLearning(lr=3e-4))
@@ -123,7 +124,9 @@ class DeterministicPolicyGradient(OffPolicyUpdater):
         gradient_clip: global norm of the gradients (0: no clipping).
 
     Example:
-        >>> ivy_rl.agents.DDPG(actor_updater=DeterministicPolicyGradient(lr=1e-4))
+        >>> updater = ivy_rl.off_policy_updaters.DeterministicPolicyGradient(lr=1e-4)
+        >>> ivy_rl.agents.DDPG(actor_updater=updater).config["actor_lr"]
+        0.0001
     """
 
     def __init__(self, lr: Any = 1e-3, gradient_clip: float = 0.0) -> None:
@@ -173,7 +176,10 @@ class TwinCriticSoftPolicyGradient(OffPolicyUpdater):
         target_entropy: H* (None: minus the number of action dimensions).
 
     Example:
-        >>> TwinCriticSoftPolicyGradient(lr=3e-4, initial_temperature=0.1)
+        >>> updater = ivy_rl.off_policy_updaters.TwinCriticSoftPolicyGradient(
+        ...     lr=3e-4, initial_temperature=0.1)
+        >>> ivy_rl.agents.SAC(actor_updater=updater).config["initial_temperature"]
+        0.1
     """
 
     settings = {
@@ -272,7 +278,8 @@ class MaximumAPosterioriPolicyOptimization(OffPolicyUpdater):
         dual_lr: Adam learning rate of the duals.
 
     Example:
-        >>> MaximumAPosterioriPolicyOptimization(num_samples=20, epsilon=0.1)
+        >>> updater = ivy_rl.off_policy_updaters.MaximumAPosterioriPolicyOptimization(epsilon=0.1)
+        >>> agent = ivy_rl.agents.MPO(actor_updater=updater)
     """
 
     settings = {
@@ -437,7 +444,8 @@ class DeterministicQLearning(OffPolicyUpdater):
         gradient_clip: global norm of the gradients (0: no clipping).
 
     Example:
-        >>> ivy_rl.agents.DDPG(critic_updater=DeterministicQLearning(lr=1e-3))
+        >>> updater = ivy_rl.off_policy_updaters.DeterministicQLearning(lr=1e-3)
+        >>> agent = ivy_rl.agents.DDPG(critic_updater=updater)
     """
 
     part = "critic"
@@ -479,7 +487,9 @@ class TwinCriticDeterministicQLearning(DeterministicQLearning):
         target_noise_clip: bound of that noise.
 
     Example:
-        >>> TwinCriticDeterministicQLearning(target_noise=0.2, target_noise_clip=0.5)
+        >>> updater = ivy_rl.off_policy_updaters.TwinCriticDeterministicQLearning(
+        ...     target_noise=0.2, target_noise_clip=0.5)
+        >>> agent = ivy_rl.agents.TD3(critic_updater=updater)
     """
 
     settings = {
@@ -598,7 +608,9 @@ class QLearning(DeterministicQLearning):
         double: double Q-learning targets.
 
     Example:
-        >>> ivy_rl.agents.DQN(updater=QLearning(lr=1e-3, double=False))
+        >>> updater = ivy_rl.off_policy_updaters.QLearning(lr=1e-3, double=False)
+        >>> ivy_rl.agents.DQN(updater=updater).config["double"]
+        False
     """
 
     settings = {**OffPolicyUpdater.settings, "double": _s.Setting("bool", meaning="double Q")}

@@ -38,7 +38,9 @@ class Rollouts:
         discount: γ of the rollouts' returns.
 
     Example:
-        >>> APG(replay=Rollouts(batch_size=16, horizon=32, update_every=1))
+        >>> replay = ivy_rl.replays.Rollouts(batch_size=16, horizon=32, update_every=1)
+        >>> ivy_rl.agents.APG(replay=replay).config["horizon"]
+        32
     """
 
     settings = {
@@ -83,7 +85,9 @@ class Transitions(TransitionReplay):
         update_every: environment steps between updates.
 
     Example:
-        >>> SAC(replay=Transitions(100_000, batch_size=128, update_every=50))
+        >>> replay = ivy_rl.replays.Transitions(100_000, batch_size=128, update_every=50)
+        >>> ivy_rl.agents.SAC(replay=replay).config["batch_size"]
+        128
     """
 
     settings = {

@@ -8,7 +8,11 @@ few the agent reads itself (its ``own_settings``, e.g. ``fusion``), with the age
 where they differ from its parts' (its ``_defaults``).
 
 Example:
+    >>> from ivy_rl.settings import Setting, check
+    >>> check("segment_size", Setting("int", 1), 32)
+    32
     >>> check("segment_size", Setting("int", 1), "32")
+    Traceback (most recent call last):
     TypeError: setting 'segment_size' must be an integer >= 1, got '32' (str)
 """
 
@@ -57,8 +61,9 @@ def declared(factory: Any) -> dict[str, tuple[Setting, Any]]:
     settings). The defaults are the factory's signature's.
 
     Example:
-        >>> declared(ivy_rl.replays.Segment)["size"]
-        (Setting(kind='int', low=1, ...), 2048)
+        >>> spec, default = ivy_rl.settings.declared(ivy_rl.replays.Segment)["size"]
+        >>> spec.kind, default
+        ('int', 2048)
     """
     fixed: dict[str, Any] = {}
     while isinstance(factory, functools.partial):
@@ -107,7 +112,7 @@ def check(name: str, spec: Setting | None, value: Any) -> Any:
     naming the setting, what it takes and what it got otherwise. ``spec`` None: unchecked.
 
     Example:
-        >>> check("hidden_sizes", Setting("sizes"), [64, 64])
+        >>> ivy_rl.settings.check("hidden_sizes", ivy_rl.settings.Setting("sizes"), [64, 64])
         (64, 64)
     """
     if spec is None or spec.kind == "any" or (value is None and spec.optional):
