@@ -9,6 +9,13 @@ Matrix functions act on the last two axes and broadcast over any leading batch a
 floating-point functions (all but ``diagonal``, ``matmul``, ``matrix_power`` with ``n >= 0``,
 ``matrix_transpose``, ``outer``, ``tensordot``, ``trace``, ``vecdot``, ``cross``) compute bool and
 integer inputs in float32, the default float dtype, on every backend.
+
+Matrices holding NaN or infinity: the decompositions (``cholesky``, ``eigh``, ``eigvalsh``,
+``pinv``, ``qr``, ``slogdet``, ``svd``, ``svdvals``) answer NaN in every floating result for such
+a matrix and the usual result for the finite matrices of the same batch, on every backend (numpy
+and torch would raise, jax and tensorflow answer NaN in part); ``det``, ``inv`` and ``solve``
+propagate them as IEEE arithmetic does; ``matrix_rank`` refuses them
+(``ivy/backends/_nonfinite.py``).
 """
 
 from __future__ import annotations
@@ -115,7 +122,8 @@ def diagonal(x: Array, /, *, offset: int = 0, f: Framework = None) -> Array:
 
 @dispatch
 def eigh(x: Array, /, *, f: Framework = None) -> EighResult:
-    """Eigen-decomposition of symmetric (Hermitian) matrices.
+    """Eigen-decomposition of symmetric (Hermitian) matrices, read from their lower triangle on
+    every backend (the upper one is ignored).
 
     Returns:
         A namedtuple ``(eigenvalues, eigenvectors)``: eigenvalues ``[..., M]`` ascending, and
@@ -177,6 +185,10 @@ def matrix_rank(x: Array, /, *, rtol: float | Array | None = None, f: Framework 
 
     Returns:
         int64 ranks ``[...]``.
+
+    Raises:
+        LinAlgError: ``x`` holds NaN or infinity (its rank is undefined), where the values are
+            known; inside a compiled program, where they are not, such a matrix counts 0.
     """
 
 

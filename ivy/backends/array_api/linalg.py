@@ -4,8 +4,25 @@ float32, the default float dtype (numpy, and jax with 64-bit types, would use fl
 
 from __future__ import annotations
 
+from ivy.backends._nonfinite import nan_where_not_finite, refuse_not_finite
 from ivy.backends.array_api._unbound import as_inexact, backend_name, concrete, xp
 from ivy.errors import LinAlgError
+
+
+def _finite_only(compute, x):
+    """``compute(x)``, NaN in the results of the matrices that hold NaN or infinity
+    (``ivy/backends/_nonfinite.py``)."""
+    x = as_inexact(x)
+    ok = xp.all(xp.isfinite(x), axis=(-2, -1))
+    eye = xp.eye(x.shape[-2], x.shape[-1], dtype=x.dtype)
+    return nan_where_not_finite(
+        compute,
+        x,
+        ok,
+        eye,
+        lambda c, a, b: xp.where(c, a, xp.asarray(b, dtype=a.dtype)),
+        lambda y: xp.isdtype(y.dtype, ("real floating", "complex floating")),
+    )
 
 
 def _checked(out, x, name: str, what: str):
@@ -33,7 +50,8 @@ NATIVE = {
 
 def cholesky(x, /, *, upper=False):
     x = as_inexact(x)
-    return _checked(xp.linalg.cholesky(x, upper=upper), x, "cholesky", "not positive definite")
+    out = _finite_only(lambda x: xp.linalg.cholesky(x, upper=upper), x)
+    return _checked(out, x, "cholesky", "not positive definite")
 
 
 def det(x, /):
@@ -41,11 +59,11 @@ def det(x, /):
 
 
 def eigh(x, /):
-    return xp.linalg.eigh(as_inexact(x))
+    return _finite_only(xp.linalg.eigh, x)
 
 
 def eigvalsh(x, /):
-    return xp.linalg.eigvalsh(as_inexact(x))
+    return _finite_only(xp.linalg.eigvalsh, x)
 
 
 def inv(x, /):
@@ -63,19 +81,22 @@ def matrix_power(x, n, /):
 
 
 def matrix_rank(x, /, *, rtol=None):
-    return xp.linalg.matrix_rank(as_inexact(x), rtol=rtol)
+    x = as_inexact(x)
+    if concrete(x):
+        refuse_not_finite(bool(xp.all(xp.isfinite(x))), backend_name)
+    return xp.linalg.matrix_rank(x, rtol=rtol)
 
 
 def pinv(x, /, *, rtol=None):
-    return xp.linalg.pinv(as_inexact(x), rtol=rtol)
+    return _finite_only(lambda x: xp.linalg.pinv(x, rtol=rtol), x)
 
 
 def qr(x, /, *, mode="reduced"):
-    return xp.linalg.qr(as_inexact(x), mode=mode)
+    return _finite_only(lambda x: xp.linalg.qr(x, mode=mode), x)
 
 
 def slogdet(x, /):
-    return xp.linalg.slogdet(as_inexact(x))
+    return _finite_only(xp.linalg.slogdet, x)
 
 
 def solve(x1, x2, /):
@@ -84,11 +105,11 @@ def solve(x1, x2, /):
 
 
 def svd(x, /, *, full_matrices=True):
-    return xp.linalg.svd(as_inexact(x), full_matrices=full_matrices)
+    return _finite_only(lambda x: xp.linalg.svd(x, full_matrices=full_matrices), x)
 
 
 def svdvals(x, /):
-    return xp.linalg.svdvals(as_inexact(x))
+    return _finite_only(xp.linalg.svdvals, x)
 
 
 def vector_norm(x, /, *, axis=None, keepdims=False, ord=2):

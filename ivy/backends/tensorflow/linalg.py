@@ -12,7 +12,7 @@ import math
 import numpy as np
 import tensorflow as tf
 
-from ivy.backends import _signed_zeros
+from ivy.backends import _nonfinite, _signed_zeros
 from ivy.backends.tensorflow._helpers import (
     FAST_TYPES,
     REFUSED,
@@ -85,9 +85,26 @@ def _integer_safe(native, a, b, **kwargs):
     return tf.cast(native(tf.cast(a, tf.int64), tf.cast(b, tf.int64), **kwargs), dtype)
 
 
+def _finite_only(compute, x):
+    """``compute(x)``, NaN in the results of the matrices that hold NaN or infinity
+    (``ivy/backends/_nonfinite.py``; tf's ``eigh`` would raise, its QR answer in part)."""
+    x = floating(x)
+    ok = tf.reduce_all(tf.math.is_finite(x), axis=[-2, -1])
+    shape = tf.shape(x)
+    eye = tf.eye(shape[-2], shape[-1], dtype=x.dtype)
+    return _nonfinite.nan_where_not_finite(
+        compute,
+        x,
+        ok,
+        eye,
+        lambda c, a, b: tf.where(c, a, tf.cast(b, a.dtype)),
+        lambda y: y.dtype.is_floating or y.dtype.is_complex,
+    )
+
+
 def cholesky(x, /, *, upper=False):
     x = floating(x)
-    lower = tf.linalg.cholesky(x)
+    lower = _finite_only(tf.linalg.cholesky, x)
     if tf.executing_eagerly() and not bool(tf.reduce_all(tf.math.is_finite(lower))):
         if bool(tf.reduce_all(tf.math.is_finite(x))):  # tf answers with NaN where numpy raises
             raise LinAlgError(
@@ -123,11 +140,11 @@ def diagonal(x, /, *, offset=0):
 
 
 def eigh(x, /):
-    return EighResult(*tf.linalg.eigh(floating(x)))
+    return _finite_only(lambda x: EighResult(*tf.linalg.eigh(x)), x)
 
 
 def eigvalsh(x, /):
-    return tf.linalg.eigvalsh(floating(x))
+    return _finite_only(tf.linalg.eigvalsh, x)
 
 
 def inv(x, /):
@@ -175,6 +192,8 @@ def matrix_power(x, n, /):
 
 def matrix_rank(x, /, *, rtol=None):
     x = floating(x)
+    if tf.executing_eagerly():
+        _nonfinite.refuse_not_finite(bool(tf.reduce_all(tf.math.is_finite(x))), "tensorflow")
     s = svdvals(x)
     if rtol is None:
         rows, cols = x.shape[-2:]
@@ -191,7 +210,10 @@ def outer(x1, x2, /):
 
 
 def pinv(x, /, *, rtol=None):
-    x = floating(x)
+    return _finite_only(lambda x: _pinv(x, rtol), x)
+
+
+def _pinv(x, rtol):
     real = x.dtype.real_dtype
     if x.shape.num_elements() == 0:  # tf's SVD refuses empty stacks and matrices
         *batch, rows, cols = x.shape
@@ -216,13 +238,15 @@ def pinv(x, /, *, rtol=None):
 def qr(x, /, *, mode="reduced"):
     if mode not in ("reduced", "complete"):
         raise ValueError(f"qr: unknown mode {mode!r}; use 'reduced' or 'complete'.")
-    return QRResult(*tf.linalg.qr(floating(x), full_matrices=mode == "complete"))
+    return _finite_only(
+        lambda x: QRResult(*tf.linalg.qr(x, full_matrices=mode == "complete")), x
+    )
 
 
 def slogdet(x, /):
     """The log of the absolute determinant is real, also for complex matrices (tf gives it the
     input's complex dtype)."""
-    sign, logabsdet = tf.linalg.slogdet(floating(x))
+    sign, logabsdet = _finite_only(tf.linalg.slogdet, x)
     if logabsdet.dtype.is_complex:
         logabsdet = tf.math.real(logabsdet)
     else:  # a singular matrix's sign is 0, not -0
@@ -245,12 +269,15 @@ def solve(x1, x2, /):
 
 
 def svd(x, /, *, full_matrices=True):
-    s, u, v = tf.linalg.svd(floating(x), full_matrices=full_matrices)
-    return SVDResult(u, s, tf.linalg.adjoint(v))
+    def native(x):
+        s, u, v = tf.linalg.svd(x, full_matrices=full_matrices)
+        return SVDResult(u, s, tf.linalg.adjoint(v))
+
+    return _finite_only(native, x)
 
 
 def svdvals(x, /):
-    return tf.linalg.svd(floating(x), compute_uv=False)
+    return _finite_only(lambda x: tf.linalg.svd(x, compute_uv=False), x)
 
 
 def tensordot(x1, x2, /, *, axes=2):

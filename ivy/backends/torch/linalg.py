@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import torch
 
-from ivy.backends import _signed_zeros
+from ivy.backends import _nonfinite, _signed_zeros
 from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
 from ivy.backends.torch._unsigned import promoted, unsigned_safe, work_dtype
 from ivy.core.linalg import SlogdetResult
@@ -21,6 +21,27 @@ _matmul = unsigned_safe(torch.matmul, "matmul", "arith")
 _outer = unsigned_safe(torch.outer, "outer", "arith")
 _tensordot = unsigned_safe(torch.tensordot, "tensordot", "arith")
 _cross = unsigned_safe(torch.linalg.cross, "cross", "arith")
+
+
+def _finite_only(compute, x):
+    """``compute(x)``, NaN in the results of the matrices that hold NaN or infinity
+    (``ivy/backends/_nonfinite.py``; torch would raise on NaN)."""
+    x = as_inexact(x)
+    ok = torch.isfinite(x).flatten(-2).all(-1)
+    eye = torch.eye(x.shape[-2], x.shape[-1], dtype=x.dtype, device=x.device)
+    return _nonfinite.nan_where_not_finite(
+        compute, x, ok, eye, torch.where, lambda y: y.is_floating_point() or y.is_complex()
+    )
+
+
+def _values_known(x) -> bool:
+    """Whether ``x``'s values can be read: not while torch.compile or torch.func traces it."""
+    if torch.compiler.is_compiling():
+        return False
+    try:
+        return not torch._C._functorch.is_functorch_wrapped_tensor(x)
+    except AttributeError:  # (a torch without that query)
+        return True
 
 
 def matmul(x1, x2, /):
@@ -57,7 +78,7 @@ def _promoted(x1, x2):
 
 
 def cholesky(x, /, *, upper=False):
-    return torch.linalg.cholesky(as_inexact(x), upper=upper)
+    return _finite_only(lambda x: torch.linalg.cholesky(x, upper=upper), x)
 
 
 def cross(x1, x2, /, *, axis=-1):
@@ -102,11 +123,11 @@ class _Det(torch.autograd.Function):
 
 
 def eigh(x, /):
-    return torch.linalg.eigh(as_inexact(x))
+    return _finite_only(torch.linalg.eigh, x)
 
 
 def eigvalsh(x, /):
-    return torch.linalg.eigvalsh(as_inexact(x))
+    return _finite_only(torch.linalg.eigvalsh, x)
 
 
 def inv(x, /):
@@ -128,7 +149,10 @@ def matrix_power(x, n, /):
 
 
 def matrix_rank(x, /, *, rtol=None):
-    return torch.linalg.matrix_rank(as_inexact(x), rtol=rtol)
+    x = as_inexact(x)
+    if _values_known(x):
+        _nonfinite.refuse_not_finite(bool(torch.isfinite(x).all()), "torch")
+    return torch.linalg.matrix_rank(x, rtol=rtol)
 
 
 def matrix_transpose(x, /):
@@ -136,16 +160,16 @@ def matrix_transpose(x, /):
 
 
 def pinv(x, /, *, rtol=None):
-    return torch.linalg.pinv(as_inexact(x), rtol=rtol)
+    return _finite_only(lambda x: torch.linalg.pinv(x, rtol=rtol), x)
 
 
 def qr(x, /, *, mode="reduced"):
-    return torch.linalg.qr(as_inexact(x), mode=mode)
+    return _finite_only(lambda x: torch.linalg.qr(x, mode=mode), x)
 
 
 def slogdet(x, /):
     """The sign of a singular matrix's determinant is ``0``, not ``-0``."""
-    sign, logabsdet = torch.linalg.slogdet(as_inexact(x))
+    sign, logabsdet = _finite_only(torch.linalg.slogdet, x)
     if not sign.is_complex():
         sign = _signed_zeros.positive_zero(torch.where, torch.Tensor.detach, sign)
     return SlogdetResult(sign, logabsdet)
@@ -163,11 +187,11 @@ def solve(x1, x2, /):
 
 
 def svd(x, /, *, full_matrices=True):
-    return torch.linalg.svd(as_inexact(x), full_matrices=full_matrices)
+    return _finite_only(lambda x: torch.linalg.svd(x, full_matrices=full_matrices), x)
 
 
 def svdvals(x, /):
-    return torch.linalg.svdvals(as_inexact(x))
+    return _finite_only(torch.linalg.svdvals, x)
 
 
 def tensordot(x1, x2, /, *, axes=2):
