@@ -49,9 +49,27 @@ __all__ = [
     "save_best",
     "read_json",
     "write_json",
+    "prepare_run_folder",
+    "write_config",
+    "RUN_DEFINING",
 ]
 
 RUN_ENTRIES = ("config.json", "log.csv", "checkpoints", "best", "tensorboard")
+# settings that define a run: resuming it with other values is refused
+RUN_DEFINING = (
+    "agent",
+    "environment",
+    "env_kwargs",
+    "wrappers",
+    "workers",
+    "seed",
+    "time_feature",
+    "dtype",
+    "epoch_steps",
+    "save_steps",
+    "test_episodes",
+    "threads",
+)
 
 
 class CheckpointError(ValueError):
@@ -285,3 +303,80 @@ def drop_replay(agent_folder: str) -> None:
         kept[key] = value
     with open(path, "wb") as fh:
         np.savez(fh, **kept)
+
+
+# ------------------------------------------------------------------------------------------
+# The run's folder
+# ------------------------------------------------------------------------------------------
+
+
+def prepare_run_folder(
+    out: str | None, resume: bool, overwrite: bool, *, warn: Callable[[str], None] | None = None
+) -> str | None:
+    """Check a run's folder before anything is built or written: a folder that is not empty is
+    refused unless ``resume`` (continue its run) or ``overwrite`` (start again).
+
+    Returns:
+        The checkpoint to resume from (``resume``; damaged later ones are skipped, each named to
+        ``warn``), else None.
+    """
+    if resume and overwrite:
+        raise ValueError("resume and overwrite exclude each other: continue, or start again")
+    if out is None:
+        if resume:
+            raise ValueError("resume needs the run's folder (out=...)")
+        return None
+    if os.path.exists(out) and not os.path.isdir(out):
+        raise ValueError(f"out={out!r} is a file, not a folder")
+    entries = os.listdir(out) if os.path.isdir(out) else []
+    if resume:
+        checkpoint = usable_checkpoint(out, warn=warn)
+        if checkpoint is None:
+            raise FileNotFoundError(
+                f"cannot resume: no checkpoint in {os.path.join(out, 'checkpoints')}"
+            )
+        return checkpoint
+    if entries and not overwrite:
+        what = [e for e in entries if e in RUN_ENTRIES] or sorted(entries)[:5]
+        raise ValueError(
+            f"the output folder {out!r} is not empty ({', '.join(sorted(what))}): pass "
+            "--resume to continue its run, --overwrite to start again there, or choose "
+            "another --out"
+        )
+    return None
+
+
+def write_config(out: str, record: dict[str, Any], *, resume: bool, overwrite: bool) -> None:
+    """Write ``<out>/config.json``; resuming, refuse settings that differ from the saved run's
+    (:data:`RUN_DEFINING`); overwriting, remove the run's entries first."""
+    path = os.path.join(out, "config.json")
+    if resume and os.path.exists(path):
+        saved = read_json(path)
+        differ = [
+            f"{key}: this run {record[key]!r}, the saved run {saved[key]!r}"
+            for key in RUN_DEFINING
+            if saved.get(key) is not None and _same(key, saved[key], record[key]) is False
+        ]
+        if differ:
+            raise ValueError(
+                f"cannot resume the run in {out!r} with other settings ({'; '.join(differ)})"
+            )
+    if overwrite:
+        for entry in (*RUN_ENTRIES, ".best.partial"):
+            target = os.path.join(out, entry)
+            if os.path.isdir(target):
+                shutil.rmtree(target)
+            elif os.path.exists(target):
+                os.remove(target)
+    os.makedirs(out, exist_ok=True)
+    write_json(path, record)
+
+
+def _same(key: str, saved: Any, value: Any) -> bool:
+    if key == "agent":
+        return str(saved).lower() == str(value).lower()
+    return _jsonable(saved) == _jsonable(value)
+
+
+def _jsonable(value: Any) -> Any:
+    return json.loads(json.dumps(value, default=json_value))

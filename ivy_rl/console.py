@@ -16,14 +16,23 @@ Example:
 from __future__ import annotations
 
 import collections
+import os
 import shlex
 import sys
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any, TextIO
 
-__all__ = ["Console", "format_duration", "command"]
+__all__ = [
+    "Console",
+    "format_duration",
+    "command",
+    "start_line",
+    "summary",
+    "interrupted",
+    "finished",
+]
 
 
 def format_duration(seconds: float) -> str:
@@ -268,3 +277,115 @@ def _format(value: Any) -> str:
     if isinstance(value, int):
         return f"{value:,}" if abs(value) >= 10_000 else str(value)
     return str(value)
+
+
+# ----------------------------------------------------------------------------------------------
+# What the trainer says
+# ----------------------------------------------------------------------------------------------
+
+
+def start_line(
+    agent: str,
+    environment: str,
+    *,
+    framework: str,
+    dtype: str,
+    device: Any,
+    compiled: bool,
+    steps: int,
+    workers: int,
+    seed: int,
+    out: str | None,
+    resumed_at: int | None = None,
+    checkpoint: str | None = None,
+) -> str:
+    """The first line of a run: what trains where, for how long, and where it is written.
+
+    Example:
+        >>> start_line("SAC", "Pendulum-v1", framework="jax", dtype="float32", device="cpu",
+        ...            compiled=True, steps=20_000, workers=1, seed=0, out="runs/sac")
+        'training SAC on Pendulum-v1 with jax (float32, cpu, compiled): 20,000 steps, 1 worker, seed 0 -> runs/sac'
+    """
+    where = f"{framework} ({dtype}, {device}, {'compiled' if compiled else 'eager'})"
+    folder = f" -> {out}" if out is not None else " (no out folder: nothing is saved)"
+    if resumed_at is not None:
+        name = os.path.relpath(checkpoint, out) if checkpoint and out else checkpoint
+        return (
+            f"resuming {agent} on {environment} with {where} from step {resumed_at:,} "
+            f"({name}) to {steps:,} steps{folder}"
+        )
+    return (
+        f"training {agent} on {environment} with {where}: {steps:,} steps, {workers} "
+        f"worker{'s' if workers > 1 else ''}, seed {seed}{folder}"
+    )
+
+
+def summary(
+    rows: Sequence[dict[str, Any]],
+    *,
+    steps: int | None,
+    max_steps: int,
+    elapsed: float,
+    rate: float | None,
+    test_episodes: int,
+    out: str | None,
+) -> list[str]:
+    """The end of a run: steps and time (when it trained: ``steps``), the best and last test
+    scores of ``rows`` (the log), the folder and the commands that play, plot and continue it."""
+    lines = []
+    if steps is not None:
+        speed = f" ({rate:,.0f} steps/s)" if rate else ""
+        lines.append(f"finished: {steps:,} steps in {format_duration(elapsed)}{speed}")
+    scores = [
+        (r["test/episode_score/mean"], r.get("train/steps", 0))
+        for r in rows
+        if r.get("test/episode_score/mean") is not None
+    ]
+    if scores:
+        best, at = max(scores, key=lambda pair: pair[0])
+        plural = "s" if test_episodes > 1 else ""
+        lines.append(
+            f"test score: best {best:.2f} at step {int(at):,}, last {scores[-1][0]:.2f} "
+            f"(mean of {test_episodes} episode{plural})"
+        )
+    if out is not None:
+        best = ["--best"] if os.path.isdir(os.path.join(out, "best")) else []
+        curves = os.path.join(out, "curves.png")
+        lines += [
+            f"run folder: {out}",
+            f"  play:   {command('python', '-m', 'ivy_rl.play', out, *best)}",
+            f"  plot:   {command('python', '-m', 'ivy_rl.plot', out, '--out', curves)}",
+            "  go on:  "
+            + command(
+                "python", "-m", "ivy_rl.train", "--out", out, "--resume", "--steps", 2 * max_steps
+            ),
+        ]
+    return lines
+
+
+def interrupted(
+    steps: int, max_steps: int, out: str | None, saved: str | None, last: str | None
+) -> str:
+    """What Ctrl-C stopped: where, what was saved (``saved``; else the ``last`` checkpoint), and
+    how to resume."""
+    text = f"interrupted at step {steps:,} of {max_steps:,}"
+    if saved is not None:
+        text += f": saved {saved}"
+    elif out is not None:
+        text += ", not saved" + (
+            f" (the last checkpoint is {os.path.basename(last)})" if last else ""
+        )
+    if out is not None and (saved or last):
+        text += "\nresume with: " + command(
+            "python", "-m", "ivy_rl.train", "--out", out, "--resume"
+        )
+    return text
+
+
+def finished(out: str, max_steps: int, steps: int, checkpoint: str) -> str:
+    """A finished run resumed: nothing to train, and how to go on."""
+    return (
+        f"the run in {out} has done its {max_steps:,} steps (its last checkpoint, "
+        f"{os.path.basename(checkpoint)}, is at step {steps:,}): nothing to train; to go on, "
+        f"resume with --steps above {steps:,}"
+    )

@@ -162,6 +162,18 @@ def _default_out(settings: dict[str, Any]) -> str:
     return os.path.join("runs", name.replace("/", "_").replace(":", "_"))
 
 
+def _run_on_another_framework(settings: dict[str, Any]) -> str | None:
+    """The default folder of the same run on another framework, when exactly one exists (a run
+    resumed with ``--framework`` and no ``--out`` continues there)."""
+    found = [
+        path
+        for framework in ("torch", "jax", "tensorflow", "numpy")
+        if framework != settings["framework"]
+        and os.path.isdir(path := _default_out({**settings, "framework": framework}))
+    ]
+    return found[0] if len(found) == 1 else None
+
+
 def _resumed(explicit: dict[str, Any], out: str) -> dict[str, Any]:
     """The saved run's settings, with the explicit flags that may change on resume."""
     saved = _cli.read_config(out)
@@ -254,6 +266,8 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
         raise ValueError("--resume continues a run and --overwrite starts again: choose one")
     settings = {**DEFAULTS, **explicit}
     out = settings["out"] or _default_out(settings)
+    if settings["resume"] and not settings["out"] and not os.path.isdir(out):
+        out = _run_on_another_framework(settings) or out
     if settings["resume"]:
         settings = _resumed(explicit, out)
     settings["out"] = out

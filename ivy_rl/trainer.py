@@ -17,9 +17,6 @@ Example:
 from __future__ import annotations
 
 import contextlib
-import json
-import os
-import shutil
 import signal
 import threading
 import time
@@ -29,6 +26,7 @@ from typing import Any
 import numpy as np
 
 import ivy
+from ivy_rl import console as messages
 from ivy_rl.agents import Agent, make
 from ivy_rl.checkpoints import (
     RUN_ENTRIES,
@@ -37,13 +35,13 @@ from ivy_rl.checkpoints import (
     checkpoints,
     latest_checkpoint,
     load_checkpoint,
-    read_json,
+    prepare_run_folder,
     save_best,
     save_checkpoint,
     usable_checkpoint,
-    write_json,
+    write_config,
 )
-from ivy_rl.console import Console, command, format_duration
+from ivy_rl.console import Console
 from ivy_rl.environments import Workers, make_env
 from ivy_rl.logger import Logger
 from ivy_rl.threads import set_threads
@@ -61,22 +59,6 @@ __all__ = [
     "RUN_ENTRIES",
     "set_threads",
 ]
-
-# settings that define a run: resuming it with other values is refused
-RUN_DEFINING = (
-    "agent",
-    "environment",
-    "env_kwargs",
-    "wrappers",
-    "workers",
-    "seed",
-    "time_feature",
-    "dtype",
-    "epoch_steps",
-    "save_steps",
-    "test_episodes",
-    "threads",
-)
 
 
 class TrainingInterrupted(KeyboardInterrupt):
@@ -207,7 +189,7 @@ class Trainer:
         Returns:
             The log's rows, one per epoch.
         """
-        checkpoint = self._prepare_folder(out, resume, overwrite)
+        checkpoint = prepare_run_folder(out, resume, overwrite, warn=_warn)
         if isinstance(agent, str):
             agent = make(agent, environment=environment)
         if getattr(agent, "differentiable", False):
@@ -236,7 +218,7 @@ class Trainer:
             )  # fmt: skip
             record.update(config or {})
             if out is not None:
-                self._write_config(out, record, resume, overwrite)
+                write_config(out, record, resume=resume, overwrite=overwrite)
         except BaseException:
             self.workers.close()
             if self.test_env is not None:
@@ -262,10 +244,10 @@ class Trainer:
             else:
                 observations = self.workers.start()
                 self.logger.restore(0) if out else None
-            self.console.start(self._start_line(checkpoint))
             if checkpoint is not None and self._total_steps() >= self.max_steps:
                 self._report_finished(checkpoint)
                 return self.logger.rows
+            self.console.start(self._start_line(checkpoint))
             self._session_start = (time.monotonic(), self._total_steps())
             with self._interruptible():
                 try:
@@ -306,33 +288,6 @@ class Trainer:
     # ------------------------------------------------------------------------------------------
     # Set-up
     # ------------------------------------------------------------------------------------------
-
-    def _prepare_folder(self, out: str | None, resume: bool, overwrite: bool) -> str | None:
-        """Check the run's folder before anything is built; the checkpoint to resume from."""
-        if resume and overwrite:
-            raise ValueError("resume and overwrite exclude each other: continue, or start again")
-        if out is None:
-            if resume:
-                raise ValueError("resume needs the run's folder (out=...)")
-            return None
-        if os.path.exists(out) and not os.path.isdir(out):
-            raise ValueError(f"out={out!r} is a file, not a folder")
-        entries = os.listdir(out) if os.path.isdir(out) else []
-        if resume:
-            checkpoint = usable_checkpoint(out, warn=_warn)
-            if checkpoint is None:
-                raise FileNotFoundError(
-                    f"cannot resume: no checkpoint in {os.path.join(out, 'checkpoints')}"
-                )
-            return checkpoint
-        if entries and not overwrite:
-            what = [e for e in entries if e in RUN_ENTRIES] or sorted(entries)[:5]
-            raise ValueError(
-                f"the output folder {out!r} is not empty ({', '.join(sorted(what))}): pass "
-                "--resume to continue its run, --overwrite to start again there, or choose "
-                "another --out"
-            )
-        return None
 
     def _initialize(self, agent, seed, f, dtype, compile, device) -> None:
         spaces = (self.workers.observation_space, self.workers.action_space)
@@ -389,29 +344,6 @@ class Trainer:
             "tensorboard": self.tensorboard,
             "threads": self.threads,
         }
-
-    def _write_config(self, out: str, record: dict[str, Any], resume: bool, overwrite: bool):
-        path = os.path.join(out, "config.json")
-        if resume and os.path.exists(path):
-            saved = read_json(path)
-            differ = [
-                f"{key}: this run {record[key]!r}, the saved run {saved[key]!r}"
-                for key in RUN_DEFINING
-                if saved.get(key) is not None and _same(key, saved[key], record[key]) is False
-            ]
-            if differ:
-                raise ValueError(
-                    f"cannot resume the run in {out!r} with other settings ({'; '.join(differ)})"
-                )
-        if overwrite:
-            for entry in (*RUN_ENTRIES, ".best.partial"):
-                target = os.path.join(out, entry)
-                if os.path.isdir(target):
-                    shutil.rmtree(target)
-                elif os.path.exists(target):
-                    os.remove(target)
-        os.makedirs(out, exist_ok=True)
-        write_json(path, record)
 
     # ------------------------------------------------------------------------------------------
 
@@ -529,83 +461,47 @@ class Trainer:
         raise TrainingInterrupted(path, self._total_steps())
 
     def _report_interrupted(self, saved: str | None) -> None:
-        steps = self._total_steps()
-        lines = [f"interrupted at step {steps:,} of {self.max_steps:,}"]
-        if saved is not None:
-            lines[0] += f": saved {saved}"
-        elif self.out is not None:
-            last = latest_checkpoint(self.out)
-            lines[0] += ", not saved" + (
-                f" (the last checkpoint is {os.path.basename(last)})" if last else ""
-            )
-        if self.out is not None and (saved or latest_checkpoint(self.out)):
-            lines.append(
-                f"resume with: {command('python', '-m', 'ivy_rl.train', '--out', self.out, '--resume')}"
-            )
-        self.console.print("\n".join(lines), always=True, error=True)
+        last = None if saved or self.out is None else latest_checkpoint(self.out)
+        text = messages.interrupted(self._total_steps(), self.max_steps, self.out, saved, last)
+        self.console.print(text, always=True, error=True)
 
     def _start_line(self, checkpoint: str | None) -> str:
         agent = self.agent
-        how = "compiled" if getattr(agent, "compiled", True) else "eager"
-        where = f"{agent.xp.backend} ({agent.dtype}, {agent.device}, {how})"
-        workers = self.workers.num_workers
-        folder = f" -> {self.out}" if self.out is not None else " (no --out: nothing is saved)"
-        if checkpoint is not None:
-            return (
-                f"resuming {type(agent).__name__} on {self.environment} with {where} from step "
-                f"{self._total_steps():,} ({os.path.relpath(checkpoint, self.out)}) to "
-                f"{self.max_steps:,} steps{folder}"
-            )
-        return (
-            f"training {type(agent).__name__} on {self.environment} with {where}: "
-            f"{self.max_steps:,} steps, {workers} worker{'s' if workers > 1 else ''}, seed "
-            f"{self.seed}{folder}"
+        return messages.start_line(
+            type(agent).__name__,
+            self.environment,
+            framework=agent.xp.backend,
+            dtype=agent.dtype,
+            device=agent.device,
+            compiled=getattr(agent, "compiled", True),
+            steps=self.max_steps,
+            workers=self.workers.num_workers,
+            seed=self.seed,
+            out=self.out,
+            resumed_at=self._total_steps() if checkpoint is not None else None,
+            checkpoint=checkpoint,
         )
 
     def _report_finished(self, checkpoint: str) -> None:
-        steps = self._total_steps()
-        self.console.print(
-            f"the run in {self.out} has done its {self.max_steps:,} steps (its last checkpoint, "
-            f"{os.path.basename(checkpoint)}, is at step {steps:,}): nothing to train; to go on, "
-            f"resume with --steps above {steps:,}",
-            always=True,
-        )
-        self.console.summary(self._summary(finished=False))
+        text = messages.finished(self.out, self.max_steps, self._total_steps(), checkpoint)
+        self.console.print(text, always=True)
+        self.console.summary(self._summary(session=None))
 
-    def _summary(self, *, finished: bool = True) -> list[str]:
-        """The end of a run: steps, time, the best and last test scores, the folder and the
-        commands that play, plot and continue it."""
-        lines = []
-        if finished:
-            steps = self._total_steps()
-            done, seconds = (
-                steps - self._session_start[1],
-                time.monotonic() - self._session_start[0],
-            )
-            rate = f" ({done / seconds:,.0f} steps/s)" if done > 0 and seconds > 0 else ""
-            lines.append(f"finished: {steps:,} steps in {format_duration(self.elapsed)}{rate}")
-        scores = [r.get("test/episode_score/mean") for r in self.logger.rows]
-        scores = [
-            (s, r.get("train/steps")) for s, r in zip(scores, self.logger.rows) if s is not None
-        ]
-        if scores:
-            best, at = max(scores, key=lambda pair: pair[0])
-            lines.append(
-                f"test score: best {best:.2f} at step {int(at):,}, last {scores[-1][0]:.2f} "
-                f"(mean of {self.test_episodes} episode{'s' if self.test_episodes > 1 else ''})"
-            )
-        if self.out is not None:
-            best = os.path.join(self.out, "best")
-            play = ["python", "-m", "ivy_rl.play", self.out] + (
-                ["--best"] if os.path.isdir(best) else []
-            )
-            lines += [
-                f"run folder: {self.out}",
-                f"  play:   {command(*play)}",
-                f"  plot:   {command('python', '-m', 'ivy_rl.plot', self.out, '--out', os.path.join(self.out, 'curves.png'))}",
-                f"  go on:  {command('python', '-m', 'ivy_rl.train', '--out', self.out, '--resume', '--steps', 2 * self.max_steps)}",
-            ]
-        return lines
+    def _summary(self, *, session: tuple[float, int] | None = ()) -> list[str]:
+        session = self._session_start if session == () else session
+        rate = None
+        if session is not None:
+            done, seconds = self._total_steps() - session[1], time.monotonic() - session[0]
+            rate = done / seconds if done > 0 and seconds > 0 else None
+        return messages.summary(
+            self.logger.rows,
+            steps=self._total_steps() if session is not None else None,
+            max_steps=self.max_steps,
+            elapsed=self.elapsed,
+            rate=rate,
+            test_episodes=self.test_episodes,
+            out=self.out,
+        )
 
     def _check_compiles(self, where: str) -> None:
         """Warn (once per growth) when the agent compiles again after its first update."""
@@ -729,15 +625,3 @@ def _warn(message: str) -> None:
 
 def _qualified(obj: Any) -> str:
     return f"{obj.__module__}:{obj.__qualname__}"
-
-
-def _same(key: str, saved: Any, value: Any) -> bool:
-    if key == "agent":
-        return str(saved).lower() == str(value).lower()
-    return _jsonable(saved) == _jsonable(value)
-
-
-def _jsonable(value: Any) -> Any:
-    from ivy_rl.checkpoints import json_value
-
-    return json.loads(json.dumps(value, default=json_value))

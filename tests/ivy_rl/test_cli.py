@@ -212,8 +212,14 @@ def test_run_files_default_folders_exact_steps_and_a_log_kept_as_written(tmp_pat
     # the default folder names the framework: the same run on a second framework is its own
     monkeypatch.chdir(tmp_path)
     base = ["--agent", "Uniform", "--workers", "2", "--steps", "32", "--epoch-steps", "16"]
-    for framework in ("torch", "numpy"):
+    for framework in ("numpy", "torch"):
         train.main([*base, "--test-episodes", "1", "--quiet", "-f", framework])
+        if framework == "numpy":  # resumed on another framework, without --out: continued there
+            rows = train.main([*base, "--resume", "--steps", "48", "-f", "torch", "--quiet"])
+            assert rows[-1]["train/steps"] == 48
+            assert (
+                _config(tmp_path / "runs" / "Uniform-CartPole-v1-numpy-0")["framework"] == "torch"
+            )
     assert sorted(os.listdir(tmp_path / "runs")) == [
         "Uniform-CartPole-v1-numpy-0",
         "Uniform-CartPole-v1-torch-0",
