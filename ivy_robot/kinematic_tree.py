@@ -113,8 +113,12 @@ class KinematicTree:
         self._limit_joints = tuple(int(p.dof_jnt[d]) for d in p.rows.limit_dof[::2])
 
     @classmethod
-    def from_mjcf(cls, source: Any) -> KinematicTree:
+    def from_mjcf(cls, source: Any, **unknown: Any) -> KinematicTree:
         """Parse an MJCF model once, through MuJoCo, into a kinematic tree.
+
+        The tree holds no array of any framework (its constants are numpy): every method
+        computes on the backend and device of the arrays passed to it, so there is no
+        ``device=`` here (put ``q`` on the device: ``ivy.asarray(q, device="gpu:0")``).
 
         Args:
             source: a path to an ``.xml`` file, an MJCF XML string, or a ``mujoco.MjModel``.
@@ -124,12 +128,20 @@ class KinematicTree:
 
         Raises:
             ValueError: an unsupported joint type, or a model MuJoCo cannot compile.
+            TypeError: an argument other than ``source`` (``device=``, ``dtype=``: see above).
 
         Example:
             >>> tree = KinematicTree.from_mjcf(panda_mjcf())   # or a path, or an MjModel
             >>> tree.body_names[:3], tree.nq
             (('world', 'link0', 'link1'), 7)
         """
+        if unknown:
+            raise TypeError(
+                f"KinematicTree.from_mjcf takes only the model, got {sorted(unknown)}: the tree "
+                "holds no arrays, and every method computes on the backend, device and dtype of "
+                "the arrays passed to it (e.g. tree.forward_kinematics(ivy.asarray(q, "
+                "device='gpu:0', dtype='float64', f='torch')))."
+            )
         return cls(load_mjcf(source))
 
     @property

@@ -12,6 +12,7 @@ import pytest
 
 import ivy
 import ivy_robot
+from tests.conftest import device_for
 from tests.helpers import assert_close, native, numpy_of
 from tests.ivy_robot._models import ALL_FEATURES, HINGE_SLIDE, gymnasium_models, random_qpos
 from tests.ivy_robot._utils import autodiff_jacobian, mujoco_jacobians, mujoco_kinematics
@@ -227,6 +228,16 @@ def test_bad_sources(tmp_path):
     path.write_text(UNIVERSAL)
     with pytest.raises(ValueError, match="universal"):
         ivy_robot.KinematicTree.from_mjcf(path)
+
+
+def test_the_device_is_the_inputs(backend, compiled):
+    """The tree holds no arrays: from_mjcf takes no device (a clear error says where it goes),
+    and the results are on the inputs' device."""
+    with pytest.raises(TypeError, match=r"takes only the model, got \['device'\].*device="):
+        ivy_robot.KinematicTree.from_mjcf(MODELS["all_features"], device="gpu:0")
+    _, tree = compiled["all_features"]
+    q = ivy.asarray(np.zeros((2, tree.nq)), device=device_for(backend), f=backend)
+    assert ivy.dev(tree.forward_kinematics(q)) == ivy.dev(q)
 
 
 def test_bad_qpos_and_names(backend, compiled):
