@@ -18,6 +18,7 @@ from __future__ import annotations
 import collections
 import os
 import shlex
+import shutil
 import sys
 import threading
 import time
@@ -186,6 +187,12 @@ class Console:
         self._last_draw = time.monotonic()
         line = self.bar(steps, max_steps, elapsed)
         if self.tty:
+            # one line of the terminal (a wrapped line is not redrawn in place): a narrower bar,
+            # then the line cut
+            columns = shutil.get_terminal_size((100, 24)).columns - 1
+            if len(line) > columns:
+                width = max(30 - (len(line) - columns), 10)
+                line = self.bar(steps, max_steps, elapsed, width=width)[:columns]
             self.stderr.write("\r\033[K" + line)
             self._bar_shown = True
         else:
