@@ -204,7 +204,7 @@ class Env:
 
         Example:
             >>> ivy_gym.PendulumSmooth().narrowed(0.1).initial_bounds()
-            (array([-0.31415927, -0.1]), array([0.31415927, 0.1]))
+            (array([-0.31415927, -0.1       ]), array([0.31415927, 0.1       ]))
         """
         if not 0.0 < float(scale) <= 1.0:
             raise ValueError(f"narrowed: scale must be in (0, 1], got {scale!r}.")

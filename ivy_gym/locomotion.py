@@ -190,8 +190,8 @@ class Walker2d(_Runner):
 
     Example:
         >>> env = ivy_gym.Walker2d()
-        >>> s = env.reset((16,), dtype="float64", f="jax")
-        >>> s, obs, reward, terminated = env.step(s, jnp.zeros((16, 6)))
+        >>> s = env.reset((16,), dtype="float64", f="numpy")
+        >>> s, obs, reward, terminated = env.step(s, np.zeros((16, 6)))
     """
 
     Params = Walker2dParams

@@ -652,7 +652,7 @@ def mean_return(
         The mean undiscounted return, a float.
 
     Example:
-        >>> ivy_gym.mean_return(ivy_gym.PendulumSmooth(), 100, f="torch")  # a random policy
+        >>> score = ivy_gym.mean_return(ivy_gym.PendulumSmooth(), 100, f="torch")  # a random policy
     """
     xp = ivy.get_framework(v, f=f) if v is not None else ivy.get_framework(f=f)
     device = _device_of(xp, v) if device is None else device

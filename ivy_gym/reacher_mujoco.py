@@ -89,8 +89,8 @@ class ReacherMuJoCo(MuJoCoEnv):
 
     Example:
         >>> env = ivy_gym.ReacherMuJoCo()
-        >>> s = env.reset((16,), dtype="float64", f="jax")
-        >>> s, obs, reward, terminated = env.step(s, jnp.zeros((16, 2)))
+        >>> s = env.reset((16,), dtype="float64", f="numpy")
+        >>> s, obs, reward, terminated = env.step(s, np.zeros((16, 2)))
     """
 
     Params = ReacherMuJoCoParams

@@ -9,6 +9,7 @@ Example:
     >>> traj = ivy_gym.rollout(env, env.reset(f="numpy"), np.zeros((50, 1), np.float32))
     >>> frames = ivy_gym.render_trajectory(env, traj.states)
     >>> ivy_gym.save_video(frames, "swing.gif", fps=env.render_fps)
+    'swing.gif'
 """
 
 from __future__ import annotations
@@ -143,6 +144,8 @@ def render_trajectory(
         A list of ``T`` uint8 arrays ``(height, width, 3)``.
 
     Example:
+        >>> env = ivy_gym.CartPoleSwingUp()
+        >>> traj = ivy_gym.rollout(env, env.reset((2,), f="numpy"), np.zeros((10, 2, 1), np.float32))
         >>> frames = ivy_gym.render_trajectory(env, traj.states, index=0)
     """
     s = np.asarray(ivy.to_numpy(states), np.float64)
@@ -182,6 +185,7 @@ def save_video(frames: Sequence[np.ndarray], path: str | os.PathLike, *, fps: in
         The path written, as a string.
 
     Example:
+        >>> frames = [np.zeros((32, 32, 3), np.uint8)] * 3
         >>> ivy_gym.save_video(frames, "demo_out/pendulum.gif", fps=30)
         'demo_out/pendulum.gif'
     """

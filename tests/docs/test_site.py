@@ -60,31 +60,27 @@ def inventory(path: pathlib.Path) -> set[str]:
     return names
 
 
-@pytest.fixture(scope="module")
-def site(tmp_path_factory):
-    out = tmp_path_factory.mktemp("site")
+def build_site(out: pathlib.Path) -> subprocess.CompletedProcess:
+    """The README's command, into ``out``."""
     command = [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-q", "-c", "docs/site"]
-    build = subprocess.run(
+    return subprocess.run(
         [*command, "-d", str(out / ".doctrees"), ".", str(out)],
         cwd=ROOT,
         capture_output=True,
         text=True,
     )
+
+
+def test_the_site_builds_and_documents_every_public_name(tmp_path):
+    """One test (one build, whichever worker runs it): no warning, the pages, the notebooks
+    with their stored outputs, the figures, and a reference entry for every public name."""
+    build = build_site(tmp_path)
     assert build.returncode == 0, f"the site's build warned or failed:\n{build.stderr[-6000:]}"
-    return out
-
-
-def test_the_site_builds_without_warnings(site):
     for page in ("index.html", "docs/site/index.html", "docs/site/getting_started.html"):
-        assert (site / page).is_file(), page
-    notebooks = sorted(p.stem for p in (ROOT / "notebooks").glob("*.ipynb"))
-    for name in notebooks:
-        html = (site / "notebooks" / f"{name}.html").read_text()
-        assert "output" in html, f"{name}: rendered without its stored outputs"
-    assert (site / "_images").is_dir() and any((site / "_images").glob("profile_overhead*.png"))
-
-
-def test_every_public_name_has_a_reference_entry(site):
-    documented = inventory(site / "objects.inv")
-    missing = sorted(public_names() - documented)
+        assert (tmp_path / page).is_file(), page
+    for notebook in sorted((ROOT / "notebooks").glob("*.ipynb")):
+        html = (tmp_path / "notebooks" / f"{notebook.stem}.html").read_text()
+        assert "cell_output" in html, f"{notebook.name}: rendered without its stored outputs"
+    assert any((tmp_path / "_images").glob("profile_overhead*.png")), "the overhead figure"
+    missing = sorted(public_names() - inventory(tmp_path / "objects.inv"))
     assert not missing, f"public names without a reference entry: {missing}"

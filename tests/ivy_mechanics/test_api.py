@@ -4,17 +4,15 @@ that resolve the framework once (no ``ivy.<fn>`` dispatch inside, no clamps)."""
 
 from __future__ import annotations
 
-import doctest
-import importlib
 import inspect
 import pathlib
 import pkgutil
 import re
 
-import numpy as np
 import pytest
 
 import ivy_mechanics as mech
+from tests._doctests import docstring_examples, run_example
 from tests.ivy_mechanics._cases import CASES, NOT_FUNCTIONS, RANDOM_CASES
 
 PACKAGE = pathlib.Path(mech.__file__).parent
@@ -40,13 +38,10 @@ def test_signature_and_docstring(name):
         assert section in doc, f"{name} docstring lacks {section}"
 
 
-@pytest.mark.parametrize("module", MODULES)
-def test_docstring_examples(module):
-    globs = {"np": np, **{n: getattr(mech, n) for n in mech.__all__}}
-    result = doctest.testmod(
-        importlib.import_module(module), extraglobs=globs, optionflags=doctest.NORMALIZE_WHITESPACE
-    )
-    assert result.failed == 0
+@pytest.mark.parametrize("example", docstring_examples(MODULES))
+def test_docstring_examples(example, request, tmp_path, monkeypatch):
+    globs = {n: getattr(mech, n) for n in mech.__all__}
+    run_example(example, globs, request.config, tmp_path, monkeypatch)
 
 
 def test_compositions_resolve_the_framework_once():

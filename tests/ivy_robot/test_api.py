@@ -6,7 +6,7 @@ private module imported."""
 
 from __future__ import annotations
 
-import doctest
+import functools
 import importlib
 import importlib.util
 import inspect
@@ -21,6 +21,7 @@ import pytest
 
 import ivy_robot
 from ivy_robot import physics
+from tests._doctests import docstring_examples, run_example
 
 PACKAGE = pathlib.Path(ivy_robot.__file__).parent
 MODULES = ["ivy_robot"] + sorted(
@@ -97,22 +98,28 @@ def test_signature_and_docstring(fn):
         assert section in doc, f"{fn.__qualname__} docstring lacks {section}"
 
 
-@pytest.mark.parametrize("module", MODULES)
-def test_docstring_examples(module):
+@pytest.mark.parametrize("example", docstring_examples(MODULES))
+def test_docstring_examples(example, request, tmp_path, monkeypatch):
+    module = example.globs["__name__"]
+    run_example(example, _globals(module), request.config, tmp_path, monkeypatch)
+
+
+def test_every_public_module_has_examples():
+    with_examples = {example.values[0].globs["__name__"] for example in docstring_examples(MODULES)}
+    public = {m for m in MODULES[1:] if not m.split(".")[-1].startswith("_")}
+    assert public <= with_examples, f"modules without a runnable example: {public - with_examples}"
+
+
+@functools.cache
+def _shared_globals(module: str) -> dict:
+    """What the examples of one module share (as when the module's examples ran together): the
+    Panda's tree, a drone planner, MuJoCo's Hopper for the physics modules."""
     import ivy_mechanics as mech
 
-    source = inspect.getsource(importlib.import_module(module))
-    for framework in ("torch", "jax", "tensorflow"):
-        if f">>> import {framework}" in source and importlib.util.find_spec(framework) is None:
-            pytest.skip(f"{module}'s examples use {framework}, which is not installed")
-
     globs = {
-        "np": np,
-        "math": __import__("math"),
         "mech": mech,
         **{n: getattr(ivy_robot, n) for n in ivy_robot.__all__},
         "tree": ivy_robot.KinematicTree.from_mjcf(ivy_robot.panda_mjcf()),
-        "ivy": __import__("ivy"),
         # the drone of DronePlanner's example, for the examples of the planners' methods
         "planner": ivy_robot.DronePlanner(
             ivy_robot.RigidMobile([[0.0, 0.0, 0.0]]),
@@ -124,14 +131,11 @@ def test_docstring_examples(module):
     }
     if module in PHYSICS or module == "ivy_robot.physics":
         globs.update(_physics_globals())
-    result = doctest.testmod(
-        importlib.import_module(module),
-        extraglobs=globs,
-        optionflags=doctest.NORMALIZE_WHITESPACE | doctest.ELLIPSIS,
-    )
-    assert result.failed == 0
-    if module != "ivy_robot" and not module.split(".")[-1].startswith("_"):
-        assert result.attempted > 0, f"{module} has no runnable example"
+    return globs
+
+
+def _globals(module: str) -> dict:
+    return dict(_shared_globals(module))
 
 
 def _physics_globals() -> dict:

@@ -4,18 +4,16 @@ framework once, and an import that loads no framework."""
 
 from __future__ import annotations
 
-import doctest
-import importlib
 import inspect
 import pathlib
 import re
 import subprocess
 import sys
 
-import numpy as np
 import pytest
 
 import ivy_vision as vis
+from tests._doctests import docstring_examples, run_example
 from tests.ivy_vision._cases import CASES
 
 PACKAGE = pathlib.Path(vis.__file__).parent
@@ -64,13 +62,15 @@ def test_signature_and_docstring(name):
         assert section in doc, f"{name} docstring lacks {section}"
 
 
-@pytest.mark.parametrize("module", MODULES)
-def test_docstring_examples(module):
-    globs = {"np": np, **{n: getattr(vis, n) for n in vis.__all__}}
-    result = doctest.testmod(
-        importlib.import_module(module), extraglobs=globs, optionflags=doctest.NORMALIZE_WHITESPACE
-    )
-    assert result.attempted > 0 and result.failed == 0
+@pytest.mark.parametrize("example", docstring_examples(MODULES))
+def test_docstring_examples(example, request, tmp_path, monkeypatch):
+    globs = {n: getattr(vis, n) for n in vis.__all__}
+    run_example(example, globs, request.config, tmp_path, monkeypatch)
+
+
+def test_every_module_has_examples():
+    with_examples = {example.values[0].globs["__name__"] for example in docstring_examples(MODULES)}
+    assert set(MODULES) == with_examples, set(MODULES) - with_examples
 
 
 def test_compositions_resolve_the_framework_once():
