@@ -329,8 +329,9 @@ def held_dtype(xp: Any, dtype: Any) -> np.dtype:
     float32, as jax itself would store them).
 
     Example:
-        >>> held_dtype(ivy.jax, np.float64)  # jax_enable_x64 off
-        dtype('float32')
+        >>> held_dtype(ivy.get_framework(f="numpy"), "float64")
+        dtype('float64')
+        >>> # on jax with its 64-bit types off (as it starts): dtype('float32')
     """
     dtype = np.dtype(dtype)
     narrower = _NARROWER.get(dtype.name)

@@ -10,7 +10,8 @@ run, a finished run resumed) are printed.
 Example:
     >>> console = Console()
     >>> console.start("training PPO on CartPole-v1 with torch: 100,000 steps -> runs/ppo")
-    >>> console.progress(5_000, 100_000, elapsed=4.2)
+    training PPO on CartPole-v1 with torch: 100,000 steps -> runs/ppo
+    >>> console.progress(5_000, 100_000, elapsed=4.2)  # the bar, on stderr
 """
 
 from __future__ import annotations
@@ -75,6 +76,7 @@ class Console:
 
     Example:
         >>> Console(quiet=True).summary(["finished: 1,000 steps in 0:00:02"])
+        finished: 1,000 steps in 0:00:02
     """
 
     def __init__(
@@ -169,8 +171,8 @@ class Console:
         """The progress line: percent, bar, steps, rate, elapsed time and time left.
 
         Example:
-            >>> Console().bar(5_000, 20_000, 12.0)
-            ' 25% [#######-----------------------] 5,000/20,000 steps | ... | elapsed 0:00:12'
+            >>> Console().bar(5_000, 20_000, 12.0)  # no rate measured yet
+            ' 25% [#######-----------------------] 5,000/20,000 steps | - steps/s | elapsed 0:00:12 | left ?'
         """
         done = min(steps / max(max_steps, 1), 1.0)
         filled = int(width * done)

@@ -105,6 +105,8 @@ def check_environment_id(env_id: str) -> None:
 
     Example:
         >>> check_environment_id("CartPol-v1")
+        Traceback (most recent call last):
+        ...
         ValueError: unknown environment 'CartPol-v1'; did you mean: CartPole-v1, CartPole-v0, ...
     """
     if not isinstance(env_id, str) or not env_id:

@@ -2,7 +2,10 @@
 ``evaluate_policy`` does.
 
 Example:
-    >>> mean, std = ivy_rl.evaluate(agent, "CartPole-v1", episodes=10)
+    >>> import gymnasium
+    >>> env = gymnasium.make("CartPole-v1")
+    >>> agent = ivy_rl.Constant().initialize(env.observation_space, env.action_space)
+    >>> mean, std = ivy_rl.evaluate(agent, env, episodes=10)
 """
 
 from __future__ import annotations
@@ -40,10 +43,13 @@ def evaluate(
         ``(mean, std)`` of the episodes' scores, or ``(scores, lengths)``.
 
     Example:
-        >>> agent = ivy_rl.agents.make("PPO", environment="CartPole-v1")
-        >>> agent.initialize(env.observation_space, env.action_space, f="torch")
-        >>> ivy_rl.evaluate(agent, env, episodes=5)
-        (21.4, 9.6)
+        >>> import gymnasium
+        >>> env = gymnasium.make("CartPole-v1")
+        >>> agent = ivy_rl.Constant().initialize(env.observation_space, env.action_space)
+        >>> ivy_rl.evaluate(agent, env, episodes=3)  # always pushing left
+        (10.0, 0.816496580927726)
+        >>> ivy_rl.evaluate(agent, "CartPole-v1", episodes=3, return_episode_rewards=True)
+        ([11.0, 10.0, 9.0], [11, 10, 9])
     """
     if isinstance(episodes, bool) or not isinstance(episodes, (int, np.integer)) or episodes < 1:
         raise ValueError(f"episodes must be an integer >= 1, got {episodes!r}")

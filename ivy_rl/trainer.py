@@ -105,7 +105,7 @@ class Trainer:
             machine, where more threads wait on each other.
 
     Example:
-        >>> Trainer(steps=50_000, epoch_steps=5_000, test_episodes=5)
+        >>> trainer = Trainer(steps=50_000, epoch_steps=5_000, test_episodes=5)
     """
 
     def __init__(
