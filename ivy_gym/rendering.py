@@ -145,7 +145,8 @@ def render_trajectory(
 
     Example:
         >>> env = ivy_gym.CartPoleSwingUp()
-        >>> traj = ivy_gym.rollout(env, env.reset((2,), f="numpy"), np.zeros((10, 2, 1), np.float32))
+        >>> state = env.reset((2,), f="numpy")
+        >>> traj = ivy_gym.rollout(env, state, np.zeros((10, 2, 1), np.float32))
         >>> frames = ivy_gym.render_trajectory(env, traj.states, index=0)
     """
     s = np.asarray(ivy.to_numpy(states), np.float64)

@@ -17,10 +17,10 @@ and what the caller adds. Examples run in a temporary directory (some save files
 name jax run with its 64-bit types off, as users get it by default.
 
 Examples too slow for the suite's time budget are listed by name (``slow=``) and run only with
-``IVY_SLOW_EXAMPLES=1``. Only the modules whose source holds an example (``>>>``) are imported to collect them, so that a
-backend package is never imported for nothing. Known failures are listed by the docstring's name
-(``xfail={"pkg.module.fn": "why"}``); one that passes shows as XPASS in the summary, to be removed
-from the list.
+``IVY_SLOW_EXAMPLES=1``. Only the modules whose source holds an example (``>>>``) are imported to
+collect them, so that a backend package is never imported for nothing. Known failures are listed by
+the docstring's name (``xfail={"pkg.module.fn": "why"}``); one that passes shows as XPASS in the
+summary, to be removed from the list.
 """
 
 from __future__ import annotations

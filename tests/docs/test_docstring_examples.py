@@ -53,15 +53,11 @@ IVY_RL_XFAIL = {
     "ivy_rl.agents.trpo.TRPO": "TRPO(max_kl=0.01, cg_steps=10, backtrack_steps=10) -> output differs",
     "ivy_rl.buffers": "NameError: name 'obs' is not defined",
     "ivy_rl.buffers.TransitionReplay.windows": "NameError: name 'replay' is not defined",
-    "ivy_rl.buffers.held_dtype": "held_dtype(ivy.jax, np.float64)  # jax_enable_x64 off -> output differs",
     "ivy_rl.buffers.n_step_batch": "NameError: name 'replay' is not defined",
     "ivy_rl.checkpoints": "TypeError: expected str, bytes or os.PathLike object, not NoneType",
     "ivy_rl.checkpoints.check_checkpoint": "CheckpointError: runs/ppo/checkpoints/step_100000/agent.json is missing",
     "ivy_rl.checkpoints.checkpoints": "checkpoints('runs/ppo') -> output differs",
     "ivy_rl.checkpoints.latest_checkpoint": "latest_checkpoint('runs/ppo') -> output differs",
-    "ivy_rl.console": "console.start('training PPO on CartPole-v1 with torch: 100,000 steps - -> output differs",
-    "ivy_rl.console.Console": "Console(quiet=True).summary(['finished: 1,000 steps in 0:00:02']) -> output differs",
-    "ivy_rl.console.Console.bar": "Console().bar(5_000, 20_000, 12.0) -> output differs",
     "ivy_rl.critics": "NameError: name 'rng' is not defined",
     "ivy_rl.critics.ActionValueCritic": "NoFrameworkError: A Module needs a framework to create its variables. Pass f='torch' (or f=ivy.torch), a fra",
     "ivy_rl.critics.BranchingQHead": "NameError: name 'x' is not defined",
@@ -76,9 +72,6 @@ IVY_RL_XFAIL = {
     "ivy_rl.distributions.SquashedNormal": "NameError: name 'loc' is not defined",
     "ivy_rl.environments": "NameError: name 'actions' is not defined",
     "ivy_rl.environments.TimeFeature": "NameError: name 'gymnasium' is not defined",
-    "ivy_rl.environments.check_environment_id": "ValueError: unknown environment 'CartPol-v1'; did you mean: CartPole-v1, CartPole-v0, phys2d/CartPole-",
-    "ivy_rl.evaluation": "NameError: name 'agent' is not defined",
-    "ivy_rl.evaluation.evaluate": "NameError: name 'env' is not defined",
     "ivy_rl.explorations": "NameError: name 'policy_actions' is not defined",
     "ivy_rl.explorations.EpsilonGreedy": "NameError: name 'greedy' is not defined",
     "ivy_rl.explorations.NoNoise": "NameError: name 'rng' is not defined",
@@ -112,7 +105,6 @@ IVY_RL_XFAIL = {
     "ivy_rl.returns.lambda_returns": "NameError: name 'r' is not defined",
     "ivy_rl.returns.n_step_returns": "NameError: name 'r' is not defined",
     "ivy_rl.schedules.as_schedule": "as_schedule('linear:1e-3:1e-4')(1.0) -> output differs",
-    "ivy_rl.trainer.Trainer": "Trainer(steps=50_000, epoch_steps=5_000, test_episodes=5) -> output differs",
     "ivy_rl.updaters": "NameError: name 'dist' is not defined",
     "ivy_rl.updaters.ClippedRatio": "ivy_rl.PPO(actor_updater=ClippedRatio(lr=1e-3, ratio_clip=0.2, kl_thre -> output differs",
     "ivy_rl.updaters.GradientUpdater": "NameError: name 'v' is not defined",
@@ -122,8 +114,11 @@ IVY_RL_XFAIL = {
     "ivy_rl.updaters.conjugate_gradient": "NameError: name 'grads' is not defined",
 }
 
-#: ivy_rl's examples that train for real (100,000 steps): they run with ``IVY_SLOW_EXAMPLES=1``.
+#: ivy_rl's examples that train for real or start a Ray cluster (which forks the process under
+#: jax's threads): they run with ``IVY_SLOW_EXAMPLES=1``.
 IVY_RL_SLOW = {
+    "ivy_rl.distributed": "starts a local Ray cluster",
+    "ivy_rl.distributed.RayVectorEnv": "starts a local Ray cluster",
     "ivy_rl": "trains PPO on CartPole for 100,000 steps",
     "ivy_rl.trainer": "trains PPO on CartPole for 100,000 steps",
     "ivy_rl.train.main": "trains A2C for 2,000 steps",
