@@ -221,9 +221,7 @@ EXPLORATIONS = {
 }
 
 
-def make_exploration(
-    name: str = "normal", scale: float = 0.1, *, start_steps: int = 0
-) -> NoNoise:
+def make_exploration(name: str = "normal", scale: float = 0.1, *, start_steps: int = 0) -> NoNoise:
     """An exploration noise by name: ``'normal'``, ``'ornstein_uhlenbeck'`` or ``'none'``
     (``start_steps``: steps of uniformly random actions first).
 

@@ -81,7 +81,9 @@ class ActorQModel:
         "normalize_observations": _s.Setting(
             "bool", meaning="normalise observations by their running mean and std"
         ),
-        "target_tau": _s.Setting("float", 0.0, 1.0, open_low=True, meaning="soft update of targets"),
+        "target_tau": _s.Setting(
+            "float", 0.0, 1.0, open_low=True, meaning="soft update of targets"
+        ),
         "v_min": _s.Setting("float", meaning="lowest value of the categorical critic's support"),
         "v_max": _s.Setting("float", meaning="highest value of the categorical critic's support"),
         "atoms": _s.Setting("int", 2, meaning="atoms of the categorical critic's support"),
