@@ -12,9 +12,14 @@ agents (:mod:`ivy_rl.agents.fusion`): ``'update'`` compiles the whole scan where
 compiles loops as loops (``compiled_loops``), ``'steps'`` compiles one step and loops on the host
 where the compiler would unroll the scan; both give the same numbers as running eagerly.
 
-Subclasses build their parts in :meth:`OffPolicyAgent._build_parts` (the variables ``v`` by part,
-the optimisers by part, the targets), act in :meth:`OffPolicyAgent._policy_actions`, and learn
-in :meth:`OffPolicyAgent._learn_step`.
+An agent is its parts, as in Tonic (:attr:`~ivy_rl.agents.Agent.parts`): a ``model``
+(:mod:`ivy_rl.off_policy_models`: the networks, how they act, which have targets), a ``replay``
+(:class:`ivy_rl.replays.Transitions`: the ring and when to learn from it), an ``exploration``
+(:mod:`ivy_rl.explorations`, on the host) and updaters (:mod:`ivy_rl.off_policy_updaters`:
+``critic_updater`` then ``actor_updater``, or DQN's ``updater``), each given to the constructor
+or built from the flat settings. Each optimisation step reads its batch, runs each updater's
+step and moves the targets (:meth:`OffPolicyAgent._learn_step`); a subclass is its ``parts``
+table and what differs (TD3: the grouping of its critic steps).
 """
 
 from __future__ import annotations
