@@ -345,3 +345,112 @@ def test_settings_table_states_where_make_differs_from_the_constructor():
     made = ivy_rl.agents.make("SAC", environment="Pendulum-v1").config
     assert all(made[name] == row["family_default"] for name, row in rows.items())
     assert rows["hidden_sizes"]["part"] == "model" and rows["fusion"]["part"] == "agent"
+
+
+# ----------------------------------------------------------------------------------------------
+# MPO's critic, and the parts of the agents that learn through ivy_gym's gradients
+# ----------------------------------------------------------------------------------------------
+
+
+def test_expected_sarsa_averages_the_target_critic_over_sampled_actions(diff_backend):
+    from ivy_rl.off_policy_updaters import ExpectedSARSA
+
+    xp = getattr(ivy, diff_backend)
+    model = _model(xp, policy="gaussian")
+    raw, batch = _batch(xp, np.random.default_rng(12))
+    critic = _updater(ExpectedSARSA, xp, model, num_samples=3)
+    noise = critic.draw(np.random.default_rng(13), 1, BATCH)["next_noise"][0]
+    assert noise.shape == (3, BATCH, 2)
+    goal = critic.goal(model.v, model.target_v, batch, None, {"next_noise": xp.asarray(noise)})
+    nxt, t = raw["next_observations"], model.target_v
+    dist = model.actor(xp.asarray(nxt), None, v=t["actor"])
+    actions = np.clip(_np(dist.loc)[None] + _np(dist.scale)[None] * noise, -1.0, 1.0)
+    values = np.mean([_q(t["critic"], nxt, a) for a in actions], axis=0)
+    expected = raw["returns"] + raw["discounts"] * values
+    np.testing.assert_allclose(_np(goal), expected, rtol=1e-10, atol=1e-12)
+
+
+def _tanh_mlp(torso_v, x):
+    layers = torso_v["mlp"]["layers"]
+    for key in sorted(layers, key=int):
+        x = np.tanh(x @ _np(layers[key]["w"]).T + _np(layers[key]["b"]))
+    return x
+
+
+def test_actor_value_model_matches_numpy(backend, xp):
+    from ivy_rl.differentiable_parts import ActorValueModel
+
+    model = ActorValueModel((5,), critic=True).initialize(
+        3, 2, rng=np.random.default_rng(0), dtype="float64", f=xp
+    )
+    obs = np.random.default_rng(14).normal(size=(4, 3))
+    actor_v = model.v["actor"]
+    expected = np.tanh(_dense(actor_v["head"]["layer"], _tanh_mlp(actor_v["torso"], obs)))
+    got = _np(model.actor(xp.asarray(obs), None, v=actor_v).mode())
+    np.testing.assert_allclose(got, expected, rtol=1e-10, atol=1e-12)
+    assert set(model.v) == {"actor", "critic", "target"}
+    assert set(ActorValueModel((5,)).initialize(3, 2, rng=np.random.default_rng(0), f=xp).v) == {
+        "actor"
+    }
+
+
+def test_analytic_policy_gradient_clips_and_logs_the_norm(diff_backend):
+    from ivy_rl.differentiable_parts import AnalyticPolicyGradient
+
+    xp = getattr(ivy, diff_backend)
+    updater = AnalyticPolicyGradient(lr=0.1, gradient_clip=1.0).initialize(xp)
+    v = {"w": xp.asarray(np.array([3.0, 4.0]))}
+    state = updater.init_state(v)
+    new_v, _, infos = updater.minimize(lambda w: (xp.sum(w["w"] ** 2) / 2, {}), v, state)
+    # gradient w = (3, 4), norm 5; Adam's first step moves each weight by lr against its sign
+    np.testing.assert_allclose(float(_np(infos["gradient_norm"])), 5.0, rtol=1e-12)
+    np.testing.assert_allclose(float(_np(infos["loss"])), 12.5, rtol=1e-12)
+    np.testing.assert_allclose(_np(new_v["w"]), [2.9, 3.9], rtol=1e-6)
+
+
+def test_target_value_regression_matches_numpy(diff_backend):
+    from ivy_rl.differentiable_parts import ActorValueModel, TargetValueRegression
+
+    xp = getattr(ivy, diff_backend)
+    model = ActorValueModel((5,), critic=True).initialize(
+        3, 2, rng=np.random.default_rng(0), dtype="float64", f=xp
+    )
+    updater = TargetValueRegression(lr=1e-3, iterations=2, batches=2, target_update=0.25)
+    updater.initialize(xp)
+    orders = updater.orders(np.random.default_rng(1), 8)
+    assert orders.shape == (4, 4) and sorted(orders[:2].ravel()) == list(range(8))
+    data = np.random.default_rng(15)
+    raw = {
+        "observations": data.normal(size=(8, 3)),
+        "targets": data.normal(size=8),
+        "weights": (data.random(8) < 0.7).astype(np.float64),
+    }
+    batch = {k: xp.asarray(a) for k, a in raw.items()}
+    critic_v = model.v["critic"]
+    carry = (critic_v, updater.init_state(critic_v))
+    (_, _), infos = updater.step(model.critic, carry, xp.asarray(orders[0]), batch)
+    rows = orders[0]
+    h = _tanh_mlp(critic_v["torso"], raw["observations"][rows])
+    values = _dense(critic_v["head"]["layer"], h)[..., 0]
+    w = raw["weights"][rows]
+    expected = np.mean((values * w - raw["targets"][rows] * w) ** 2)
+    np.testing.assert_allclose(float(_np(infos["loss"])), expected, rtol=1e-10)
+    moved = updater.update_target({"a": xp.asarray(np.zeros(2))}, {"a": xp.asarray(np.ones(2))})
+    np.testing.assert_allclose(_np(moved["a"]), 0.25)
+
+
+def test_apg_and_shac_of_parts_take_their_settings_from_them():
+    from ivy_rl.agents import APG, SHAC
+    from ivy_rl.differentiable_parts import AnalyticPolicyGradient, TargetValueRegression
+    from ivy_rl.replays import Rollouts
+
+    agent = APG(replay=Rollouts(batch_size=4, horizon=8, update_every=2))
+    assert (agent.config["batch_size"], agent.config["horizon"]) == (4, 8)
+    shac = SHAC(
+        actor_updater=AnalyticPolicyGradient(lr=5e-3),
+        critic_updater=TargetValueRegression(iterations=3),
+    )
+    assert shac.config["actor_lr"] == 5e-3 and shac.config["critic_iterations"] == 3
+    with pytest.raises(ValueError, match="horizon"):
+        Rollouts(horizon=0)
+    assert set(SHAC.parts) == {"model", "replay", "exploration", "actor_updater", "critic_updater"}
