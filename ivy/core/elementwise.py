@@ -322,7 +322,12 @@ def not_equal(x1: Array | Scalar, x2: Array | Scalar, /, *, f: Framework = None)
 
 @dispatch("x1", "x2")
 def pow(x1: Array | Scalar, x2: Array | Scalar, /, *, f: Framework = None) -> Array:
-    """x1 ** x2."""
+    """x1 ** x2.
+
+    Integers to negative integer powers are refused where the values are known (ValueError, on
+    every backend: cast the base to a floating dtype first); inside a compiled program they give
+    the integer part of the real power (``ivy/backends/_int_pow.py``).
+    """
 
 
 @dispatch("x1", "x2")

@@ -13,7 +13,7 @@ import jax
 import jax.numpy as jnp
 
 from ivy import framework_handler as _fh
-from ivy.backends import _complex_special, _reals
+from ivy.backends import _complex_special, _int_pow, _reals
 from ivy.backends._clip_args import clip_bounds
 
 _XP = _complex_special.namespace(jnp, complex=jax.lax.complex)
@@ -112,3 +112,30 @@ def _clamped(x, low, high):
 # jax's own minimum and maximum order -0 below +0 already (``ivy/backends/_signed_zeros.py``)
 maximum = _reals.scalar_operands(jnp.maximum, "maximum")
 minimum = _reals.scalar_operands(jnp.minimum, "minimum")
+
+
+_scalar_pow = _reals.scalar_operands(jnp.power, "pow")
+
+
+def _integral(x) -> bool:
+    dtype = getattr(x, "dtype", None)
+    if dtype is None:
+        return type(x) is int
+    return jnp.issubdtype(dtype, jnp.integer)
+
+
+def pow(x1, x2, /):
+    """``x1 ** x2``; integers to negative integer powers as ``ivy/backends/_int_pow.py`` says
+    (jax would wrap around: ``2 ** -1`` is ``-2**63``)."""
+    if not (_integral(x2) and _integral(x1)):  # the common case, first
+        return _scalar_pow(x1, x2)
+    return _int_pow.integer_pow(
+        _scalar_pow,
+        x1,
+        x2,
+        integral=_integral,
+        values_known=lambda x: not isinstance(x, jax.core.Tracer),
+        any_negative=lambda x: bool(jnp.any(jnp.asarray(x) < 0)),
+        where=jnp.where,
+        backend="jax",
+    )

@@ -18,10 +18,11 @@ from __future__ import annotations
 import functools
 import math
 
+import numpy as np
 import tensorflow as tf
 
 from ivy import framework_handler as _fh
-from ivy.backends import _int_scalars, _signed_zeros
+from ivy.backends import _int_pow, _int_scalars, _signed_zeros
 from ivy.backends._clip_args import clip_bounds
 from ivy.backends._complex_special import namespace, wrap
 from ivy.backends.tensorflow._helpers import (
@@ -262,11 +263,35 @@ def _wide_pow(x1, x2):
 _pow = _binary(tf.math.pow, "pow")
 
 
-def pow(x1, x2, /):
+def _any_pow(x1, x2):
     try:
         return _pow(x1, x2)
     except REFUSED:
         return _wide_pow(x1, x2)
+
+
+def _integral(x) -> bool:
+    if isinstance(x, TENSOR_TYPES):
+        return x.dtype.is_integer
+    return type(x) is int or isinstance(x, np.integer)
+
+
+def pow(x1, x2, /):
+    """``x1 ** x2``; integers to negative integer powers as ``ivy/backends/_int_pow.py`` says
+    (tf's own error is a framework error, and a compiled program would raise it when run)."""
+    if not (_integral(x2) and _integral(x1)):  # the common case, first
+        return _any_pow(x1, x2)
+    return _int_pow.integer_pow(
+        _any_pow,
+        x1,
+        x2,
+        integral=_integral,
+        values_known=lambda x: not isinstance(x, TENSOR_TYPES) or tf.executing_eagerly(),
+        any_negative=lambda x: bool(tf.reduce_any(x < 0)) if isinstance(x, TENSOR_TYPES)
+        else x < 0,
+        where=lambda c, a, b: tf.where(c, a, b),
+        backend="tensorflow",
+    )
 
 
 remainder = _binary(tf.math.floormod, "remainder")

@@ -15,7 +15,7 @@ import numpy as np
 import torch
 
 from ivy import framework_handler as _fh
-from ivy.backends import _int_scalars, _signed_zeros
+from ivy.backends import _int_pow, _int_scalars, _signed_zeros
 from ivy.backends._clip_args import clip_bounds
 from ivy.backends._complex_special import namespace, wrap
 from ivy.backends.torch._helpers import (
@@ -171,7 +171,43 @@ def _inexact(*dtypes) -> bool:
     return any(d.is_floating_point or d.is_complex for d in dtypes)
 
 
-pow = _binary(torch.pow, "pow", "arith")
+_pow = _binary(torch.pow, "pow", "arith")
+
+
+def _integral(x) -> bool:
+    if isinstance(x, torch.Tensor):
+        return not (x.is_floating_point() or x.is_complex() or x.dtype is torch.bool)
+    return type(x) is int or isinstance(x, np.integer)
+
+
+def _signed_integral(x) -> bool:
+    """An exponent that can be negative (torch has no comparison kernels for uint16+)."""
+    return _integral(x) and (not isinstance(x, torch.Tensor) or x.dtype.is_signed)
+
+
+def _values_known(x) -> bool:
+    """Not while torch.compile or torch.func traces ``x``."""
+    if not isinstance(x, torch.Tensor):
+        return True
+    if torch.compiler.is_compiling():
+        return False
+    return not torch._C._functorch.is_functorch_wrapped_tensor(x)
+
+
+def pow(x1, x2, /):
+    """``x1 ** x2``; integers to negative integer powers as ``ivy/backends/_int_pow.py`` says."""
+    if not (_signed_integral(x2) and _integral(x1)):  # the common case, first
+        return _pow(x1, x2)
+    return _int_pow.integer_pow(
+        _pow,
+        x1,
+        x2,
+        integral=_integral,
+        values_known=_values_known,
+        any_negative=lambda x: bool((x < 0).any()) if isinstance(x, torch.Tensor) else x < 0,
+        where=torch.where,
+        backend="torch",
+    )
 _HALF = (torch.float16, torch.bfloat16)
 
 
