@@ -33,7 +33,11 @@ class Normal:
         scale: ``[..., n]`` standard deviations (broadcast against ``loc``).
 
     Example:
-        >>> d = Normal(ivy.torch, loc, scale); a = d.sample(noise); lp = d.log_prob(a)
+        >>> import torch, ivy
+        >>> d = Normal(ivy.torch, torch.zeros(2), torch.ones(2))
+        >>> a = d.sample(torch.tensor([1.0, -1.0]))      # the noise: standard normal draws
+        >>> a, d.log_prob(a)
+        (tensor([ 1., -1.]), tensor(-2.8379))
     """
 
     noise = "normal"
@@ -98,8 +102,11 @@ class SquashedNormal(Normal):
     near ±1: :meth:`log_prob_raw` takes them.
 
     Example:
-        >>> d = SquashedNormal(ivy.jax, loc, scale); raw = d.sample_raw(noise)
-        >>> action, lp = d.squash(raw), d.log_prob_raw(raw)
+        >>> import jax.numpy as jnp, ivy
+        >>> d = SquashedNormal(ivy.jax, jnp.zeros(1), jnp.ones(1))
+        >>> raw = d.sample_raw(jnp.array([0.5]))           # what the agents store
+        >>> d.squash(raw), d.log_prob_raw(raw)
+        (Array([0.46211717], dtype=float32), Array(-0.8037095, dtype=float32))
     """
 
     def sample_raw(self, noise: Array) -> Array:
@@ -144,7 +151,10 @@ class Categorical:
         logits: ``[..., num_actions]`` unnormalised log-probabilities.
 
     Example:
-        >>> d = Categorical(ivy.tensorflow, logits); a = d.sample(gumbel_noise)
+        >>> import tensorflow as tf, ivy
+        >>> d = Categorical(ivy.tensorflow, tf.math.log([[0.2, 0.8]]))
+        >>> d.mode().numpy(), d.sample(tf.constant([[3.0, 0.0]])).numpy()  # noise: Gumbel draws
+        (array([1]), array([0]))
     """
 
     noise = "gumbel"
@@ -197,7 +207,10 @@ class Deterministic:
     scaled by ``noise_scale`` and clips to ``[-1, 1]``.
 
     Example:
-        >>> d = Deterministic(ivy.torch, actions, 0.1); a = d.sample(normal_noise)
+        >>> import torch, ivy
+        >>> d = Deterministic(ivy.torch, torch.tensor([0.5, 0.95]), noise_scale=0.1)
+        >>> d.sample(torch.tensor([1.0, 1.0]))             # noise: standard normal draws
+        tensor([0.6000, 1.0000])
     """
 
     noise = "normal"

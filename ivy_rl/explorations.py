@@ -6,9 +6,16 @@ actions on every backend and a checkpoint restores the exploration exactly (:met
 Actions of Box spaces are in ``[-1, 1]`` here (the agent rescales them to the space's bounds).
 
 Example:
+    >>> import numpy as np
+    >>> rng = np.random.default_rng(0)              # the agent's generator
     >>> noise = make_exploration("ornstein_uhlenbeck", scale=0.2)
-    >>> actions = noise(policy_actions, rng)        # [workers, action_size]
-    >>> noise.reset(resets)                         # at the end of episodes
+    >>> noise(np.zeros((2, 1)), rng)                # the policy's actions, [workers, action_size]
+    array([[ 0.0025146],
+           [-0.0026421]])
+    >>> noise.reset(np.array([True, False]))        # worker 0's episode ended: its noise restarts
+    >>> noise.state
+    array([[ 0.       ],
+           [-0.0026421]])
 """
 
 from __future__ import annotations
@@ -41,8 +48,10 @@ class NoNoise:
         start_steps: environment steps of uniformly random actions before the policy acts.
 
     Example:
-        >>> NoNoise()(np.zeros((2, 1)), rng)
-        array([[0.], [0.]])
+        >>> import numpy as np
+        >>> NoNoise()(np.zeros((2, 1)), np.random.default_rng(0))
+        array([[0.],
+               [0.]])
     """
 
     settings = {"start_steps": _START}
@@ -82,7 +91,10 @@ class NormalNoise(NoNoise):
         scale: standard deviation of the noise (actions are in ``[-1, 1]``).
 
     Example:
-        >>> NormalNoise(0.1)(actions, rng)
+        >>> import numpy as np
+        >>> NormalNoise(0.1)(np.array([[0.0], [0.98]]), np.random.default_rng(0))
+        array([[0.01257302],
+               [0.96678951]])
     """
 
     settings = {"scale": SCALE, "start_steps": _START}
@@ -111,7 +123,11 @@ class OrnsteinUhlenbeckNoise(NoNoise):
         dt: the time step.
 
     Example:
-        >>> OrnsteinUhlenbeckNoise(scale=0.2, theta=0.15, dt=0.01)(actions, rng)
+        >>> import numpy as np
+        >>> noise = OrnsteinUhlenbeckNoise(scale=0.2, theta=0.15, dt=0.01)
+        >>> noise(np.zeros((2, 1)), np.random.default_rng(0))
+        array([[ 0.0025146],
+               [-0.0026421]])
     """
 
     settings = {"scale": SCALE, "start_steps": _START}
@@ -161,8 +177,13 @@ class EpsilonGreedy(NoNoise):
         start_steps: environment steps of uniformly random actions before the first greedy one.
 
     Example:
+        >>> import numpy as np
         >>> explore = EpsilonGreedy(1.0, 0.05, 10_000)
-        >>> actions = explore(greedy, rng, num_actions=2, steps=500)
+        >>> explore.epsilon(0), explore.epsilon(5_000), explore.epsilon(20_000)
+        (1.0, 0.525, 0.05)
+        >>> greedy = np.zeros(6, int)                       # the greedy actions of 6 workers
+        >>> explore(greedy, np.random.default_rng(0), num_actions=4, steps=0)   # ε = 1: random
+        array([2, 2, 2, 3, 3, 0])
     """
 
     settings = {
@@ -195,7 +216,7 @@ class EpsilonGreedy(NoNoise):
         if self.decay_steps == 0:
             return self.end
         fraction = min(steps / self.decay_steps, 1.0)
-        return self.start + fraction * (self.end - self.start)
+        return (1.0 - fraction) * self.start + fraction * self.end  # exactly end once decayed
 
     def __call__(
         self,

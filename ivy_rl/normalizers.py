@@ -32,7 +32,13 @@ class MeanStd:
         epsilon: lower bound of the standard deviation.
 
     Example:
-        >>> norm = MeanStd((4,)); norm.record(obs_batch); norm.update(); norm.stats("float32")
+        A constant feature's standard deviation is ``epsilon``, never 0:
+
+        >>> import numpy as np
+        >>> norm = MeanStd((2,))
+        >>> norm.record(np.array([[1.0, 0.0], [3.0, 0.0]])); norm.update()
+        >>> norm.stats("float32")
+        {'mean': array([2., 0.], dtype=float32), 'std': array([1.  , 0.01], dtype=float32)}
     """
 
     def __init__(self, shape: Sequence[int] = (), *, epsilon: float = 1e-2) -> None:
@@ -139,7 +145,11 @@ class ReturnNormalizer(MeanStd):
     predicts ``(return - mean) / std`` and the critic returns ``head * std + mean``.
 
     Example:
-        >>> norm = ReturnNormalizer(); norm.record(returns); norm.update()
+        >>> import numpy as np
+        >>> norm = ReturnNormalizer()
+        >>> norm.record(np.array([10.0, 20.0, 30.0])); norm.update()     # λ-returns of a batch
+        >>> norm.normalize(np.array([10.0, 20.0, 30.0])).round(3)
+        array([-1.225,  0.   ,  1.225])
     """
 
     def __init__(self, *, epsilon: float = 1e-2) -> None:

@@ -107,7 +107,13 @@ def lambda_returns(
         ``[time, *batch]`` λ-returns, in the dtype of ``rewards``.
 
     Example:
-        >>> ivy_rl.lambda_returns(r, nv, resets, terms, discount=0.99, trace_decay=0.95)
+        One worker, three steps; the episode terminates after the second:
+
+        >>> import numpy as np
+        >>> r = np.ones((3, 1)); nv = np.full((3, 1), 2.0)
+        >>> resets = terms = np.array([[0.0], [1.0], [0.0]])
+        >>> ivy_rl.lambda_returns(r, nv, resets, terms, discount=0.5, trace_decay=1.0)[:, 0]
+        array([1.5, 1. , 2. ])
     """
     xp = ivy.get_framework(rewards, f=f)
     _check_fractions("lambda_returns", discount=discount, trace_decay=trace_decay)
@@ -160,7 +166,12 @@ def generalized_advantages(
         ``[time, *batch]`` advantages.
 
     Example:
-        >>> adv = ivy_rl.generalized_advantages(r, v, nv, resets, terms, discount=0.99)
+        >>> import numpy as np
+        >>> r = np.ones((3, 1)); v = nv = np.full((3, 1), 2.0)
+        >>> resets = terms = np.array([[0.0], [1.0], [0.0]])
+        >>> adv = ivy_rl.generalized_advantages(r, v, nv, resets, terms, discount=0.5, trace_decay=1)
+        >>> adv[:, 0]
+        array([-0.5, -1. ,  0. ])
     """
     xp = ivy.get_framework(rewards, f=f)
     _check_fractions("generalized_advantages", discount=discount, trace_decay=trace_decay)
@@ -212,7 +223,10 @@ def n_step_returns(
         ``[time, *batch]`` n-step returns.
 
     Example:
-        >>> g = ivy_rl.n_step_returns(r, nv, resets, terms, discount=0.99, steps=5)
+        >>> import numpy as np
+        >>> r = np.ones((3, 1)); nv = no = np.zeros((3, 1))
+        >>> ivy_rl.n_step_returns(r, nv, no, no, discount=0.5, steps=2)[:, 0]
+        array([1.5, 1.5, 1. ])
     """
     if int(steps) != steps or steps < 1:
         raise ValueError(f"n_step_returns: steps must be an integer >= 1, got {steps!r}")

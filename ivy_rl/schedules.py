@@ -86,7 +86,7 @@ class LinearSchedule(Schedule):
 
     def __call__(self, progress: float) -> float:
         p = self._progress(progress)
-        return self.start + (self.end - self.start) * p
+        return (1.0 - p) * self.start + p * self.end  # exactly start at 0 and end at 1
 
     def __str__(self) -> str:
         return f"linear:{self.start!r}:{self.end!r}"

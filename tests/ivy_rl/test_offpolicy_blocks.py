@@ -330,6 +330,9 @@ def test_explorations_follow_their_definitions():
     greedy = EpsilonGreedy(1.0, 0.1, 100)
     assert greedy.epsilon(0) == 1.0 and greedy.epsilon(50) == pytest.approx(0.55)
     assert greedy.epsilon(1000) == pytest.approx(0.1)
+    # once decayed, ε is exactly its end (1 + 1 * (0.05 - 1) rounds to 0.050000000000000044)
+    assert EpsilonGreedy(1.0, 0.05, 10_000).epsilon(20_000) == 0.05
+    assert EpsilonGreedy(0.3, 0.01, 7).epsilon(7) == 0.01
     chosen = greedy(np.full(20_000, 2), np.random.default_rng(0), num_actions=4, steps=50)
     assert set(np.unique(chosen)) == {0, 1, 2, 3}
     # greedy with probability 1 - 0.55 + 0.55 / 4

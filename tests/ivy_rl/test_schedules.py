@@ -41,6 +41,15 @@ def test_linear_schedule_follows_the_formula_and_round_trips():
     assert as_schedule(0.2)(0.7) == 0.2
 
 
+def test_linear_schedule_ends_exactly_at_its_end_values():
+    # start + (end - start) * 1 rounds to 0.00010000000000000005 for these: the run ended
+    # on a value it was never given
+    for start, end in ((1e-3, 1e-4), (3e-4, 1e-5), (0.2, 0.1), (-1.0, 0.3)):
+        schedule = LinearSchedule(start, end)
+        assert schedule(0.0) == start and schedule(1.0) == end
+        assert schedule(2.0) == end and schedule(-1.0) == start
+
+
 def test_agents_accept_schedules_and_refuse_bad_ones_by_name():
     agent = ivy_rl.agents.make("PPO", actor_lr="linear:1e-3", ratio_clip=LinearSchedule(0.3, 0.1))
     assert agent.config["actor_lr"] == "linear:0.001:0.0"
