@@ -72,7 +72,14 @@ def orthogonal_init(rng: np.random.Generator, gain: float = 1.0) -> Callable:
         ``init(shape, *, fan_in, fan_out, dtype, device, f)``.
 
     Example:
-        >>> layer = ivy.Linear(4, 2, weight_init=orthogonal_init(rng, 0.01), f="jax")
+        >>> import numpy as np, ivy
+        >>> layer = ivy.Linear(4, 2, weight_init=orthogonal_init(np.random.default_rng(0), 0.01),
+        ...                    f="jax")
+        >>> w = np.asarray(layer.v["w"]); w.shape
+        (2, 4)
+        >>> np.round(w @ w.T, 6)                        # orthogonal rows, of norm 0.01
+        array([[ 0.0001, -0.    ],
+               [-0.    ,  0.0001]], dtype=float32)
     """
 
     def init(shape, *, fan_in=None, fan_out=None, dtype=None, device=None, f=None):
@@ -94,7 +101,11 @@ def glorot_init(rng: np.random.Generator) -> Callable:
     """An ``ivy.Module`` initializer: Glorot uniform weights drawn from ``rng`` (zeros for 1-D).
 
     Example:
-        >>> torso = MLPTorso(4, (64, 64), weight_init=glorot_init(rng), f="torch")
+        >>> import numpy as np, torch
+        >>> torso = MLPTorso(4, (64, 64), weight_init=glorot_init(np.random.default_rng(0)),
+        ...                  f="torch")
+        >>> torso(torch.zeros(5, 4)).shape
+        torch.Size([5, 64])
     """
 
     def init(shape, *, fan_in=None, fan_out=None, dtype=None, device=None, f=None):
@@ -138,8 +149,10 @@ class ObservationEncoder:
     Called as ``encoder(obs, stats)``: ``obs`` of shape ``[..., observation_size]``.
 
     Example:
+        >>> import jax.numpy as jnp
         >>> enc = ObservationEncoder(3, f="jax")
-        >>> enc(jnp.ones((2, 3)), {"mean": jnp.ones(3), "std": jnp.full(3, 2.0)})
+        >>> enc(jnp.array([[3.0, 1.0, 61.0]]), {"mean": jnp.ones(3), "std": jnp.full(3, 2.0)})
+        Array([[ 1.,  0., 10.]], dtype=float32)
     """
 
     def __init__(
@@ -215,7 +228,11 @@ class GaussianHead(ivy.Module):
     from a dense layer (``state_dependent_scale=True``), clipped to ``[scale_min, scale_max]``.
 
     Example:
-        >>> head = GaussianHead(64, 2, f="jax"); dist = head(features)  # a Normal
+        >>> import jax.numpy as jnp
+        >>> head = GaussianHead(64, 2, f="jax")
+        >>> dist = head(jnp.ones((5, 64)))              # the torso's features: a Normal
+        >>> dist.loc.shape, dist.scale[0]
+        ((5, 2), Array([1., 1.], dtype=float32))
     """
 
     def __init__(
@@ -269,7 +286,11 @@ class SquashedGaussianHead(GaussianHead):
     linear mean, as soft actor-critics use.
 
     Example:
-        >>> head = SquashedGaussianHead(64, 2, f="torch"); raw = head(x).sample_raw(noise)
+        >>> import torch
+        >>> head = SquashedGaussianHead(64, 2, f="torch")
+        >>> dist = head(torch.ones(5, 64))              # a SquashedNormal
+        >>> dist.sample(torch.randn(5, 2)).abs().max() < 1
+        tensor(True)
     """
 
     def __init__(self, in_size: int, action_size: int, **kwargs) -> None:
@@ -288,7 +309,10 @@ class DeterministicHead(ivy.Module):
     scale ``noise_scale`` (see :class:`ivy_rl.distributions.Deterministic`).
 
     Example:
-        >>> head = DeterministicHead(64, 2, f="jax"); head(x).mode().shape
+        >>> import jax.numpy as jnp
+        >>> head = DeterministicHead(64, 2, f="jax")
+        >>> head(jnp.ones((5, 64))).mode().shape
+        (5, 2)
     """
 
     def __init__(
@@ -317,7 +341,11 @@ class CategoricalHead(ivy.Module):
     """A categorical policy over ``num_actions`` discrete actions (logits from a dense layer).
 
     Example:
-        >>> head = CategoricalHead(64, 3, f="tensorflow"); head(x).sample(gumbel)
+        >>> import tensorflow as tf
+        >>> head = CategoricalHead(64, 3, f="tensorflow")
+        >>> gumbel = tf.constant([[0.0, 5.0, 0.0]])     # Gumbel noise that favours action 1
+        >>> head(tf.ones((1, 64))).sample(gumbel).numpy()
+        array([1])
     """
 
     def __init__(
@@ -343,7 +371,9 @@ class ValueHead(ivy.Module):
     """A scalar value per input: ``[..., in] -> [...]``.
 
     Example:
-        >>> ValueHead(64, f="jax")(x).shape == x.shape[:-1]
+        >>> import jax.numpy as jnp
+        >>> ValueHead(64, f="jax")(jnp.ones((5, 64))).shape
+        (5,)
     """
 
     def __init__(
@@ -370,7 +400,8 @@ class Actor(ivy.Module):
     Example:
         >>> actor = Actor(ObservationEncoder(4, f="torch"), MLPTorso(4, f="torch"),
         ...               CategoricalHead(64, 2, f="torch"))
-        >>> actor(torch.zeros(1, 4), None).mode()
+        >>> actor(torch.zeros(1, 4), None).mode()       # no observation statistics: None
+        tensor([0])
     """
 
     def __init__(self, encoder: Callable, torso: ivy.Module, head: ivy.Module) -> None:
@@ -391,7 +422,14 @@ class Critic(ivy.Module):
     Called as ``critic(obs, obs_stats, return_stats, v=...)``.
 
     Example:
-        >>> values = critic(obs, obs_stats, None, v=model.v["critic"])  # [batch]
+        >>> import numpy as np, jax.numpy as jnp, gymnasium as gym
+        >>> model = actor_critic(gym.spaces.Box(-1, 1, (3,)), gym.spaces.Discrete(2),
+        ...                      rng=np.random.default_rng(0), f="jax")
+        >>> critic, obs = model.critic, jnp.zeros((5, 3))
+        >>> critic(obs, None, None, v=model.v["critic"]).shape          # [batch]
+        (5,)
+        >>> critic(obs, None, {"mean": 10.0, "std": 0.0}, v=model.v["critic"])
+        Array([10., 10., 10., 10., 10.], dtype=float32)
     """
 
     def __init__(self, encoder: Callable, torso: ivy.Module, head: ivy.Module) -> None:
@@ -414,7 +452,9 @@ class ActorCritic(ivy.Module):
     """An actor and a critic; ``v = {'actor': ..., 'critic': ...}``.
 
     Example:
-        >>> model = actor_critic(obs_space, act_space, rng=rng, f="jax")
+        >>> import numpy as np, gymnasium as gym
+        >>> model = actor_critic(gym.spaces.Box(-1, 1, (3,)), gym.spaces.Discrete(2),
+        ...                      rng=np.random.default_rng(0), f="jax")
         >>> sorted(model.v)
         ['actor', 'critic']
     """
@@ -435,8 +475,16 @@ class ActorCriticWithTargets(ActorCritic):
     by :meth:`update_targets` (Polyak averaging), as off-policy agents use.
 
     Example:
-        >>> model = ActorCriticWithTargets(actor, critic)
-        >>> model.update_targets(tau=0.005)
+        >>> import numpy as np, gymnasium as gym, ivy
+        >>> env = gym.make("Pendulum-v1")
+        >>> ac = actor_critic(env.observation_space, env.action_space, head="deterministic",
+        ...                   rng=np.random.default_rng(0), f="numpy")
+        >>> model = ActorCriticWithTargets(ac.actor, ac.critic)
+        >>> before = model.target_v["critic"]["head"]["layer"]["b"]
+        >>> model.v = ivy.nest.map_nest(lambda x: x + 1.0, model.v)   # as if after updates
+        >>> model.update_targets(tau=0.5)                # half-way towards v
+        >>> model.target_v["critic"]["head"]["layer"]["b"] - before
+        array([0.5], dtype=float32)
     """
 
     def __init__(self, actor: Actor, critic: Critic) -> None:
@@ -461,7 +509,9 @@ def polyak_update(target_v: Nest, v: Nest, tau: float, *, f: Framework = None) -
         The new target nest.
 
     Example:
-        >>> target = polyak_update(target, model.v, 0.005)
+        >>> import numpy as np
+        >>> polyak_update({"w": np.zeros(2)}, {"w": np.ones(2)}, 0.005)
+        {'w': array([0.005, 0.005])}
     """
     leaves = ivy.nest.flatten_nest(v)[0]
     xp = ivy.get_framework(leaves[0], f=f) if leaves else None
@@ -481,6 +531,7 @@ def space_kind(space: Any, supported: Sequence[str] = SUPPORTED_SPACES, *, who: 
     """``'Box'`` or ``'Discrete'`` for a Gymnasium action space; a clear error otherwise.
 
     Example:
+        >>> import gymnasium
         >>> space_kind(gymnasium.spaces.Discrete(2))
         'Discrete'
     """
@@ -507,7 +558,10 @@ def check_observation_space(space: Any, *, who: str = "") -> None:
     what is supported.
 
     Example:
+        >>> import gymnasium
+        >>> check_observation_space(gymnasium.spaces.Box(-1, 1, (4, 4)), who="PPO")  # fine
         >>> check_observation_space(gymnasium.spaces.Discrete(16), who="PPO")
+        Traceback (most recent call last):
         TypeError: PPO does not support the observation space Discrete(16); ...
     """
     import gymnasium as gym
@@ -559,7 +613,12 @@ def actor_critic(
         The model.
 
     Example:
-        >>> model = actor_critic(env.observation_space, env.action_space, rng=rng, f="torch")
+        >>> import numpy as np, gymnasium as gym, torch
+        >>> env = gym.make("Pendulum-v1")
+        >>> model = actor_critic(env.observation_space, env.action_space,
+        ...                      rng=np.random.default_rng(0), f="torch")
+        >>> type(model.actor.head).__name__, model.actor(torch.zeros(1, 3), None).mode().shape
+        ('GaussianHead', torch.Size([1, 1]))
     """
     kind = space_kind(action_space, who="actor_critic")
     check_observation_space(observation_space, who="actor_critic")

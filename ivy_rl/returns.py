@@ -169,7 +169,8 @@ def generalized_advantages(
         >>> import numpy as np
         >>> r = np.ones((3, 1)); v = nv = np.full((3, 1), 2.0)
         >>> resets = terms = np.array([[0.0], [1.0], [0.0]])
-        >>> adv = ivy_rl.generalized_advantages(r, v, nv, resets, terms, discount=0.5, trace_decay=1)
+        >>> adv = ivy_rl.generalized_advantages(r, v, nv, resets, terms, discount=0.5,
+        ...                                     trace_decay=1.0)
         >>> adv[:, 0]
         array([-0.5, -1. ,  0. ])
     """
