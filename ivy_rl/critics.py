@@ -6,9 +6,12 @@ Like :mod:`ivy_rl.models`, each part is an ``ivy.Module`` called purely with its
 ``v`` and the observation statistics, so the whole update compiles.
 
 Example:
-    >>> critic = action_value_critic(3, 1, (64, 64), rng=rng, f="jax")
-    >>> q = critic(obs, actions, None, v=critic.v)        # [batch]
-    >>> targets = soft_update(targets, critic.v, 0.005)
+    >>> import numpy as np, jax.numpy as jnp
+    >>> critic = action_value_critic(3, 1, (64, 64), rng=np.random.default_rng(0), f="jax")
+    >>> obs, actions = jnp.zeros((5, 3)), jnp.zeros((5, 1))
+    >>> critic(obs, actions, None, v=critic.v).shape          # [batch]
+    (5,)
+    >>> target_v = ivy_rl.models.polyak_update(critic.v, critic.v, 0.005)   # a target network
 """
 
 from __future__ import annotations
@@ -52,7 +55,11 @@ class ActionValueCritic(ivy.Module):
     :class:`CategoricalValueHead`).
 
     Example:
-        >>> critic = ActionValueCritic(ObservationEncoder(3), MLPTorso(4, (64,)), ValueHead(64))
+        >>> import torch
+        >>> critic = ActionValueCritic(ObservationEncoder(3), MLPTorso(4, (64,), f="torch"),
+        ...                            ValueHead(64, f="torch"))    # torso: 3 + 1 inputs
+        >>> critic(torch.zeros(5, 3), torch.zeros(5, 1), None).shape
+        torch.Size([5])
     """
 
     def __init__(self, encoder: Callable, torso: ivy.Module, head: ivy.Module) -> None:
@@ -69,8 +76,12 @@ class CriticEnsemble(ivy.Module):
     leading axis: ``[critics, batch]``.
 
     Example:
-        >>> twin = CriticEnsemble([critic_a, critic_b]); twin(obs, actions, None).shape
-        (2, batch)
+        >>> import numpy as np, jax.numpy as jnp
+        >>> rng = np.random.default_rng(0)
+        >>> twin = CriticEnsemble([action_value_critic(3, 1, (64,), rng=rng, f="jax")
+        ...                        for _ in range(2)])
+        >>> twin(jnp.zeros((5, 3)), jnp.zeros((5, 1)), None).shape   # [critics, batch]
+        (2, 5)
     """
 
     def __init__(self, critics: Sequence[ivy.Module]) -> None:
@@ -108,7 +119,11 @@ class CategoricalValueHead(ivy.Module):
     ``[v_min, v_max]``; returns :class:`CategoricalValues`.
 
     Example:
-        >>> head = CategoricalValueHead(64, -150.0, 150.0, 51, f="torch"); head(x).mean()
+        >>> import torch
+        >>> head = CategoricalValueHead(64, -150.0, 150.0, 51, f="torch")
+        >>> values = head(torch.zeros(2, 64))           # uniform over the atoms here
+        >>> values.probs().shape, values.mean()
+        (torch.Size([2, 51]), tensor([0., 0.]))
     """
 
     def __init__(
@@ -159,7 +174,13 @@ def project_categorical(
         ``[batch, atoms]`` target probabilities.
 
     Example:
-        >>> target = project_categorical(ivy.jax, p, r, d, support)
+        A return of 0.5 plus 0.9 times a value of 0 falls half-way between the atoms 0 and 1:
+
+        >>> import jax.numpy as jnp, ivy
+        >>> support = jnp.array([-1.0, 0.0, 1.0])
+        >>> probs = jnp.array([[0.0, 1.0, 0.0]])                 # the next value is 0
+        >>> project_categorical(ivy.jax, probs, jnp.array([0.5]), jnp.array([0.9]), support)
+        Array([[0. , 0.5, 0.5]], dtype=float32)
     """
     atoms = int(support.shape[0])
     v_min, v_max = support[0], support[atoms - 1]
@@ -176,8 +197,9 @@ class DiscreteQHead(ivy.Module):
     ``dueling``: ``V(s) + A(s, a) - mean_a A(s, a)`` (Wang et al., 2016).
 
     Example:
-        >>> DiscreteQHead(64, 2, dueling=True, f="jax")(x).shape
-        (batch, 2)
+        >>> import jax.numpy as jnp
+        >>> DiscreteQHead(64, 2, dueling=True, f="jax")(jnp.ones((5, 64))).shape
+        (5, 2)
     """
 
     def __init__(
@@ -213,8 +235,9 @@ class BranchingQHead(ivy.Module):
     branches share one state value.
 
     Example:
+        >>> import torch
         >>> head = BranchingQHead(64, [3, 5], dueling=True, f="torch")
-        >>> [q.shape[-1] for q in head(x)]
+        >>> [q.shape[-1] for q in head(torch.ones(2, 64))]
         [3, 5]
     """
 
@@ -253,7 +276,11 @@ class QNetwork(ivy.Module):
     discrete action. Called as ``q(obs, obs_stats, v=...)``.
 
     Example:
-        >>> q = QNetwork(ObservationEncoder(4), MLPTorso(4, (64, 64)), DiscreteQHead(64, 2))
+        >>> import torch
+        >>> q = QNetwork(ObservationEncoder(4), MLPTorso(4, (64, 64), f="torch"),
+        ...              DiscreteQHead(64, 2, f="torch"))
+        >>> q(torch.zeros(5, 4), None).shape            # [batch, actions]
+        torch.Size([5, 2])
     """
 
     def __init__(self, encoder: Callable, torso: ivy.Module, head: ivy.Module) -> None:
