@@ -20,12 +20,21 @@ is bootstrapped from its last true next observation; one that terminated is not
 (partial-episode bootstrapping, Pardo et al., 2018).
 
 Example:
-    >>> replay = TransitionReplay(100_000, return_steps=3)
-    >>> replay.store(observations=obs, actions=a, rewards=r, next_observations=nxt,
-    ...              resets=resets, terminations=terms)
-    >>> replay.flush(ivy.jax, device="cpu")
-    >>> indices = replay.windows(rng, batches=50, batch_size=256)  # [50, 3, 256] int32
-    >>> batch = n_step_batch(ivy.jax, replay.arrays, indices[0], discount=0.99)
+    Four steps of two workers, each with reward 1, then 3-step transitions:
+
+    >>> import numpy as np, ivy
+    >>> replay = TransitionReplay(1000, return_steps=3)
+    >>> for t in range(4):
+    ...     replay.store(observations=np.full((2, 1), float(t)), actions=np.zeros((2, 1)),
+    ...                  rewards=np.ones(2), next_observations=np.full((2, 1), t + 1.0),
+    ...                  resets=np.zeros(2), terminations=np.zeros(2))
+    >>> replay.flush(ivy.numpy, device="cpu")           # or ivy.torch, ivy.jax, ...
+    >>> indices = replay.windows(np.random.default_rng(0), batches=5, batch_size=4)
+    >>> indices.shape                                   # [batches, return_steps, batch_size]
+    (5, 3, 4)
+    >>> batch = n_step_batch(ivy.numpy, replay.arrays, indices[0], discount=0.5)
+    >>> batch["returns"], batch["discounts"]            # 1 + 0.5 + 0.25, and 0.5 ** 3
+    (array([1.75, 1.75, 1.75, 1.75]), array([0.125, 0.125, 0.125, 0.125]))
 """
 
 from __future__ import annotations
@@ -57,6 +66,8 @@ class TransitionReplay:
 
     Example:
         >>> replay = TransitionReplay(1_000_000, return_steps=1)
+        >>> replay.ready()                              # nothing stored yet
+        False
     """
 
     def __init__(self, size: int = 1_000_000, *, return_steps: int = 1) -> None:
@@ -243,7 +254,14 @@ class TransitionReplay:
         batch_size]``, ``indices[b, j, i]`` the row of the ``j``-th step of window ``i``.
 
         Example:
-            >>> replay.windows(np.random.default_rng(0), 2, 4).shape  # return_steps=3
+            >>> import numpy as np, ivy
+            >>> replay = TransitionReplay(100, return_steps=3)
+            >>> for t in range(5):                      # 5 steps of 2 workers
+            ...     replay.store(observations=np.zeros((2, 1)), actions=np.zeros((2, 1)),
+            ...                  rewards=np.zeros(2), next_observations=np.zeros((2, 1)),
+            ...                  resets=np.zeros(2), terminations=np.zeros(2))
+            >>> replay.flush(ivy.numpy)
+            >>> replay.windows(np.random.default_rng(0), 2, 4).shape
             (2, 3, 4)
         """
         complete = self.stored - self.return_steps + 1
@@ -412,8 +430,22 @@ def n_step_batch(
         leading ``[batch]`` axis.
 
     Example:
-        >>> batch = n_step_batch(ivy.torch, replay.arrays, indices[0], discount=0.99)
-        >>> targets = batch["returns"] + batch["discounts"] * values(batch["next_observations"])
+        One worker whose episode terminates after its second step: the window of its first
+        three steps sums two rewards and does not bootstrap.
+
+        >>> import numpy as np, torch, ivy
+        >>> replay = TransitionReplay(10, return_steps=3)
+        >>> for t, end in enumerate([0.0, 1.0, 0.0]):
+        ...     replay.store(observations=np.full((1, 1), float(t)), actions=np.zeros((1, 1)),
+        ...                  rewards=np.ones(1), next_observations=np.full((1, 1), t + 1.0),
+        ...                  resets=np.full(1, end), terminations=np.full(1, end))
+        >>> replay.flush(ivy.torch)
+        >>> batch = n_step_batch(ivy.torch, replay.arrays, torch.tensor([[0], [1], [2]]),
+        ...                      discount=0.5)
+        >>> batch["returns"].tolist(), batch["discounts"].tolist(), batch["next_observations"]
+        ([1.5], [0.0], tensor([[2.]], dtype=torch.float64))
+
+        The targets of a critic are then ``returns + discounts * V(next_observations)``.
     """
     xp = xp or ivy.get_framework(arrays["rewards"], f=f)
     first = indices[0]
