@@ -9,10 +9,15 @@ bootstrapping, with the replay's ``discount`` and ``trace_decay``); the mini-bat
 from the agent's numpy generator, so every backend sees the same mini-batches.
 
 Example:
-    >>> seg = Segment(size=4, batch_size=8, batch_iterations=2)
-    >>> seg.store(observations=obs, actions=a, rewards=r, resets=d, terminations=t)
-    >>> seg.ready()
-    False
+    >>> import numpy as np
+    >>> seg = Segment(size=4, batch_size=4, batch_iterations=2)
+    >>> for t in range(4):                              # one step of 2 workers at a time
+    ...     seg.store(observations=np.zeros((2, 3)), actions=np.zeros((2, 1)),
+    ...               rewards=np.ones(2), resets=np.zeros(2), terminations=np.zeros(2))
+    >>> seg.ready(), seg.buffers["observations"].shape  # full: [size, workers, ...]
+    (True, (4, 2, 3))
+    >>> seg.batch_orders(np.random.default_rng(0)).shape   # 2 passes of 2 mini-batches of 4
+    (4, 4)
 """
 
 from __future__ import annotations
@@ -214,8 +219,18 @@ class Segment:
         nothing is drawn.
 
         Example:
-            >>> Segment(4, batch_size=3, batch_iterations=2).batch_orders(rng).shape  # 2 workers
-            (4, 3)
+            Two passes over 4 steps of 2 workers, in mini-batches of 3 (2 per pass, the
+            remaining 2 transitions left out):
+
+            >>> import numpy as np
+            >>> seg = Segment(4, batch_size=3, batch_iterations=2)
+            >>> for t in range(4):
+            ...     seg.store(rewards=np.ones(2))
+            >>> seg.batch_orders(np.random.default_rng(0))
+            array([[2, 4, 3],
+                   [6, 5, 0],
+                   [6, 2, 7],
+                   [4, 5, 1]], dtype=int32)
         """
         total = self.size * self.workers
         rows = []
