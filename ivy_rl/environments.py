@@ -17,9 +17,16 @@ Environments are Gymnasium ids, also ``"module:EnvId"`` for one registered by th
 module, with Gymnasium wrappers by name (:func:`resolve_wrappers`).
 
 Example:
+    >>> import numpy as np
     >>> workers = Workers("CartPole-v1", 8, seed=0)
-    >>> obs = workers.start()
-    >>> obs, infos = workers.step(actions)   # infos: observations, rewards, resets, terminations
+    >>> obs = workers.start(); obs.shape                # [workers, *observation_shape]
+    (8, 4)
+    >>> obs, infos = workers.step(np.zeros(8, int))     # each worker pushes left
+    >>> sorted(infos)
+    ['observations', 'resets', 'rewards', 'terminations']
+    >>> infos["rewards"]
+    array([1., 1., 1., 1., 1., 1., 1., 1.])
+    >>> workers.close()
 """
 
 from __future__ import annotations
@@ -55,6 +62,7 @@ class TimeFeature(gym.ObservationWrapper):
         max_steps: the time limit (default: the environment's ``max_episode_steps``).
 
     Example:
+        >>> import gymnasium
         >>> env = TimeFeature(gymnasium.make("Pendulum-v1"))
         >>> env.observation_space.shape
         (4,)
