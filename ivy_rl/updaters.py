@@ -12,8 +12,23 @@ Everything here is pure and branch-free (choices are made with ``xp.where``), so
 one ``ivy.compile_fn``-compiled function per agent.
 
 Example:
-    >>> loss, infos = clipped_ratio_loss(ivy.torch, dist, actions, old_log_probs, adv, 0.2)
+    PPO's loss where the policy now gives every action ``e^0.5`` times the probability it
+    had when acting (all three ratios are beyond ``1 + 0.2``):
+
+    >>> import torch, ivy
+    >>> dist = ivy_rl.distributions.Normal(ivy.torch, torch.zeros(3, 1), torch.ones(3, 1))
+    >>> actions = torch.tensor([[0.5], [-1.0], [2.0]])
+    >>> old_log_probs = dist.log_prob(actions) - 0.5
+    >>> advantages = torch.tensor([1.0, 1.0, -1.0])
+    >>> loss, infos = clipped_ratio_loss(ivy.torch, dist, actions, old_log_probs, advantages, 0.2)
+    >>> round(float(loss), 4), float(infos["clip_fraction"])      # -(1.2 + 1.2 - e^0.5) / 3
+    (-0.2504, 1.0)
+
+    An agent takes its updaters as parts:
+
     >>> agent = ivy_rl.PPO(actor_updater=ClippedRatio(lr=1e-3, ratio_clip=0.1))
+    >>> agent.config["ratio_clip"]
+    0.1
 """
 
 from __future__ import annotations
@@ -115,7 +130,14 @@ def conjugate_gradient(
     ``matvec``, on nests, with ``steps`` unrolled conjugate-gradient iterations from ``x = 0``.
 
     Example:
-        >>> x = conjugate_gradient(ivy.jax, lambda p: fisher_vector_product(p), grads, 10)
+        TRPO's ``matvec`` is a Fisher-vector product; here a 2 x 2 matrix, solved exactly in
+        two steps (``x = [1/11, 7/11]``):
+
+        >>> import jax.numpy as jnp, ivy
+        >>> A = jnp.array([[4.0, 1.0], [1.0, 3.0]])
+        >>> b = {"w": jnp.array([1.0, 2.0])}
+        >>> conjugate_gradient(ivy.jax, lambda p: {"w": A @ p["w"]}, b, steps=2)
+        {'w': Array([0.09090909, 0.6363636 ], dtype=float32)}
     """
     x = map_nest(xp.zeros_like, b)
     r = b
@@ -219,9 +241,15 @@ class GradientUpdater:
         gradient_clip: the global norm gradients are clipped to (0: no clipping).
 
     Example:
-        >>> updater = ValueRegression(lr=1e-3).initialize(ivy.jax)
+        >>> import jax.numpy as jnp, ivy
+        >>> updater = ValueRegression(lr=0.1).initialize(ivy.jax)
+        >>> v = {"w": jnp.array(0.0)}
         >>> state = updater.init_state(v)
-        >>> v, state, infos = updater.minimize(loss_fn, v, state)
+        >>> def loss_fn(v):
+        ...     return updater.loss(v["w"] * jnp.ones(3), jnp.array([1.0, 2.0, 3.0]))
+        >>> v, state, infos = updater.minimize(loss_fn, v, state)   # one Adam step of 0.1
+        >>> v, infos
+        ({'w': Array(0.1, dtype=float32)}, {'loss': Array(4.666667, dtype=float32)})
     """
 
     has_optimizer = True
@@ -280,7 +308,8 @@ class ValueRegression(GradientUpdater):
         gradient_clip: global norm of the gradients (0: no clipping).
 
     Example:
-        >>> ivy_rl.A2C(critic_updater=ValueRegression(lr=1e-3))
+        >>> ivy_rl.A2C(critic_updater=ValueRegression(lr=1e-3)).config["critic_lr"]
+        0.001
     """
 
     def __init__(self, lr: float = 1e-3, gradient_clip: float = 0.0) -> None:
@@ -300,7 +329,8 @@ class StochasticPolicyGradient(GradientUpdater):
         gradient_clip: global norm of the gradients (0: no clipping).
 
     Example:
-        >>> ivy_rl.A2C(actor_updater=StochasticPolicyGradient(lr=3e-3))
+        >>> ivy_rl.A2C(actor_updater=StochasticPolicyGradient(lr=3e-3)).config["actor_lr"]
+        0.003
     """
 
     needs_distribution = False  # whether the replay keeps the acting policy's parameters
@@ -334,7 +364,9 @@ class ClippedRatio(StochasticPolicyGradient):
         gradient_clip: global norm of the gradients (0: no clipping).
 
     Example:
-        >>> ivy_rl.PPO(actor_updater=ClippedRatio(lr=1e-3, ratio_clip=0.2, kl_threshold=None))
+        >>> agent = ivy_rl.PPO(actor_updater=ClippedRatio(lr=1e-3, kl_threshold=None))
+        >>> agent.config["kl_threshold"] is None                   # no early stop of the epochs
+        True
     """
 
     settings = {
@@ -390,7 +422,8 @@ class TrustRegionPolicyGradient:
         entropy_coeff: weight of the entropy bonus in the surrogate.
 
     Example:
-        >>> ivy_rl.TRPO(actor_updater=TrustRegionPolicyGradient(max_kl=0.01))
+        >>> ivy_rl.TRPO(actor_updater=TrustRegionPolicyGradient(max_kl=0.02)).config["max_kl"]
+        0.02
     """
 
     has_optimizer = False
