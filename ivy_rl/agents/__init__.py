@@ -2,8 +2,12 @@
 on-policy agents ``A2C``, ``PPO`` and ``TRPO`` (Box and Discrete actions).
 
 Example:
-    >>> agent = ivy_rl.agents.make("PPO", batch_size=64)
-    >>> agent.initialize(env.observation_space, env.action_space, seed=0, f="torch")
+    >>> import gymnasium as gym, numpy as np
+    >>> env = gym.make("Pendulum-v1")
+    >>> agent = ivy_rl.agents.make("PPO", environment="Pendulum-v1", batch_size=64)
+    >>> agent = agent.initialize(env.observation_space, env.action_space, seed=0, f="jax")
+    >>> agent.step(np.zeros((4, 3), np.float32)).shape     # an action for each of 4 workers
+    (4, 1)
 """
 
 from __future__ import annotations

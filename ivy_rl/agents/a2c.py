@@ -25,10 +25,16 @@ critic_updater=...)`` (:class:`~ivy_rl.models.ActorCriticModel`,
 belongs to, and ``agent.config`` holds the flat settings of every part.
 
 Example:
+    >>> import gymnasium as gym, numpy as np
+    >>> env = gym.make("Pendulum-v1")
     >>> agent = A2C(segment_size=128).initialize(env.observation_space, env.action_space,
-    ...                                         seed=0, f="torch")
+    ...                                         seed=0, f="jax")
+    >>> from ivy_rl.replays import Segment
+    >>> from ivy_rl.updaters import StochasticPolicyGradient
     >>> agent = A2C(replay=Segment(128, discount=0.98),
     ...             actor_updater=StochasticPolicyGradient(3e-3))
+    >>> agent.config["segment_size"], agent.config["discount"], agent.config["actor_lr"]
+    (128, 0.98, 0.003)
 """
 
 from __future__ import annotations
@@ -109,7 +115,8 @@ class A2C(Agent):
             Same numbers either way.
 
     Example:
-        >>> A2C(segment_size=64, actor_lr=1e-3)
+        >>> A2C(segment_size=64, actor_lr=1e-3).config["segment_size"]
+        64
     """
 
     learns = True

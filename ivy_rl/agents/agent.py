@@ -42,9 +42,14 @@ mini-batches), so a seed gives the same numbers on every backend, compiled funct
 nothing, and a checkpoint restores the random state exactly.
 
 Example:
+    >>> import gymnasium as gym, numpy as np
+    >>> env = gym.make("Pendulum-v1")
     >>> agent = ivy_rl.agents.PPO().initialize(env.observation_space, env.action_space,
     ...                                         seed=0, f="jax")
+    >>> observations = np.zeros((2, 3), np.float32)     # of 2 workers
     >>> actions = agent.step(observations)
+    >>> agent.update(observations, np.zeros(2), np.zeros(2, bool), np.zeros(2, bool))
+    {}
 """
 
 from __future__ import annotations
@@ -208,7 +213,10 @@ class Agent:
         ``[0, 1]``); the next updates read the scheduled settings at it.
 
         Example:
-            >>> agent.set_progress(0.5)  # "linear:1e-3" learning rates are 5e-4 now
+            >>> agent = PPO(actor_lr="linear:1e-3")
+            >>> agent.set_progress(0.5)
+            >>> agent.scheduled_values()["actor_lr"]   # "linear:1e-3" is 5e-4 half-way
+            0.0005
         """
         fraction = float(fraction)
         if not np.isfinite(fraction):
@@ -269,7 +277,11 @@ class Agent:
             The agent itself.
 
         Example:
+            >>> import gymnasium as gym
+            >>> env = gym.make("Pendulum-v1")
             >>> agent = A2C().initialize(env.observation_space, env.action_space, f="torch")
+            >>> agent.xp is ivy.torch, agent.dtype, agent.device
+            (True, 'float32', 'cpu')
         """
         name = type(self).__name__
         if f is None:
@@ -332,8 +344,18 @@ class Agent:
         ``torch.compile`` trace anew for. 0 when running eagerly.
 
         Example:
-            >>> agent.compiles  # after the first update of a PPO agent on jax
-            3
+            A PPO agent on jax, with segments of 4 steps of 2 workers:
+
+            >>> import gymnasium as gym, numpy as np
+            >>> env = gym.make("Pendulum-v1")
+            >>> agent = PPO(segment_size=4, batch_size=8, epochs=1).initialize(
+            ...     env.observation_space, env.action_space, seed=0, f="jax")
+            >>> obs, no = np.zeros((2, 3), np.float32), np.zeros(2, bool)
+            >>> for _ in range(8):                      # two segments, two updates
+            ...     actions = agent.step(obs)
+            ...     logs = agent.update(obs, np.zeros(2), no, no)
+            >>> agent.compiles                          # acting, and the update: none new
+            2
         """
         return sum(len(seen) for seen in getattr(self, "_signatures", {}).values())
 
@@ -425,8 +447,14 @@ class Agent:
             ``(action, None)``: one action for one observation, a batch for a batch.
 
         Example:
+            >>> import gymnasium as gym
+            >>> env = gym.make("Pendulum-v1")
+            >>> agent = PPO().initialize(env.observation_space, env.action_space, f="jax")
+            >>> obs, info = env.reset(seed=0)
             >>> action, _ = agent.predict(obs, deterministic=True)
             >>> obs, reward, terminated, truncated, info = env.step(action)
+            >>> action.shape
+            (1,)
         """
         self._check_initialized()
         obs = np.asarray(observation)
@@ -474,7 +502,12 @@ class Agent:
         class, settings, random generator state and counters). Any backend loads it.
 
         Example:
-            >>> agent.save("runs/ppo/checkpoints/step_100000")
+            >>> import gymnasium as gym, os
+            >>> env = gym.make("Pendulum-v1")
+            >>> agent = PPO().initialize(env.observation_space, env.action_space, f="jax")
+            >>> agent.save("runs/ppo/checkpoints/step_0")
+            >>> sorted(os.listdir("runs/ppo/checkpoints/step_0"))
+            ['agent.json', 'arrays.npz']
         """
         self._check_initialized()
         os.makedirs(path, exist_ok=True)
@@ -505,7 +538,16 @@ class Agent:
             The agent itself.
 
         Example:
-            >>> agent = PPO().initialize(obs_space, act_space, f="jax").load(checkpoint)
+            Saved on jax, loaded on torch:
+
+            >>> import gymnasium as gym, numpy as np
+            >>> env = gym.make("Pendulum-v1")
+            >>> saved = PPO().initialize(env.observation_space, env.action_space, seed=1, f="jax")
+            >>> saved.save("ckpt")
+            >>> agent = PPO().initialize(env.observation_space, env.action_space, f="torch")
+            >>> agent = agent.load("ckpt")
+            >>> agent.xp is ivy.torch, agent.rng.random() == saved.rng.random()  # the same state
+            (True, True)
         """
         self._check_initialized()
         with open(os.path.join(path, "agent.json")) as fh:

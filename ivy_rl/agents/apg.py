@@ -7,9 +7,13 @@ dynamics (backpropagation through time). See :mod:`ivy_rl.agents.through_gym` fo
 shares with :class:`~ivy_rl.agents.SHAC` and its contract with the trainer.
 
 Example:
+    >>> import gymnasium as gym, ivy_gym                 # ivy_gym registers its ids
+    >>> env = gym.make("ivy_gym/Pendulum-v1")
     >>> agent = APG(horizon=64, batch_size=32)
-    >>> agent.bind_environment("ivy_gym/Pendulum-v1", {})
-    >>> agent.initialize(obs_space, act_space, seed=0, f="jax")
+    >>> agent.bind_environment("ivy_gym/Pendulum-v1", {})  # what the trainer does first
+    >>> agent = agent.initialize(env.observation_space, env.action_space, seed=0, f="jax")
+    >>> type(agent.core).__name__                       # the differentiable core it learns through
+    'Pendulum'
 """
 
 from __future__ import annotations
@@ -42,7 +46,8 @@ class APG(DifferentiableAgent):
         fusion: ``'update'``, ``'steps'`` or ``'auto'`` (see :mod:`ivy_rl.agents.through_gym`).
 
     Example:
-        >>> APG(horizon=64, actor_lr=1e-3)
+        >>> APG(horizon=64, actor_lr=1e-3).config["horizon"]
+        64
     """
 
     _defaults: dict[str, Any] = dict(horizon=64)
@@ -72,8 +77,16 @@ class APG(DifferentiableAgent):
             ``(loss, {'rollout_reward': mean reward per step})``.
 
         Example:
-            >>> loss, grads, _ = ivy.execute_with_gradients(
+            >>> import gymnasium as gym, ivy_gym, jax.numpy as jnp, ivy
+            >>> env = gym.make("ivy_gym/Pendulum-v1")
+            >>> agent = APG(horizon=4)
+            >>> agent.bind_environment("ivy_gym/Pendulum-v1", {})
+            >>> agent = agent.initialize(env.observation_space, env.action_space, f="jax")
+            >>> start = jnp.array([[0.0, 0.0], [3.0, 0.5]])     # (angle, angular velocity)
+            >>> loss, grads, infos = ivy.execute_with_gradients(
             ...     lambda v: agent.policy_loss(v, start), agent.v["actor"])
+            >>> grads["head"]["layer"]["w"].shape               # through the dynamics
+            (1, 64)
         """
         self._check_initialized()
         xp = self.xp

@@ -1,8 +1,14 @@
 """Baseline agents that do not learn: uniform random actions and a constant action.
 
 Example:
+    >>> import gymnasium as gym, numpy as np
+    >>> env = gym.make("Pendulum-v1")
     >>> agent = Uniform().initialize(env.observation_space, env.action_space, seed=0)
-    >>> agent.step(np.zeros((4, 3)))  # four random actions
+    >>> agent.step(np.zeros((4, 3)))                    # four random actions
+    array([[ 0.54784673],
+           [-0.92085314],
+           [-1.836106  ],
+           [-1.9338895 ]], dtype=float32)
 """
 
 from __future__ import annotations
@@ -21,7 +27,11 @@ class Uniform(Agent):
     rescaled when bounded; Discrete: every action equally likely), in training and in tests.
 
     Example:
-        >>> Uniform().initialize(obs_space, gym.spaces.Discrete(3), seed=1).step(obs)
+        >>> import gymnasium as gym, numpy as np
+        >>> obs_space = gym.spaces.Box(-1, 1, (2,))
+        >>> agent = Uniform().initialize(obs_space, gym.spaces.Discrete(3), seed=1)
+        >>> agent.step(np.zeros((4, 2)))
+        array([1, 1, 2, 2])
     """
 
     def _draw(self, count: int) -> np.ndarray:
@@ -49,7 +59,11 @@ class Constant(Agent):
             (zeros when unbounded) or action 0 (the space's ``start``) of a Discrete space.
 
     Example:
-        >>> Constant(value=[0.5]).initialize(obs_space, box_space).step(obs)
+        >>> import gymnasium as gym, numpy as np
+        >>> obs_space, box_space = gym.spaces.Box(-1, 1, (2,)), gym.spaces.Box(-2, 2, (1,))
+        >>> Constant(value=[0.5]).initialize(obs_space, box_space).step(np.zeros((2, 2)))
+        array([[0.5],
+               [0.5]], dtype=float32)
     """
 
     def __init__(self, *, value: Any = None) -> None:

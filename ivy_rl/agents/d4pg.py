@@ -34,7 +34,9 @@ class D4PG(DDPG):
         Others: as for :class:`~ivy_rl.agents.DDPG`.
 
     Example:
-        >>> D4PG(v_min=-1000.0, v_max=0.0, atoms=51)
+        >>> agent = D4PG(v_min=-1000.0, v_max=0.0, atoms=51)    # Pendulum's returns are <= 0
+        >>> agent.config["v_min"], agent.config["atoms"]
+        (-1000.0, 51)
     """
 
     _defaults: dict[str, Any] = dict(return_steps=5)

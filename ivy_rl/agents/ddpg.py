@@ -11,8 +11,12 @@ exploration=NormalNoise(...), actor_updater=DeterministicPolicyGradient(...),
 critic_updater=DeterministicQLearning(...))``; flat settings build the parts not given.
 
 Example:
+    >>> import gymnasium as gym, numpy as np
+    >>> env = gym.make("Pendulum-v1")
     >>> agent = DDPG(exploration="ornstein_uhlenbeck").initialize(
     ...     env.observation_space, env.action_space, seed=0, f="jax")
+    >>> agent.step(np.zeros((2, 3), np.float32)).shape
+    (2, 1)
 """
 
 from __future__ import annotations
@@ -64,7 +68,8 @@ class DDPG(OffPolicyAgent):
         Others: as for :class:`~ivy_rl.agents.off_policy.OffPolicyAgent`.
 
     Example:
-        >>> DDPG(hidden_sizes=(64, 64), exploration_scale=0.2)
+        >>> DDPG(hidden_sizes=(64, 64), exploration_scale=0.2).config["exploration_scale"]
+        0.2
     """
 
     supported_action_spaces = ("Box",)

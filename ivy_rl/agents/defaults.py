@@ -14,7 +14,8 @@ Example:
     >>> task_family("CartPole-v1"), task_family("Hopper-v5"), task_family("ivy_gym/Pendulum-v0")
     ('classic_discrete', 'mujoco', 'ivy_gym')
     >>> check_setting("segment_size", "32")
-    TypeError: setting 'segment_size' must be an integer >= 1, got '32' (str) ...
+    Traceback (most recent call last):
+    TypeError: setting 'segment_size' must be an integer >= 1, got '32' (str): ...
 """
 
 from __future__ import annotations
@@ -193,7 +194,8 @@ def check_setting(name: str, value: Any) -> Any:
         >>> check_setting("hidden_sizes", [64, 64])
         (64, 64)
         >>> check_setting("hidden_sizes", 64)
-        TypeError: setting 'hidden_sizes' must be a non-empty list of integers >= 1 ...
+        Traceback (most recent call last):
+        TypeError: setting 'hidden_sizes' must be a non-empty list of integers >= 1, ...
     """
     return check(name, SETTINGS.get(name), value)
 

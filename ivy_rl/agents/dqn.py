@@ -13,8 +13,12 @@ The agent is its parts: ``DQN(model=QModel(...), replay=Transitions(...),
 exploration=EpsilonGreedy(...), updater=QLearning(...))``.
 
 Example:
+    >>> import gymnasium as gym, numpy as np
+    >>> env = gym.make("CartPole-v1")
     >>> agent = DQN(dueling=True, double=True).initialize(
     ...     env.observation_space, env.action_space, seed=0, f="jax")
+    >>> agent.test_step(np.zeros((2, 4), np.float32))   # greedy actions of 2 workers
+    array([0, 0])
 """
 
 from __future__ import annotations
@@ -51,7 +55,8 @@ class DQN(OffPolicyAgent):
         the Q-network's torso).
 
     Example:
-        >>> DQN(hidden_sizes=(64, 64), epsilon_decay_steps=10_000)
+        >>> DQN(hidden_sizes=(64, 64), epsilon_decay_steps=10_000).config["hidden_sizes"]
+        (64, 64)
     """
 
     supported_action_spaces = ("Discrete",)
@@ -100,7 +105,12 @@ class BranchingDQN(DQN):
         As for :class:`DQN` (``dueling``: the branches share one state value).
 
     Example:
-        >>> BranchingDQN().initialize(obs_space, gymnasium.spaces.MultiDiscrete([3, 3]), f="jax")
+        >>> import gymnasium, numpy as np
+        >>> obs_space = gymnasium.spaces.Box(-1, 1, (4,))
+        >>> agent = BranchingDQN().initialize(obs_space, gymnasium.spaces.MultiDiscrete([3, 5]),
+        ...                                   f="jax")
+        >>> agent.step(np.zeros((2, 4), np.float32)).shape     # one choice per dimension
+        (2, 2)
     """
 
     supported_action_spaces = ("MultiDiscrete",)

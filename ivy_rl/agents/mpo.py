@@ -12,8 +12,12 @@ fitted separately, each under a per-dimension KL bound to the target policy (``e
 drawn by the agent's numpy generator and passed in.
 
 Example:
+    >>> import gymnasium as gym, numpy as np
+    >>> env = gym.make("Pendulum-v1")
     >>> agent = MPO(num_samples=20, epsilon=0.1).initialize(
     ...     env.observation_space, env.action_space, seed=0, f="tensorflow")
+    >>> agent.step(np.zeros((2, 3), np.float32)).shape
+    (2, 1)
 """
 
 from __future__ import annotations
@@ -57,7 +61,8 @@ class MPO(DDPG):
         sampling its policy).
 
     Example:
-        >>> MPO(hidden_sizes=(256, 256), num_samples=20)
+        >>> MPO(hidden_sizes=(256, 256), num_samples=20).config["num_samples"]
+        20
     """
 
     scheduled = ("actor_lr", "critic_lr", "dual_lr")

@@ -7,8 +7,12 @@ estimate exceeds ``kl_threshold``, the remaining actor steps leave the actor and
 state unchanged (the critic goes on).
 
 Example:
+    >>> import gymnasium as gym, numpy as np
+    >>> env = gym.make("Pendulum-v1")
     >>> agent = PPO(segment_size=32, batch_size=256, epochs=20).initialize(
     ...     env.observation_space, env.action_space, seed=0, f="jax")
+    >>> agent.step(np.zeros((8, 3), np.float32)).shape      # 8 workers: 256 steps a segment
+    (8, 1)
 """
 
 from __future__ import annotations
@@ -41,7 +45,9 @@ class PPO(A2C):
         Others: as for :class:`~ivy_rl.agents.A2C`.
 
     Example:
-        >>> PPO(ratio_clip=0.2, kl_threshold=0.015, epochs=10, batch_size=64)
+        >>> agent = PPO(ratio_clip=0.2, kl_threshold=0.015, epochs=10, batch_size=64)
+        >>> agent.config["kl_threshold"], agent.config["epochs"]
+        (0.015, 10)
     """
 
     scheduled = ("actor_lr", "critic_lr", "ratio_clip")

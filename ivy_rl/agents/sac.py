@@ -8,11 +8,22 @@ dimensions). The sampling noise is drawn by the agent's numpy generator and pass
 compiled update draws nothing.
 
 Example:
+    >>> import gymnasium as gym, numpy as np
+    >>> env = gym.make("Pendulum-v1")
     >>> agent = SAC(hidden_sizes=(256, 256)).initialize(
     ...     env.observation_space, env.action_space, seed=0, f="jax")
+    >>> agent.step(np.zeros((2, 3), np.float32)).shape
+    (2, 1)
+
+    The same agent from its parts:
+
+    >>> from ivy_rl.off_policy_models import ActorQModel
+    >>> from ivy_rl.off_policy_updaters import TwinCriticSoftQLearning
     >>> agent = SAC(model=ActorQModel((64, 64), policy="squashed_gaussian", critics=2,
     ...                               targets=("critic",)),
     ...             critic_updater=TwinCriticSoftQLearning(lr=3e-4))
+    >>> agent.config["hidden_sizes"], agent.config["critic_lr"]
+    ((64, 64), 0.0003)
 """
 
 from __future__ import annotations
@@ -44,7 +55,8 @@ class SAC(DDPG):
         sampling its policy: it has no exploration noise).
 
     Example:
-        >>> SAC(initial_temperature=0.1, temperature_lr=3e-4)
+        >>> SAC(initial_temperature=0.1, temperature_lr=3e-4).config["initial_temperature"]
+        0.1
     """
 
     scheduled = ("actor_lr", "critic_lr", "temperature_lr")

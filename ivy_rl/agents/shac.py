@@ -17,9 +17,13 @@ states, drawn by the agent's numpy generator. The rollouts are truncated to K st
 gradient never runs through a long, chaotic horizon; the critic stands for what follows.
 
 Example:
+    >>> import gymnasium as gym, ivy_gym                 # ivy_gym registers its ids
+    >>> env = gym.make("ivy_gym/Pendulum-v1")
     >>> agent = SHAC(horizon=32, batch_size=64)
     >>> agent.bind_environment("ivy_gym/Pendulum-v1", {})
-    >>> agent.initialize(obs_space, act_space, seed=0, f="jax")
+    >>> agent = agent.initialize(env.observation_space, env.action_space, seed=0, f="jax")
+    >>> sorted(agent.v)                                 # the critic's target network too
+    ['actor', 'critic', 'target']
 """
 
 from __future__ import annotations
@@ -56,7 +60,8 @@ class SHAC(DifferentiableAgent):
         Others: as for :class:`~ivy_rl.agents.APG`.
 
     Example:
-        >>> SHAC(horizon=32, critic_iterations=16)
+        >>> SHAC(horizon=32, critic_iterations=16).config["critic_iterations"]
+        16
     """
 
     scheduled: tuple[str, ...] = ("actor_lr", "critic_lr")

@@ -6,8 +6,12 @@ numpy generator and passed in) and delayed actor updates: each step of the compi
 ``policy_delay`` critic steps, then one actor step and the targets' soft update.
 
 Example:
+    >>> import gymnasium as gym, numpy as np
+    >>> env = gym.make("Pendulum-v1")
     >>> agent = TD3(policy_delay=2, target_noise=0.2).initialize(
-    ...     env.observation_space, env.action_space, seed=0, f="torch")
+    ...     env.observation_space, env.action_space, seed=0, f="jax")
+    >>> agent.step(np.zeros((2, 3), np.float32)).shape
+    (2, 1)
 """
 
 from __future__ import annotations
@@ -40,7 +44,8 @@ class TD3(DDPG):
         Others: as for :class:`~ivy_rl.agents.DDPG`.
 
     Example:
-        >>> TD3(hidden_sizes=(64, 64), policy_delay=2)
+        >>> TD3(hidden_sizes=(64, 64), policy_delay=2).config["policy_delay"]
+        2
     """
 
     own_settings = {

@@ -21,9 +21,16 @@ rollout and its gradient run eagerly and each critic step is compiled on its own
 (``fusion='steps'``). Same numbers either way.
 
 Example:
+    >>> import gymnasium as gym, numpy as np, ivy_gym    # ivy_gym registers its ids
+    >>> env = gym.make("ivy_gym/Pendulum-v1")
     >>> agent = ivy_rl.agents.APG()
     >>> agent.bind_environment("ivy_gym/Pendulum-v1", {})
-    >>> agent.initialize(obs_space, act_space, seed=0, f="jax")
+    >>> agent = agent.initialize(env.observation_space, env.action_space, seed=0, f="jax")
+    >>> agent.test_step(np.zeros((2, 3), np.float32)).shape   # acts like any agent
+    (2, 1)
+    >>> agent.bind_environment("CartPole-v1", {})
+    Traceback (most recent call last):
+    ValueError: APG: 'CartPole-v1' is not a differentiable ivy_gym environment ...
 """
 
 from __future__ import annotations

@@ -5,7 +5,11 @@ returns, the trust-region step of the actor (conjugate gradient and line search,
 an ``ivy.scan`` over the critic's mini-batches.
 
 Example:
+    >>> import gymnasium as gym, numpy as np
+    >>> env = gym.make("Pendulum-v1")
     >>> agent = TRPO(max_kl=0.01).initialize(env.observation_space, env.action_space, f="jax")
+    >>> agent.step(np.zeros((2, 3), np.float32)).shape
+    (2, 1)
 """
 
 from __future__ import annotations
@@ -18,27 +22,29 @@ __all__ = ["TRPO"]
 
 class TRPO(A2C):
     """Trust region policy optimisation (Schulman et al., 2015): once per segment, the actor
-        takes the natural gradient step of the importance-sampled surrogate within a KL trust
-        region (conjugate gradient on Fisher-vector products, backtracking line search); the
-        critic then regresses the λ-returns for ``critic_iterations`` passes.
+    takes the natural gradient step of the importance-sampled surrogate within a KL trust
+    region (conjugate gradient on Fisher-vector products, backtracking line search); the
+    critic then regresses the λ-returns for ``critic_iterations`` passes.
 
-        The old policy of the KL is rebuilt from the distribution parameters stored when acting
-        (not recomputed from the actor's variables), so it is a constant of the step on every
-        backend.
+    The old policy of the KL is rebuilt from the distribution parameters stored when acting
+    (not recomputed from the actor's variables), so it is a constant of the step on every
+    backend.
 
-        Its actor updater is a :class:`~ivy_rl.updaters.TrustRegionPolicyGradient` (no optimiser,
+    Its actor updater is a :class:`~ivy_rl.updaters.TrustRegionPolicyGradient` (no optimiser,
     so no ``actor_lr``).
 
-        Args:
-            max_kl: the trust region's radius δ (mean KL between the old and new policies).
-            cg_steps: conjugate-gradient iterations.
-            damping: added to the Fisher-vector products (``F + damping I``).
-            backtrack_steps: candidate steps of the line search.
-            backtrack_coefficient: shrink factor between candidates.
-            Others: as for :class:`~ivy_rl.agents.A2C`.
+    Args:
+        max_kl: the trust region's radius δ (mean KL between the old and new policies).
+        cg_steps: conjugate-gradient iterations.
+        damping: added to the Fisher-vector products (``F + damping I``).
+        backtrack_steps: candidate steps of the line search.
+        backtrack_coefficient: shrink factor between candidates.
+        **settings: the other settings, as for :class:`~ivy_rl.agents.A2C`.
 
-        Example:
-            >>> TRPO(max_kl=0.01, cg_steps=10, backtrack_steps=10)
+    Example:
+        >>> agent = TRPO(max_kl=0.01, cg_steps=10, backtrack_steps=10)
+        >>> agent.config["max_kl"], agent.config["cg_steps"], "actor_lr" in agent.config
+        (0.01, 10, False)
     """
 
     _TRUST_REGION = ("max_kl", "cg_steps", "damping", "backtrack_steps", "backtrack_coefficient")
