@@ -9,7 +9,14 @@ the new header.
 Example:
     >>> log = Logger("runs/ppo")
     >>> log.store("train/episode_score", 21.0, stats=True)
-    >>> log.dump({"train/steps": 1000})
+    >>> log.store("train/episode_score", 25.0, stats=True)
+    >>> row = log.dump({"train/steps": 1000})          # the epoch's table; a row of log.csv
+    ----------------------------------------
+    | train/steps              |       1000 |
+    | train/episode_score/mean |         23 |
+    ----------------------------------------
+    >>> row["train/episode_score/max"]
+    25.0
 """
 
 from __future__ import annotations
@@ -185,7 +192,12 @@ def read_log(path: str) -> list[dict[str, Any]]:
     counters), floats elsewhere; empty cells are left out. Written back, a row reads the same.
 
     Example:
-        >>> rows = read_log("runs/ppo/log.csv"); rows[-1]["test/episode_score/mean"]
+        >>> log = Logger("runs/ppo", quiet=True)
+        >>> log.store("test/episode_score", 200.0, stats=True)
+        >>> row = log.dump({"train/steps": 1000})
+        >>> rows = read_log("runs/ppo/log.csv")
+        >>> rows[-1]["train/steps"], rows[-1]["test/episode_score/mean"]
+        (1000, 200.0)
     """
     with open(path, newline="") as fh:
         rows = []
