@@ -21,8 +21,12 @@ on any framework (the arrays are numpy's). A checkpoint is written into a hidden
 :func:`usable_checkpoint` skips damaged ones, naming their files.
 
 Example:
-    >>> path = usable_checkpoint("runs/PPO-CartPole-v1-torch-0")
-    >>> check_checkpoint(path)
+    >>> trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
+    >>> rows = trainer.run("Uniform", "CartPole-v1", out="runs/uniform")  # a quick baseline run
+    finished: 400 steps in ...
+    >>> path = usable_checkpoint("runs/uniform"); path
+    'runs/uniform/checkpoints/step_400'
+    >>> check_checkpoint(path)                          # every file reads
 """
 
 from __future__ import annotations
@@ -87,8 +91,11 @@ def checkpoints(out: str) -> list[str]:
     """The complete checkpoints of a run (those with ``trainer.json``), oldest first.
 
     Example:
-        >>> checkpoints("runs/ppo")
-        ['runs/ppo/checkpoints/step_90000', 'runs/ppo/checkpoints/step_100000']
+        >>> trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
+        >>> rows = trainer.run("Uniform", "CartPole-v1", out="runs/uniform")  # a quick baseline run
+        finished: 400 steps in ...
+        >>> checkpoints("runs/uniform")                  # one per epoch, the last 2 kept
+        ['runs/uniform/checkpoints/step_200', 'runs/uniform/checkpoints/step_400']
     """
     paths = glob.glob(os.path.join(out, "checkpoints", "step_*"))
     paths = [p for p in paths if _step_of(p) >= 0]
@@ -101,8 +108,13 @@ def latest_checkpoint(out: str) -> str | None:
     None.
 
     Example:
-        >>> latest_checkpoint("runs/ppo")
-        'runs/ppo/checkpoints/step_100000'
+        >>> trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
+        >>> rows = trainer.run("Uniform", "CartPole-v1", out="runs/uniform")  # a quick baseline run
+        finished: 400 steps in ...
+        >>> latest_checkpoint("runs/uniform")
+        'runs/uniform/checkpoints/step_400'
+        >>> latest_checkpoint("runs/none") is None
+        True
     """
     found = checkpoints(out)
     return found[-1] if found else None
@@ -156,7 +168,15 @@ def check_checkpoint(path: str) -> None:
     damaged (truncated arrays, broken JSON).
 
     Example:
-        >>> check_checkpoint("runs/ppo/checkpoints/step_100000")
+        >>> trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
+        >>> rows = trainer.run("Uniform", "CartPole-v1", out="runs/uniform")  # a quick baseline run
+        finished: 400 steps in ...
+        >>> check_checkpoint("runs/uniform/checkpoints/step_400")
+        >>> import os
+        >>> os.remove("runs/uniform/checkpoints/step_400/agent/arrays.npz")
+        >>> check_checkpoint("runs/uniform/checkpoints/step_400")
+        Traceback (most recent call last):
+        ivy_rl.checkpoints.CheckpointError: runs/uniform/.../step_400/agent/arrays.npz is missing
     """
     agent = os.path.join(path, "agent")
     if os.path.exists(os.path.join(path, "trainer.json")):
@@ -179,7 +199,14 @@ def usable_checkpoint(out: str, *, warn: Callable[[str], None] | None = None) ->
         CheckpointError: every checkpoint is damaged (naming the files).
 
     Example:
-        >>> usable_checkpoint("runs/ppo", warn=print)
+        >>> trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
+        >>> rows = trainer.run("Uniform", "CartPole-v1", out="runs/uniform")  # a quick baseline run
+        finished: 400 steps in ...
+        >>> import os
+        >>> os.remove("runs/uniform/checkpoints/step_400/agent/arrays.npz")  # a damaged one
+        >>> usable_checkpoint("runs/uniform", warn=print)
+        skipping damaged checkpoints (runs/.../step_400/agent/arrays.npz is missing); using step_200
+        'runs/uniform/checkpoints/step_200'
     """
     found = checkpoints(out)
     problems = []
