@@ -54,7 +54,18 @@ def play(
         ``[{'score': ..., 'length': ...}]`` per episode.
 
     Example:
-        >>> play("runs/ppo-cartpole", episodes=1, video="play.gif")
+        A run folder of a quick baseline run (any agent's run plays the same way):
+
+        >>> import ivy_rl
+        >>> trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
+        >>> rows = trainer.run("Uniform", "CartPole-v1", out="runs/uniform")
+        finished: 400 steps in ...
+        >>> episodes = play("runs/uniform", episodes=1, video="play.gif")
+        episode 0: score 54.00, length 54
+        score 54.00 +- 0.00 (min 54.00, max 54.00) over 1 episode, length 54.0
+        wrote play.gif (54 frames, 30 fps)
+        >>> episodes
+        [{'score': 54.0, 'length': 54}]
     """
     from ivy_rl.agents import make
     from ivy_rl.checkpoints import check_checkpoint, usable_checkpoint

@@ -60,7 +60,19 @@ def plot(
         ``{label: (x, mean, low, high)}`` of the curves drawn.
 
     Example:
-        >>> plot(["runs/ppo-0", "runs/ppo-1"], "curves.png")
+        Two seeds of a quick baseline run, averaged into one curve (``-0`` and ``-1``, the
+        seeds, are one label):
+
+        >>> import ivy_rl
+        >>> for seed in (0, 1):
+        ...     trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
+        ...     rows = trainer.run("Uniform", "CartPole-v1", seed=seed, out=f"runs/uniform-{seed}")
+        finished: 400 steps in ...
+        finished: 400 steps in ...
+        >>> curves = plot(["runs/uniform-0", "runs/uniform-1"], "curves.png")
+        >>> steps, mean, low, high = curves["uniform"]
+        >>> steps, mean
+        (array([200., 400.]), array([23.5, 22.5]))
     """
     import matplotlib
 
