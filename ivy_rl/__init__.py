@@ -19,10 +19,16 @@ Agents are composed of parts (a model, a replay, an actor updater and a critic u
 :func:`ivy_rl.agents.make` builds them with the defaults of a task family.
 
 Example:
+    A short run (CartPole-v1 takes about ``steps=100_000`` to learn; here 2,000 show the calls):
+
     >>> import ivy_rl
     >>> agent = ivy_rl.agents.make("PPO", environment="CartPole-v1")
-    >>> trainer = ivy_rl.Trainer(steps=100_000)
-    >>> trainer.run(agent, "CartPole-v1", workers=8, seed=0, f="torch", out="runs/ppo")
+    >>> trainer = ivy_rl.Trainer(steps=2_000, epoch_steps=1_000, test_episodes=1,
+    ...                          show_progress=False)
+    >>> rows = trainer.run(agent, "CartPole-v1", workers=8, seed=0, f="jax", out="runs/ppo")
+    finished: 2,000 steps in ...
+    >>> len(rows), rows[-1]["train/steps"]                # one row per epoch, as in log.csv
+    (2, 2000)
 """
 
 import importlib.util as _importlib_util

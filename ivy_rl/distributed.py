@@ -8,8 +8,13 @@ them in parallel and gathers the results. Ray is started on first use with ``ray
 unless it is already running (connect to a cluster first with ``ray.init(address=...)``).
 
 Example:
-    >>> venv = RayVectorEnv("CartPole-v1", 8, groups=2)
-    >>> workers = ivy_rl.environments.Workers(venv, seed=0)
+    Eight CartPole environments in two Ray actors, stepped as the trainer steps its workers.
+    (Starting Ray takes seconds and forks the process, so the test suite skips these lines.)
+
+    >>> venv = RayVectorEnv("CartPole-v1", 8, groups=2)            # doctest: +SKIP
+    >>> workers = ivy_rl.environments.Workers(venv, seed=0)        # doctest: +SKIP
+    >>> workers.start().shape                                       # doctest: +SKIP
+    (8, 4)
 """
 
 from __future__ import annotations
@@ -78,8 +83,12 @@ class RayVectorEnv(gym.vector.VectorEnv):
         num_cpus: CPUs Ray reserves for each actor.
 
     Example:
-        >>> venv = RayVectorEnv("Pendulum-v1", 4, groups=2)
-        >>> obs, info = venv.reset(seed=[0, 1, 2, 3])
+        (Starting Ray takes seconds and forks the process, so the test suite skips these lines.)
+
+        >>> venv = RayVectorEnv("Pendulum-v1", 4, groups=2)        # doctest: +SKIP
+        >>> obs, info = venv.reset(seed=[0, 1, 2, 3])              # doctest: +SKIP
+        >>> obs.shape                                               # doctest: +SKIP
+        (4, 3)
     """
 
     def __init__(

@@ -151,10 +151,10 @@ class Categorical:
         logits: ``[..., num_actions]`` unnormalised log-probabilities.
 
     Example:
-        >>> import tensorflow as tf, ivy
-        >>> d = Categorical(ivy.tensorflow, tf.math.log([[0.2, 0.8]]))
-        >>> d.mode().numpy(), d.sample(tf.constant([[3.0, 0.0]])).numpy()  # noise: Gumbel draws
-        (array([1]), array([0]))
+        >>> import jax.numpy as jnp, ivy
+        >>> d = Categorical(ivy.jax, jnp.log(jnp.array([[0.2, 0.8]])))
+        >>> d.mode(), d.sample(jnp.array([[3.0, 0.0]]))        # the noise: Gumbel draws
+        (Array([1], dtype=int32), Array([0], dtype=int32))
     """
 
     noise = "gumbel"

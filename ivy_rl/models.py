@@ -341,11 +341,11 @@ class CategoricalHead(ivy.Module):
     """A categorical policy over ``num_actions`` discrete actions (logits from a dense layer).
 
     Example:
-        >>> import tensorflow as tf
-        >>> head = CategoricalHead(64, 3, f="tensorflow")
-        >>> gumbel = tf.constant([[0.0, 5.0, 0.0]])     # Gumbel noise that favours action 1
-        >>> head(tf.ones((1, 64))).sample(gumbel).numpy()
-        array([1])
+        >>> import torch
+        >>> head = CategoricalHead(64, 3, f="torch")
+        >>> gumbel = torch.tensor([[0.0, 5.0, 0.0]])    # Gumbel noise that favours action 1
+        >>> head(torch.ones(1, 64)).sample(gumbel)
+        tensor([1])
     """
 
     def __init__(

@@ -259,7 +259,15 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
     """Run the command; returns the log's rows.
 
     Example:
-        >>> main(["--agent", "A2C", "--steps", "2000", "--out", "runs/a2c"])
+        ``python -m ivy_rl.train --agent A2C ...`` from Python, in a short run (CartPole-v1,
+        the default environment, takes about ``--steps 100000`` to learn):
+
+        >>> rows = main(["--agent", "A2C", "--framework", "jax", "--steps", "2000",
+        ...              "--epoch-steps", "1000", "--test-episodes", "1", "--quiet",
+        ...              "--out", "runs/a2c"])
+        finished: 2,000 steps in ...
+        >>> rows[-1]["train/steps"]
+        2000
     """
     explicit = _explicit(argv)
     if explicit.get("resume") and explicit.get("overwrite"):

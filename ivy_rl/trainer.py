@@ -10,8 +10,15 @@ Ctrl-C stops a run cleanly: the trainer finishes the step it is in, saves a chec
 without saving.
 
 Example:
-    >>> trainer = Trainer(steps=100_000, epoch_steps=10_000)
-    >>> rows = trainer.run("PPO", "CartPole-v1", workers=8, seed=0, f="torch", out="runs/ppo")
+    A short run of A2C (CartPole-v1 takes about ``steps=100_000`` to learn), printing only its
+    summary:
+
+    >>> import os
+    >>> trainer = Trainer(steps=2_000, epoch_steps=1_000, test_episodes=1, show_progress=False)
+    >>> rows = trainer.run("A2C", "CartPole-v1", workers=8, seed=0, f="jax", out="runs/a2c")
+    finished: 2,000 steps in ...
+    >>> sorted(os.listdir("runs/a2c"))                  # the run folder (ivy_rl.checkpoints)
+    ['best', 'checkpoints', 'config.json', 'log.csv']
 """
 
 from __future__ import annotations

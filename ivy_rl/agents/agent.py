@@ -354,7 +354,7 @@ class Agent:
             >>> for _ in range(8):                      # two segments, two updates
             ...     actions = agent.step(obs)
             ...     logs = agent.update(obs, np.zeros(2), no, no)
-            >>> agent.compiles                          # acting, and the update: none new
+            >>> agent.compiles                  # acting, and the update: none for the second
             2
         """
         return sum(len(seen) for seen in getattr(self, "_signatures", {}).values())

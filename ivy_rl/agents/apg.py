@@ -77,16 +77,16 @@ class APG(DifferentiableAgent):
             ``(loss, {'rollout_reward': mean reward per step})``.
 
         Example:
-            >>> import gymnasium as gym, ivy_gym, jax.numpy as jnp, ivy
+            >>> import gymnasium as gym, ivy_gym, torch, ivy
             >>> env = gym.make("ivy_gym/Pendulum-v1")
             >>> agent = APG(horizon=4)
             >>> agent.bind_environment("ivy_gym/Pendulum-v1", {})
-            >>> agent = agent.initialize(env.observation_space, env.action_space, f="jax")
-            >>> start = jnp.array([[0.0, 0.0], [3.0, 0.5]])     # (angle, angular velocity)
+            >>> agent = agent.initialize(env.observation_space, env.action_space, f="torch")
+            >>> start = torch.tensor([[0.0, 0.0], [3.0, 0.5]])  # (angle, angular velocity)
             >>> loss, grads, infos = ivy.execute_with_gradients(
             ...     lambda v: agent.policy_loss(v, start), agent.v["actor"])
             >>> grads["head"]["layer"]["w"].shape               # through the dynamics
-            (1, 64)
+            torch.Size([1, 64])
         """
         self._check_initialized()
         xp = self.xp

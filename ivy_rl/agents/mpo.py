@@ -15,7 +15,7 @@ Example:
     >>> import gymnasium as gym, numpy as np
     >>> env = gym.make("Pendulum-v1")
     >>> agent = MPO(num_samples=20, epsilon=0.1).initialize(
-    ...     env.observation_space, env.action_space, seed=0, f="tensorflow")
+    ...     env.observation_space, env.action_space, seed=0, f="jax")
     >>> agent.step(np.zeros((2, 3), np.float32)).shape
     (2, 1)
 """
