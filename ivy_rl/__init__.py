@@ -9,8 +9,10 @@ bootstrapped (partial-episode bootstrapping); optionally the remaining time is a
 
 Modules: :mod:`ivy_rl.returns` (λ-returns, GAE, n-step returns), :mod:`ivy_rl.distributions`,
 :mod:`ivy_rl.models`, :mod:`ivy_rl.normalizers`, :mod:`ivy_rl.replays`, :mod:`ivy_rl.updaters`,
-:mod:`ivy_rl.agents`, :mod:`ivy_rl.environments`, :mod:`ivy_rl.trainer`, :mod:`ivy_rl.checkpoints`,
-:mod:`ivy_rl.console`, :mod:`ivy_rl.logger`, :mod:`ivy_rl.evaluation`;
+:mod:`ivy_rl.off_policy_models`, :mod:`ivy_rl.off_policy_updaters`,
+:mod:`ivy_rl.differentiable_parts`, :mod:`ivy_rl.settings`, :mod:`ivy_rl.agents`,
+:mod:`ivy_rl.environments`, :mod:`ivy_rl.trainer`, :mod:`ivy_rl.checkpoints`,
+:mod:`ivy_rl.console`, :mod:`ivy_rl.logger`, :mod:`ivy_rl.evaluation`, :mod:`ivy_rl.threads`;
 commands ``python -m ivy_rl.train``, ``python -m ivy_rl.plot`` and ``python -m ivy_rl.play``.
 
 ``import ivy_rl`` imports no deep-learning framework.
@@ -43,14 +45,22 @@ if _importlib_util.find_spec("gymnasium") is None:  # (before any module of ivy_
 from ivy_rl import (  # noqa: E402
     agents,
     buffers,
+    checkpoints,
+    console,
     critics,
+    differentiable_parts,
     distributions,
     environments,
+    evaluation,
     explorations,
     models,
     normalizers,
+    off_policy_models,
+    off_policy_updaters,
     replays,
     returns,
+    settings,
+    threads,
     updaters,
 )
 from ivy_rl.agents import (
@@ -87,6 +97,14 @@ __all__ = [
     "replays",
     "returns",
     "updaters",
+    "off_policy_models",
+    "off_policy_updaters",
+    "differentiable_parts",
+    "settings",
+    "checkpoints",
+    "console",
+    "evaluation",
+    "threads",
     "Agent",
     "A2C",
     "PPO",

@@ -38,5 +38,8 @@ def test_ivy_gym(example, request, tmp_path, monkeypatch):
 #: which forks the process under jax's threads, are marked ``+SKIP`` in their docstrings.
 @pytest.mark.parametrize("example", docstring_examples("ivy_rl"))
 def test_ivy_rl(example, request, tmp_path, monkeypatch):
-    globs = {"ivy_rl": ivy_rl, **{n: getattr(ivy_rl, n) for n in ivy_rl.__all__}}
+    # the package's names, where the example's module has no name of its own (the function
+    # ivy_rl.checkpoints.checkpoints, not the module)
+    names = {n: getattr(ivy_rl, n) for n in ivy_rl.__all__ if n not in example.globs}
+    globs = {"ivy_rl": ivy_rl, **names}
     run_example(example, globs, request.config, tmp_path, monkeypatch)
