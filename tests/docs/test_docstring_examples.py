@@ -10,6 +10,7 @@ import ivy_gym
 import ivy_rl
 from tests._doctests import docstring_examples, run_example
 
+
 @pytest.mark.parametrize("example", docstring_examples("ivy"))
 def test_ivy(example, request, tmp_path, monkeypatch):
     run_example(example, {}, request.config, tmp_path, monkeypatch)
