@@ -21,6 +21,7 @@ on any framework (the arrays are numpy's). A checkpoint is written into a hidden
 :func:`usable_checkpoint` skips damaged ones, naming their files.
 
 Example:
+    >>> import ivy_rl
     >>> trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
     >>> rows = trainer.run("Uniform", "CartPole-v1", out="runs/uniform")  # a quick baseline run
     finished: 400 steps in ...
@@ -91,6 +92,7 @@ def checkpoints(out: str) -> list[str]:
     """The complete checkpoints of a run (those with ``trainer.json``), oldest first.
 
     Example:
+        >>> import ivy_rl
         >>> trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
         >>> rows = trainer.run("Uniform", "CartPole-v1", out="runs/uniform")  # a quick baseline run
         finished: 400 steps in ...
@@ -108,6 +110,7 @@ def latest_checkpoint(out: str) -> str | None:
     None.
 
     Example:
+        >>> import ivy_rl
         >>> trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
         >>> rows = trainer.run("Uniform", "CartPole-v1", out="runs/uniform")  # a quick baseline run
         finished: 400 steps in ...
@@ -168,6 +171,7 @@ def check_checkpoint(path: str) -> None:
     damaged (truncated arrays, broken JSON).
 
     Example:
+        >>> import ivy_rl
         >>> trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
         >>> rows = trainer.run("Uniform", "CartPole-v1", out="runs/uniform")  # a quick baseline run
         finished: 400 steps in ...
@@ -199,6 +203,7 @@ def usable_checkpoint(out: str, *, warn: Callable[[str], None] | None = None) ->
         CheckpointError: every checkpoint is damaged (naming the files).
 
     Example:
+        >>> import ivy_rl
         >>> trainer = ivy_rl.Trainer(steps=400, epoch_steps=200, show_progress=False)
         >>> rows = trainer.run("Uniform", "CartPole-v1", out="runs/uniform")  # a quick baseline run
         finished: 400 steps in ...
