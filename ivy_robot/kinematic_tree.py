@@ -118,7 +118,8 @@ class KinematicTree:
 
         The tree holds no array of any framework (its constants are numpy): every method
         computes on the backend and device of the arrays passed to it, so there is no
-        ``device=`` here (put ``q`` on the device: ``ivy.asarray(q, device="gpu:0")``).
+        ``device=`` here: create ``q`` on the device (``asarray(q, device="gpu:0")`` of any
+        namespace).
 
         Args:
             source: a path to an ``.xml`` file, an MJCF XML string, or a ``mujoco.MjModel``.
@@ -139,8 +140,8 @@ class KinematicTree:
             raise TypeError(
                 f"KinematicTree.from_mjcf takes only the model, got {sorted(unknown)}: the tree "
                 "holds no arrays, and every method computes on the backend, device and dtype of "
-                "the arrays passed to it (e.g. tree.forward_kinematics(ivy.asarray(q, "
-                "device='gpu:0', dtype='float64', f='torch')))."
+                "the arrays passed to it: create them there (e.g. q = ivy.torch.asarray(q, "
+                "device='gpu:0', dtype='float64'))."
             )
         return cls(load_mjcf(source))
 

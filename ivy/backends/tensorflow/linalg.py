@@ -85,11 +85,18 @@ def _integer_safe(native, a, b, **kwargs):
     return tf.cast(native(tf.cast(a, tf.int64), tf.cast(b, tf.int64), **kwargs), dtype)
 
 
+def _is_finite(x):
+    """tf.math.is_finite, also of complex values (it has no complex kernel: their parts)."""
+    if x.dtype.is_complex:
+        return tf.math.is_finite(tf.math.real(x)) & tf.math.is_finite(tf.math.imag(x))
+    return tf.math.is_finite(x)
+
+
 def _finite_only(compute, x):
     """``compute(x)``, NaN in the results of the matrices that hold NaN or infinity
     (``ivy/backends/_nonfinite.py``; tf's ``eigh`` would raise, its QR answer in part)."""
     x = floating(x)
-    ok = tf.reduce_all(tf.math.is_finite(x), axis=[-2, -1])
+    ok = tf.reduce_all(_is_finite(x), axis=[-2, -1])
     shape = tf.shape(x)
     eye = tf.eye(shape[-2], shape[-1], dtype=x.dtype)
     return _nonfinite.nan_where_not_finite(
@@ -193,7 +200,7 @@ def matrix_power(x, n, /):
 def matrix_rank(x, /, *, rtol=None):
     x = floating(x)
     if tf.executing_eagerly():
-        _nonfinite.refuse_not_finite(bool(tf.reduce_all(tf.math.is_finite(x))), "tensorflow")
+        _nonfinite.refuse_not_finite(bool(tf.reduce_all(_is_finite(x))), "tensorflow")
     s = svdvals(x)
     if rtol is None:
         rows, cols = x.shape[-2:]
