@@ -13,6 +13,7 @@ import pytest
 
 import ivy
 import ivy_rl
+from tests.conftest import capable
 from ivy_rl import train
 from ivy_rl.schedules import LinearSchedule, as_schedule
 from ivy_rl.trainer import Trainer
@@ -134,7 +135,10 @@ def test_a_scheduled_update_is_the_constant_update_at_its_progress(
     diff_backend, name, env_id, tiny, scheduled, constant, start
 ):
     halfway = [0.5] * 4
-    agent, _ = _run(name, env_id, diff_backend, halfway, 4, **tiny, **scheduled)
+    # compiled where compiling is quick (torch.compile took 30 to 50 s per agent here; its
+    # compiled schedules are run by test_a_changing_progress_compiles_nothing_new)
+    compiled = capable(diff_backend, "fast_graph")
+    agent, _ = _run(name, env_id, diff_backend, halfway, 4, compiled, **tiny, **scheduled)
     # the references run eagerly: the scheduled run compiled takes its values as arrays
     same, _ = _run(name, env_id, diff_backend, halfway, 4, False, **tiny, **constant)
     first, _ = _run(name, env_id, diff_backend, halfway, 4, False, **tiny, **start)
