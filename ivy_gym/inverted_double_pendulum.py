@@ -254,9 +254,12 @@ class InvertedDoublePendulum(MuJoCoEnv):
 
         Example:
             >>> env = ivy_gym.InvertedDoublePendulum(swing_up=True)
-            >>> r = ivy_gym.optimise_actions_least_squares(
-            ...     env, 40, 60, lambda traj: env.swing_up_residuals(traj, hold=1),
-            ...     batch_shape=(32,), f="jax")  # reach upright: the first of two stages
+            >>> traj = ivy_gym.rollout(env, env.reset((2,), f="torch"), ivy.torch.zeros((10, 2, 1)))
+            >>> tuple(env.swing_up_residuals(traj, hold=3).shape)  # 8 * hold + T
+            (2, 34)
+
+            They are what :func:`ivy_gym.optimise_actions_least_squares` minimises to swing
+            the poles up (``docs/ivy_gym.md``).
         """
         states = trajectory.states
         xp = ivy.get_framework(states, f=f)

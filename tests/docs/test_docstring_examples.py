@@ -16,20 +16,7 @@ def test_ivy(example, request, tmp_path, monkeypatch):
     run_example(example, {}, request.config, tmp_path, monkeypatch)
 
 
-#: ivy_gym's examples that optimise at full size (minutes on CI's two cores): they run with
-#: ``IVY_SLOW_EXAMPLES=1``.
-IVY_GYM_SLOW = {
-    "ivy_gym.optimise": "200 Adam iterations through 100-step rollouts",
-    "ivy_gym.optimise.optimise_actions": "300 Adam iterations through 100-step rollouts",
-    "ivy_gym.optimise.optimise_actions_least_squares": "40 Gauss-Newton steps, a MuJoCo model",
-    "ivy_gym.optimise.optimise_policy": "500 iterations of a 64-64 MLP policy",
-    "ivy_gym.inverted_double_pendulum.InvertedDoublePendulum.swing_up_residuals": (
-        "40 Gauss-Newton steps through a MuJoCo model"
-    ),
-}
-
-
-@pytest.mark.parametrize("example", docstring_examples("ivy_gym", slow=IVY_GYM_SLOW))
+@pytest.mark.parametrize("example", docstring_examples("ivy_gym"))
 def test_ivy_gym(example, request, tmp_path, monkeypatch):
     run_example(example, {"ivy_gym": ivy_gym}, request.config, tmp_path, monkeypatch)
 

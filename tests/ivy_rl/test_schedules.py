@@ -13,10 +13,10 @@ import pytest
 
 import ivy
 import ivy_rl
-from tests.conftest import capable
 from ivy_rl import train
 from ivy_rl.schedules import LinearSchedule, as_schedule
 from ivy_rl.trainer import Trainer
+from tests.conftest import capable
 
 PPO_TINY = dict(hidden_sizes=[8], segment_size=4, batch_size=4, epochs=1)
 SAC_TINY = dict(

@@ -16,7 +16,9 @@ def _finite_only(compute, x):
     x = as_inexact(x)
     ok = jnp.all(jnp.isfinite(x), axis=(-2, -1))
     eye = jnp.eye(x.shape[-2], x.shape[-1], dtype=x.dtype)
-    return _nonfinite.nan_where_not_finite(compute, x, ok, eye, jnp.where, lambda y: jnp.issubdtype(y.dtype, jnp.inexact))
+    return _nonfinite.nan_where_not_finite(
+        compute, x, ok, eye, jnp.where, lambda y: jnp.issubdtype(y.dtype, jnp.inexact)
+    )
 
 
 def eigh(x, /):

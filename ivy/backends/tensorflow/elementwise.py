@@ -287,8 +287,7 @@ def pow(x1, x2, /):
         x2,
         integral=_integral,
         values_known=lambda x: not isinstance(x, TENSOR_TYPES) or tf.executing_eagerly(),
-        any_negative=lambda x: bool(tf.reduce_any(x < 0)) if isinstance(x, TENSOR_TYPES)
-        else x < 0,
+        any_negative=lambda x: bool(tf.reduce_any(x < 0)) if isinstance(x, TENSOR_TYPES) else x < 0,
         where=lambda c, a, b: tf.where(c, a, b),
         backend="tensorflow",
     )

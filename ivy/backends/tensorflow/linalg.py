@@ -245,9 +245,7 @@ def _pinv(x, rtol):
 def qr(x, /, *, mode="reduced"):
     if mode not in ("reduced", "complete"):
         raise ValueError(f"qr: unknown mode {mode!r}; use 'reduced' or 'complete'.")
-    return _finite_only(
-        lambda x: QRResult(*tf.linalg.qr(x, full_matrices=mode == "complete")), x
-    )
+    return _finite_only(lambda x: QRResult(*tf.linalg.qr(x, full_matrices=mode == "complete")), x)
 
 
 def slogdet(x, /):

@@ -208,6 +208,8 @@ def pow(x1, x2, /):
         where=torch.where,
         backend="torch",
     )
+
+
 _HALF = (torch.float16, torch.bfloat16)
 
 

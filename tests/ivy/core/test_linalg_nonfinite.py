@@ -39,13 +39,9 @@ CHECKS = {
     ),
     "pinv": lambda out: np.testing.assert_allclose(out[0], np.linalg.inv(SPD)),
     "qr": lambda out: np.testing.assert_allclose(out[0] @ out[1], SPD, atol=1e-12),
-    "slogdet": lambda out: np.testing.assert_allclose(
-        [out[0], out[1]], np.linalg.slogdet(SPD)
-    ),
+    "slogdet": lambda out: np.testing.assert_allclose([out[0], out[1]], np.linalg.slogdet(SPD)),
     "svd": lambda out: np.testing.assert_allclose(out[0] * out[1] @ out[2], SPD, atol=1e-12),
-    "svdvals": lambda out: np.testing.assert_allclose(
-        out[0], np.linalg.svd(SPD, compute_uv=False)
-    ),
+    "svdvals": lambda out: np.testing.assert_allclose(out[0], np.linalg.svd(SPD, compute_uv=False)),
 }
 
 
