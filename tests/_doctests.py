@@ -16,7 +16,8 @@ modules in their globals (``np``, ``torch``, ``jax``, ``jnp``, ``tf``), ``ivy`` 
 and what the caller adds. Examples run in a temporary directory (some save files), and those that
 name jax run with its 64-bit types off, as users get it by default.
 
-Examples too slow for the suite's time budget are listed by name (``slow=``) and run only with
+Examples that change the process for good (registering a backend) are listed in ``ISOLATED``
+and run in a fresh process, as a user runs them. Examples too slow for the suite's time budget are listed by name (``slow=``) and run only with
 ``IVY_SLOW_EXAMPLES=1``. Only the modules whose source holds an example (``>>>``) are imported to
 collect them, so that a backend package is never imported for nothing. Known failures are listed by
 the docstring's name (``xfail={"pkg.module.fn": "why"}``); one that passes shows as XPASS in the
@@ -45,6 +46,24 @@ FRAMEWORKS = {
 }
 
 OPTIONFLAGS = doctest.NORMALIZE_WHITESPACE | doctest.ELLIPSIS
+
+#: docstrings whose examples change the process for good, run in a fresh one as a user runs them
+ISOLATED = {
+    "ivy.framework_handler.register_framework": "registers a backend, which the suite has loaded",
+}
+
+_IN_A_FRESH_PROCESS = """
+import doctest, importlib, sys
+import numpy as np
+import ivy
+module = importlib.import_module(sys.argv[1])
+tests = [t for t in doctest.DocTestFinder().find(module) if t.name == sys.argv[2]]
+runner = doctest.DocTestRunner(optionflags=int(sys.argv[3]))
+for test in tests:
+    test.globs.update(np=np, ivy=ivy)
+    runner.run(test)
+sys.exit(1 if runner.failures or not tests else 0)
+"""
 
 
 def example_modules(package: str) -> list[str]:
@@ -125,6 +144,19 @@ def run_example(test, globs: dict, config, tmp_path, monkeypatch) -> doctest.Tes
     for name in named_frameworks(test):
         for alias, module in FRAMEWORKS[name][1].items():
             extra[alias] = importlib.import_module(module)
+    if test.name in ISOLATED:
+        import subprocess
+        import sys
+
+        args = [test.globs["__name__"], test.name, str(OPTIONFLAGS)]
+        run = subprocess.run(
+            [sys.executable, "-c", _IN_A_FRESH_PROCESS, *args],
+            capture_output=True,
+            text=True,
+            timeout=300,
+        )
+        assert run.returncode == 0, run.stdout + run.stderr
+        return None
     test = copy.copy(test)
     test.globs = {**test.globs, **extra, **globs}
     monkeypatch.chdir(tmp_path)
