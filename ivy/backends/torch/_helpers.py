@@ -182,3 +182,16 @@ def set_precision(precision: str):
             s.fp32_precision = old
 
     return restore
+
+
+def values_known(x) -> bool:
+    """Whether ``x``'s values can be read (a Python scalar's always): not while torch.compile or
+    torch.func traces it."""
+    if not isinstance(x, torch.Tensor):
+        return True
+    if torch.compiler.is_compiling():
+        return False
+    try:
+        return not torch._C._functorch.is_functorch_wrapped_tensor(x)
+    except AttributeError:  # (a torch without that query)
+        return True

@@ -22,6 +22,7 @@ from ivy.backends.torch._helpers import (
     NATIVE_DTYPES,
     as_inexact,
     dtype_name,
+    values_known,
     with_tensor_operands,
 )
 from ivy.backends.torch._unsigned import WIDE_UNSIGNED, unsigned_safe
@@ -185,15 +186,6 @@ def _signed_integral(x) -> bool:
     return _integral(x) and (not isinstance(x, torch.Tensor) or x.dtype.is_signed)
 
 
-def _values_known(x) -> bool:
-    """Not while torch.compile or torch.func traces ``x``."""
-    if not isinstance(x, torch.Tensor):
-        return True
-    if torch.compiler.is_compiling():
-        return False
-    return not torch._C._functorch.is_functorch_wrapped_tensor(x)
-
-
 def pow(x1, x2, /):
     """``x1 ** x2``; integers to negative integer powers as ``ivy/backends/_int_pow.py`` says."""
     if not (_signed_integral(x2) and _integral(x1)):  # the common case, first
@@ -203,7 +195,7 @@ def pow(x1, x2, /):
         x1,
         x2,
         integral=_integral,
-        values_known=_values_known,
+        values_known=values_known,
         any_negative=lambda x: bool((x < 0).any()) if isinstance(x, torch.Tensor) else x < 0,
         where=torch.where,
         backend="torch",

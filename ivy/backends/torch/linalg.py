@@ -11,7 +11,7 @@ from __future__ import annotations
 import torch
 
 from ivy.backends import _nonfinite, _signed_zeros
-from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args
+from ivy.backends.torch._helpers import as_inexact, native_dtype, reduction_args, values_known
 from ivy.backends.torch._unsigned import promoted, unsigned_safe, work_dtype
 from ivy.core.linalg import SlogdetResult
 from ivy.errors import ShapeError
@@ -32,16 +32,6 @@ def _finite_only(compute, x):
     return _nonfinite.nan_where_not_finite(
         compute, x, ok, eye, torch.where, lambda y: y.is_floating_point() or y.is_complex()
     )
-
-
-def _values_known(x) -> bool:
-    """Whether ``x``'s values can be read: not while torch.compile or torch.func traces it."""
-    if torch.compiler.is_compiling():
-        return False
-    try:
-        return not torch._C._functorch.is_functorch_wrapped_tensor(x)
-    except AttributeError:  # (a torch without that query)
-        return True
 
 
 def matmul(x1, x2, /):
@@ -150,7 +140,7 @@ def matrix_power(x, n, /):
 
 def matrix_rank(x, /, *, rtol=None):
     x = as_inexact(x)
-    if _values_known(x):
+    if values_known(x):
         _nonfinite.refuse_not_finite(bool(torch.isfinite(x).all()), "torch")
     return torch.linalg.matrix_rank(x, rtol=rtol)
 
