@@ -214,7 +214,7 @@ def memory(args, name, backend, batch):
 def _memory_child(name, backend, batch, threads=1):
     import mujoco
 
-    _set_threads(threads)
+    _set_threads(threads, [backend])
 
     if backend == "jax":
         import jax
@@ -233,17 +233,15 @@ def _memory_child(name, backend, batch, threads=1):
         _sync(compiled(*x))
 
 
-def _set_threads(threads: int):
-    """One intra-op thread for XLA (before jax is imported) and torch, or ``threads``
-    for torch (0: the libraries' defaults)."""
-    flags = "--xla_cpu_multi_thread_eigen=false intra_op_parallelism_threads=1"
-    if threads == 1 and "jax" not in sys.modules and flags not in os.environ.get("XLA_FLAGS", ""):
-        os.environ["XLA_FLAGS"] = (os.environ.get("XLA_FLAGS", "") + " " + flags).strip()
+def _set_threads(threads: int, backends) -> None:
+    """``threads`` intra-op threads (0: the libraries' defaults) for each of ``backends``
+    (:func:`ivy.set_threads`: XLA's flags, set before jax starts, and torch's pool)."""
+    for name in backends:
+        if threads and importlib.util.find_spec(name):
+            ivy.set_threads(name, threads)
     if importlib.util.find_spec("torch"):
         import torch
 
-        if threads:
-            torch.set_num_threads(threads)
         # inductor rewrites the RK4 scan as a while loop that reads its step with .item(); not
         # captured (the default), its compilation fails where dynamo did not get the whole step
         # as one graph, as under ivy.compile_fn (no fullgraph), and the step would run eagerly
@@ -267,8 +265,8 @@ def main():
     args = parser.parse_args()
     if args.mjx_path:  # before mujoco is imported: mujoco.mjx is found on the path then
         sys.path.append(args.mjx_path)
-    _set_threads(args.threads)
     backends = [b for b in args.backends.split(",") if importlib.util.find_spec(b)]
+    _set_threads(args.threads, {*backends, *(["jax"] if args.mjx_path else [])})
     if "jax" in backends or args.mjx_path:
         import jax
 

@@ -146,22 +146,14 @@ def _implementations(backend, compiled):
 
 
 def _set_threads(threads, backends):
+    """OpenMP's threads (before a library starts its pool) and the intra-op threads of each of
+    ``backends`` (:func:`ivy.set_threads`), torch's too where kornia runs beside them."""
     os.environ.setdefault("OMP_NUM_THREADS", str(threads))
-    if "jax" in backends:
-        os.environ["XLA_FLAGS"] = (
-            os.environ.get("XLA_FLAGS", "")
-            + " --xla_cpu_multi_thread_eigen="
-            + ("false" if threads == 1 else "true")
-        )
-    if "torch" in backends or importlib.util.find_spec("kornia") is not None:
-        import torch
-
-        torch.set_num_threads(threads)
-    if "tensorflow" in backends:
-        import tensorflow as tf
-
-        tf.config.threading.set_intra_op_parallelism_threads(threads)
-        tf.config.threading.set_inter_op_parallelism_threads(threads)
+    names = set(backends)
+    if importlib.util.find_spec("kornia") is not None:
+        names.add("torch")
+    for name in names:
+        ivy.set_threads(name, threads)
 
 
 def _reference(data):

@@ -41,6 +41,7 @@ from ivy.framework_handler import (
 )
 from ivy.registry import FunctionInfo, function_info, list_functions
 from ivy.stateful import *  # noqa: F403 - Module, Linear, MLP, ..., Adam, save_weights ...
+from ivy.threads import set_threads
 
 __version__ = "0.1.0"
 
@@ -57,6 +58,7 @@ __all__ = sorted(
     | set(errors.__all__)
     | set(framework_handler.__all__)
     | set(registry.__all__)
+    | {"set_threads"}
     | set(_EXTENSIONS)
     | {"e", "pi", "inf", "nan", "newaxis"}
 )

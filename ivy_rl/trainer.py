@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 
 import ivy
+from ivy.threads import set_threads
 from ivy_rl import console as messages
 from ivy_rl.agents import Agent, make
 from ivy_rl.checkpoints import (
@@ -51,13 +52,12 @@ from ivy_rl.checkpoints import (
 from ivy_rl.console import Console
 from ivy_rl.environments import Workers, make_env
 from ivy_rl.logger import Logger
-from ivy_rl.threads import set_threads
 
 __all__ = [
     "Trainer",
     "TrainingInterrupted",
     # kept here for code that imports them from the trainer (their home is ivy_rl.checkpoints
-    # and ivy_rl.threads)
+    # and ivy.set_threads)
     "CheckpointError",
     "checkpoints",
     "check_checkpoint",
