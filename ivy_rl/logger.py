@@ -1,5 +1,6 @@
-"""The trainer's logger: one row per epoch in ``log.csv``, a table on the console, a progress
-bar, and the same scalars in TensorBoard when asked.
+"""The trainer's logger: one row per epoch in ``log.csv``, and the same scalars in TensorBoard
+when asked. It prints nothing: the run's console (the epoch's table, the progress bar, the
+summary) is :class:`ivy_rl.console.Console`'s.
 
 Values stored during an epoch are averaged when the epoch ends; values stored with
 ``stats=True`` (episode scores...) are summarised as ``key/mean``, ``key/std``, ``key/min`` and
@@ -10,13 +11,9 @@ Example:
     >>> log = Logger("runs/ppo")
     >>> log.store("train/episode_score", 21.0, stats=True)
     >>> log.store("train/episode_score", 25.0, stats=True)
-    >>> row = log.dump({"train/steps": 1000})          # the epoch's table; a row of log.csv
-    ----------------------------------------
-    | train/steps              |       1000 |
-    | train/episode_score/mean |         23 |
-    ----------------------------------------
-    >>> row["train/episode_score/max"]
-    25.0
+    >>> row = log.dump({"train/steps": 1000})          # a row of log.csv
+    >>> row["train/episode_score/mean"], row["train/episode_score/max"]
+    (23.0, 25.0)
 """
 
 from __future__ import annotations
@@ -24,7 +21,6 @@ from __future__ import annotations
 import csv
 import math
 import os
-import sys
 import time
 import warnings
 from typing import Any
@@ -35,25 +31,22 @@ __all__ = ["Logger", "read_log"]
 
 
 class Logger:
-    """Writes ``<out>/log.csv``, a console table and optionally TensorBoard events.
+    """Writes ``<out>/log.csv`` and optionally TensorBoard events (it prints nothing).
 
     Args:
         out: the run's folder (None: nothing is written to disk).
         tensorboard: also write TensorBoard events to ``<out>/tensorboard``.
-        quiet: print neither the table nor the progress bar.
 
     Example:
         >>> log = Logger("runs/a2c", tensorboard=True)
     """
 
-    def __init__(self, out: str | None = None, *, tensorboard: bool = False, quiet: bool = False):
+    def __init__(self, out: str | None = None, *, tensorboard: bool = False):
         self.out = out
-        self.quiet = quiet
         self.columns: list[str] = []
         self.rows: list[dict[str, Any]] = []
         self._values: dict[str, list[float]] = {}
         self._stats: set[str] = set()
-        self._last_bar = 0.0
         self._writer = None
         self.warnings: list[str] = []
         if out is not None:
@@ -109,8 +102,6 @@ class Logger:
         if self._writer is not None:
             step = int(row.get("train/steps", len(self.rows)))
             self._writer.scalars(step, {k: v for k, v in row.items() if _is_number(v)})
-        if not self.quiet:
-            self._print_table(row)
         return row
 
     def _rewrite(self) -> None:
@@ -145,31 +136,6 @@ class Logger:
         self._values = {k: [float(x) for x in v] for k, v in pending.get("values", {}).items()}
         self._stats = set(pending.get("stats", ()))
 
-    def progress(self, steps: int, epoch_steps: int, epoch_length: int, max_steps: int) -> None:
-        """Draw the progress bar of the epoch on stderr (at most ten times a second)."""
-        if self.quiet:
-            return
-        now = time.monotonic()
-        if now - self._last_bar < 0.1 and epoch_steps < epoch_length:
-            return
-        self._last_bar = now
-        width = 40
-        done = min(epoch_steps / max(epoch_length, 1), 1.0)
-        bar = "#" * int(width * done) + "-" * (width - int(width * done))
-        sys.stderr.write(f"\r[{bar}] {steps:,}/{max_steps:,} steps")
-        sys.stderr.flush()
-
-    def _print_table(self, row: dict[str, Any]) -> None:
-        sys.stderr.write("\r" + " " * 70 + "\r")
-        keys = [k for k in row if not k.endswith(("/std", "/min", "/max"))]
-        width = max(len(k) for k in keys)
-        line = "-" * (width + 16)
-        lines = [line]
-        for key in keys:
-            lines.append(f"| {key:<{width}} | {_format(row[key]):>10} |")
-        lines.append(line)
-        print("\n".join(lines), flush=True)
-
     def close(self) -> None:
         if self._writer is not None:
             self._writer.close()
@@ -179,20 +145,12 @@ def _is_number(value: Any) -> bool:
     return isinstance(value, (int, float)) and math.isfinite(value)
 
 
-def _format(value: Any) -> str:
-    if isinstance(value, float):
-        if value != 0 and (abs(value) >= 1e6 or abs(value) < 1e-3):
-            return f"{value:.3e}"
-        return f"{value:.4g}"
-    return str(value)
-
-
 def read_log(path: str) -> list[dict[str, Any]]:
     """The rows of a ``log.csv`` as dicts of numbers: ints where a cell holds an integer (the
     counters), floats elsewhere; empty cells are left out. Written back, a row reads the same.
 
     Example:
-        >>> log = Logger("runs/ppo", quiet=True)
+        >>> log = Logger("runs/ppo")
         >>> log.store("test/episode_score", 200.0, stats=True)
         >>> row = log.dump({"train/steps": 1000})
         >>> rows = read_log("runs/ppo/log.csv")

@@ -234,7 +234,7 @@ class Trainer:
         self.agent, self.seed, self.out = agent, int(seed), out
         self.config = record
         self.environment = environment
-        self.logger = Logger(out, tensorboard=self.tensorboard, quiet=True)
+        self.logger = Logger(out, tensorboard=self.tensorboard)
         self.console = Console(quiet=not self.show_progress)
         num = self.workers.num_workers
         self.steps, self.epochs, self.episodes, self.elapsed = 0, 0, 0, 0.0
