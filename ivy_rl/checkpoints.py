@@ -11,7 +11,8 @@ A run folder (``--out``) holds::
         trainer.json          the trainer's counters, the epoch in progress, the best score
         workers.npz           the environments' seeds and the actions of their episodes
     best/                     what ``play --best`` needs: the agent with the best test score
-        agent/                as above, with an empty replay
+        agent/                weights, normalisers and settings (no optimiser states, replay
+                              or pending transitions: Agent.save(..., training=False))
         best.json             its steps, epoch and test score
 
 Resuming from a checkpoint continues with the same numbers as a run that was never interrupted,
@@ -295,8 +296,8 @@ def load_checkpoint(path: str, agent: Any, workers: Any) -> tuple[dict[str, Any]
 
 def save_best(out: str, agent: Any, record: dict[str, Any]) -> str:
     """Write ``<out>/best/`` (whole, or not at all): the agent as ``play`` needs it (weights,
-    normalisers and settings; its replay emptied, see :func:`drop_replay`) and ``best.json``
-    (``record``).
+    normalisers and settings: ``agent.save(..., training=False)``, without optimiser states,
+    replay or pending transitions) and ``best.json`` (``record``).
 
     Returns:
         The folder.
@@ -304,37 +305,11 @@ def save_best(out: str, agent: Any, record: dict[str, Any]) -> str:
     best = os.path.join(out, "best")
     partial = os.path.join(out, ".best.partial")
     shutil.rmtree(partial, ignore_errors=True)
-    agent.save(os.path.join(partial, "agent"))
-    drop_replay(os.path.join(partial, "agent"))
+    agent.save(os.path.join(partial, "agent"), training=False)
     write_json(os.path.join(partial, "best.json"), record)
     shutil.rmtree(best, ignore_errors=True)
     os.replace(partial, best)
     return best
-
-
-# the replay's counters (TransitionReplay: position and stored steps; Segment: the write index)
-_REPLAY_COUNTERS = ("position", "stored", "index")
-
-
-def drop_replay(agent_folder: str) -> None:
-    """Empty the replay in an agent's saved ``arrays.npz``: its rows (``replay/arrays.*``,
-    ``replay/staged.*``, ``replay/buffers/*``) are removed and its counters set to 0, so the
-    agent loads with an empty replay (what acting needs; training from it refills the replay).
-    """
-    path = os.path.join(agent_folder, "arrays.npz")
-    arrays = read_npz(path)
-    kept = {}
-    for key, value in arrays.items():
-        parts = key.split("/")
-        if len(parts) > 1 and parts[0] == "replay":
-            leaf = parts[1]
-            if leaf.startswith(("arrays.", "staged.")) or leaf == "buffers":
-                continue
-            if leaf in _REPLAY_COUNTERS:
-                value = np.zeros_like(value)
-        kept[key] = value
-    with open(path, "wb") as fh:
-        np.savez(fh, **kept)
 
 
 # ------------------------------------------------------------------------------------------

@@ -13,8 +13,10 @@ The base contract (what the trainer and every agent rely on):
 - ``step(observations) -> actions`` and ``test_step(observations) -> actions`` act (numpy in,
   numpy actions of the environment's space out); ``update(observations, rewards, resets,
   terminations) -> dict of floats`` records the last step's transitions and learns.
-- ``save(path)`` / ``load(path)``: ``load`` refuses a checkpoint of another class, or written with
-  other settings (naming each setting that differs).
+- ``save(path, training=True)`` / ``load(path)``: ``load`` refuses a checkpoint of another class,
+  or written with other settings (naming each setting that differs). ``training=False`` saves
+  what acting needs (weights, normalisers, settings; no optimiser states, replay or pending
+  transitions: the run's ``best/``), and ``load`` of such a folder keeps the agent's own.
 - ``set_progress(fraction)``: the trainer tells the run's progress (the fraction of its steps
   done, in ``[0, 1]``) before each update; agents read their scheduled settings
   (:mod:`ivy_rl.schedules`, those named in ``scheduled``) at it and hand the values to their
@@ -70,6 +72,10 @@ from ivy_rl.settings import Setting, check, declared
 __all__ = ["Agent"]
 
 _MISSING = object()
+
+#: the top-level entries of :meth:`Agent._arrays` that only training needs: an agent saved with
+#: ``training=False`` leaves them out, and loading it keeps the agent's own
+TRAINING_STATE = ("optimizer", "replay", "pending", "simulation")
 
 
 class Agent:
@@ -496,10 +502,17 @@ class Agent:
     def _load_meta(self, meta: dict[str, Any]) -> None:
         pass
 
-    def save(self, path: str | os.PathLike) -> None:
-        """Write the agent's whole state to the folder ``path``: ``arrays.npz`` (weights,
+    def save(self, path: str | os.PathLike, *, training: bool = True) -> None:
+        """Write the agent's state to the folder ``path``: ``arrays.npz`` (weights,
         optimiser states, normalisers, replay, pending transitions) and ``agent.json`` (its
         class, settings, random generator state and counters). Any backend loads it.
+
+        Args:
+            path: the folder.
+            training: save what training goes on from (a checkpoint); False: only what acting
+                needs (weights, normalisers, settings), without the optimiser states, the replay
+                and the transitions pending an update (:data:`TRAINING_STATE`), as in a run's
+                ``best/``.
 
         Example:
             >>> import gymnasium as gym, os
@@ -513,6 +526,8 @@ class Agent:
         os.makedirs(path, exist_ok=True)
         flat = {}
         for key, leaf in nest_to_flat_dict(self._arrays()).items():
+            if not training and key.split("/")[0] in TRAINING_STATE:
+                continue
             flat[key] = leaf if isinstance(leaf, np.ndarray) else np.asarray(ivy.to_numpy(leaf))
         with open(os.path.join(path, "arrays.npz"), "wb") as fh:
             np.savez(fh, **flat)
@@ -523,6 +538,7 @@ class Agent:
             "dtype": self.dtype,
             "rng": self.rng.bit_generator.state,
             "progress": self.progress,
+            "training_state": bool(training),
             **self._meta(),
         }
         with open(os.path.join(path, "agent.json"), "w") as fh:
@@ -532,7 +548,10 @@ class Agent:
         """Restore a state written by :meth:`save` on any backend into this initialized agent
         (same class, settings and spaces; its framework, dtype and device are kept). A
         checkpoint of another class, or written with other settings, is refused with a
-        ValueError naming each setting that differs.
+        ValueError naming each setting that differs. A folder saved with ``training=False``
+        (a run's ``best/``) holds no optimiser states, replay or pending transitions: the
+        agent keeps its own (those of a new agent: its optimisers start afresh, its replay
+        empty), and acts (``test_step``, ``predict``, ``play``) as the saved one.
 
         Returns:
             The agent itself.
@@ -573,6 +592,12 @@ class Agent:
             )
         with np.load(os.path.join(path, "arrays.npz"), allow_pickle=False) as data:
             flat = {key: data[key] for key in data.files}
+        if not meta.get("training_state", True):
+            saved_entries = {key.split("/")[0] for key in flat}
+            for key, leaf in nest_to_flat_dict(self._arrays()).items():
+                entry = key.split("/")[0]
+                if entry in TRAINING_STATE and entry not in saved_entries:
+                    flat[key] = leaf if isinstance(leaf, np.ndarray) else ivy.to_numpy(leaf)
         self._load_arrays(flat_dict_to_nest(flat) if flat else {})
         self.rng.bit_generator.state = meta["rng"]
         self.progress = float(meta.get("progress", 0.0))

@@ -14,6 +14,7 @@ import pytest
 from ivy_rl import _cli, play, plot, train
 from ivy_rl.logger import read_log
 from ivy_rl.trainer import CheckpointError, checkpoints
+from tests.ivy_rl.conftest import quick
 
 TIME_COLUMNS = ("train/seconds", "train/epoch_seconds", "train/steps_per_second", "test/seconds")
 PPO_TINY = {"hidden_sizes": [16], "segment_size": 8, "batch_size": 16, "epochs": 1}
@@ -241,20 +242,77 @@ def test_run_files_default_folders_exact_steps_and_a_log_kept_as_written(tmp_pat
     assert after[1].split(",")[0] == "16"
 
 
-def test_checkpoints_hold_the_filled_replay_and_best_what_play_needs(tmp_path, capfd):
+SAC_TINY = dict(hidden_sizes=[16], start_steps=16, update_after=16, update_every=8)
+SAC_TINY.update(batch_size=16, batch_iterations=1, replay_size=100_000)
+
+
+def _arrays(folder):
+    with np.load(os.path.join(folder, "arrays.npz")) as data:
+        return {key: data[key] for key in data.files}
+
+
+def _sac(f, seed=0):
+    import gymnasium as gym
+
+    from ivy_rl.agents import make
+
+    env = gym.make("Pendulum-v1")
+    agent = make("SAC", environment="Pendulum-v1", **SAC_TINY)
+    return agent.initialize(env.observation_space, env.action_space, seed=seed, f=f, compile=False)
+
+
+def test_checkpoints_hold_the_filled_replay_and_best_what_play_needs(diff_backend, tmp_path, capfd):
+    # SAC, whose checkpoints hold a replay, target networks and three optimisers, on each
+    # backend: 32 steps on 2 workers, test episodes of 20 steps
     out = tmp_path / "sac"
-    tiny = {"hidden_sizes": [16], "start_steps": 16, "update_after": 16, "update_every": 8}
-    tiny.update(batch_size=16, batch_iterations=1, replay_size=100_000)
-    args = ["--agent", "SAC", "--environment", "Pendulum-v1", "--agent-kwargs", json.dumps(tiny)]
-    _uniform(out, *args, "--eager", "--steps", "48", "--epoch-steps", "48")
-    with np.load(out / "checkpoints" / "step_48" / "agent" / "arrays.npz") as data:
-        rows = {k: data[k].shape[0] for k in data.files if k.startswith("replay/arrays.")}
-    # 48 steps staged on 2 workers, flushed before each update: the filled rows, not 100,000
-    assert rows and set(rows.values()) <= {46, 48}, rows
-    with np.load(out / "best" / "agent" / "arrays.npz") as data:
-        assert not [k for k in data.files if k.startswith(("replay/arrays.", "replay/staged."))]
+    args = [
+        "--agent",
+        "SAC",
+        "--environment",
+        "Pendulum-v1",
+        "--agent-kwargs",
+        json.dumps(SAC_TINY),
+    ]
+    args += ["--env-kwargs", '{"max_episode_steps": 20}', "-f", diff_backend, *quick(diff_backend)]
+    rows = _uniform(out, *args, "--steps", "32", "--epoch-steps", "32")
+    assert [r["train/steps"] for r in rows] == [32]
+    checkpoint = out / "checkpoints" / "step_32" / "agent"
+    saved = _arrays(checkpoint)
+    rows = {k: v.shape[0] for k, v in saved.items() if k.startswith("replay/arrays.")}
+    # 32 steps staged on 2 workers, flushed before each update: the filled rows, not 100,000
+    assert rows and set(rows.values()) <= {30, 32}, rows
+    optimizer = {k: v for k, v in saved.items() if k.startswith("optimizer/")}
+    assert len(optimizer) > 10  # the actor's, critics' and temperature's Adam moments and steps
+    # best/ holds what acting needs: the weights (and targets), the normaliser, the settings
+    best = _arrays(out / "best" / "agent")
+    assert {k.split("/")[0] for k in best} == {"v", "targets", "observation_normalizer"}
+    for key, value in best.items():  # the one epoch's agent, the checkpoint's
+        np.testing.assert_array_equal(value, saved[key], err_msg=key)
+    with open(out / "best" / "agent" / "agent.json") as fh:
+        assert json.load(fh)["training_state"] is False
+    # predict from best/ acts as the checkpoint's agent; its optimisers are a new agent's
+    observations = np.random.default_rng(0).normal(size=(5, 3)).astype(np.float32)
+    from_best, from_checkpoint = _sac(diff_backend).load(out / "best" / "agent"), _sac(diff_backend)
+    from_checkpoint.load(checkpoint)
+    np.testing.assert_allclose(
+        from_best.predict(observations, deterministic=True)[0],
+        from_checkpoint.predict(observations, deterministic=True)[0],
+        rtol=1e-6,
+    )
+    for agent, name in ((from_best, "best"), (_sac(diff_backend), "new")):
+        agent.save(tmp_path / name)
+    new, reloaded = _arrays(tmp_path / "new"), _arrays(tmp_path / "best")
+    for key in optimizer:
+        np.testing.assert_array_equal(reloaded[key], new[key], err_msg=key)
+    # a checkpoint (what resuming loads) restores the optimiser states exactly
+    from_checkpoint.save(tmp_path / "again")
+    again = _arrays(tmp_path / "again")
+    assert saved["optimizer/actor/step"] > 0 and new["optimizer/actor/step"] == 0
+    for key, value in optimizer.items():
+        np.testing.assert_array_equal(again[key], value, err_msg=key)
+    # play --best on the run's framework
     capfd.readouterr()
     results = play.main([str(out), "--best", "--episodes", "1", "--video", str(tmp_path / "p.gif")])
-    assert results[0]["length"] == 200 and os.path.getsize(tmp_path / "p.gif") > 1000
+    assert results[0]["length"] == 20 and os.path.getsize(tmp_path / "p.gif") > 1000
     captured = capfd.readouterr()
     assert "XDG_RUNTIME_DIR" not in captured.err and "wrote " in captured.out
