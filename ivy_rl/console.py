@@ -34,6 +34,7 @@ __all__ = [
     "summary",
     "interrupted",
     "finished",
+    "family_defaults",
 ]
 
 
@@ -251,7 +252,7 @@ class Console:
         self._tick = (now, self._count())
 
     def _watching(self) -> None:
-        while not self._stop.wait(0.25):
+        while not self._stop.wait(min(0.25, max(self.compile_seconds / 4, 0.005))):
             since, before = self._tick
             if self._compiling_since is not None or time.monotonic() - since < self.compile_seconds:
                 continue
@@ -398,3 +399,54 @@ def finished(out: str, max_steps: int, steps: int, checkpoint: str) -> str:
         f"{os.path.basename(checkpoint)}, is at step {steps:,}): nothing to train; to go on, "
         f"resume with --steps above {steps:,}"
     )
+
+
+def family_defaults(agent: str, environment: Any, given: Sequence[str] = ()) -> list[str]:
+    """Where the defaults of the environment's task family (what the command line and
+    ``make(agent, environment=...)`` use, :mod:`ivy_rl.agents.defaults`) differ from the agent
+    class's own (``SAC()``'s), the settings in ``given`` (the user's) left out: a few lines
+    under the start line, none where they agree.
+
+    Example:
+        >>> for line in family_defaults("SAC", "Pendulum-v1", given=["hidden_sizes"]):
+        ...     print(line)
+        defaults of the classic_continuous family where they differ from SAC()'s:
+          batch_size 128 (SAC(): 256)
+          every setting: python -m ivy_rl.agents.defaults SAC Pendulum-v1
+    """
+    from ivy_rl.agents import make
+    from ivy_rl.agents.defaults import settings_table, task_family
+
+    name = make.resolve(agent)
+    rows = [
+        row
+        for row in settings_table(name, environment)
+        if row["name"] not in given and not _same_value(row["family_default"], row["agent_default"])
+    ]
+    if not rows:
+        return []
+    shown = [
+        f"{row['name']} {_shown(row['family_default'])} ({name}(): {_shown(row['agent_default'])})"
+        for row in rows
+    ]
+    lines, line = [], ""
+    width = 96
+    for item in shown:
+        if line and len(line) + len(item) + 2 > width:
+            lines.append(line + ",")
+            line = ""
+        line = f"{line}, {item}" if line else item
+    lines.append(line)
+    return [
+        f"defaults of the {task_family(environment)} family where they differ from {name}()'s:",
+        *(f"  {line}" for line in lines),
+        "  every setting: " + command("python", "-m", "ivy_rl.agents.defaults", name, environment),
+    ]
+
+
+def _same_value(a: Any, b: Any) -> bool:
+    return (list(a) if isinstance(a, tuple) else a) == (list(b) if isinstance(b, tuple) else b)
+
+
+def _shown(value: Any) -> str:
+    return str(tuple(value) if isinstance(value, list) else value)

@@ -17,6 +17,11 @@ may change only ``--steps``, ``--framework``, ``--device``, ``--vectorization``,
 ``--ray-groups``, ``--eager``, ``--tensorboard``, ``--keep-checkpoints`` and ``--quiet``, and
 any other flag that contradicts the saved run is an error (``--threads`` included: a resumed run
 keeps its threads).
+
+The agent takes the defaults of the environment's task family (:mod:`ivy_rl.agents.defaults`),
+then ``--agent-kwargs``; under the start line, a new run lists where the family's defaults differ
+from the agent class's own (``SAC()``'s; ``python -m ivy_rl.agents.defaults SAC Pendulum-v1``
+shows every setting).
 """
 
 from __future__ import annotations
@@ -282,6 +287,7 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
     _check(settings)
 
     from ivy_rl.agents import make
+    from ivy_rl.console import family_defaults
     from ivy_rl.trainer import Trainer
 
     # the defaults of the environment's task family, then the user's settings, each checked;
@@ -318,6 +324,10 @@ def main(argv: list[str] | None = None) -> list[dict[str, Any]]:
         resume=settings["resume"],
         overwrite=settings["overwrite"],
         config=record,
+        # where the family's defaults, taken here, differ from the class's own (SAC()'s)
+        notes=family_defaults(
+            settings["agent"], settings["environment"], given=settings["agent_kwargs"]
+        ),
     )
 
 

@@ -163,6 +163,7 @@ class Trainer:
         resume: bool = False,
         overwrite: bool = False,
         config: dict[str, Any] | None = None,
+        notes: Sequence[str] | None = None,
     ) -> list[dict[str, Any]]:
         """Train ``agent`` (an :class:`~ivy_rl.agents.Agent` or a name) on ``environment``.
 
@@ -192,12 +193,17 @@ class Trainer:
             resume: continue from the last usable checkpoint in ``out``.
             overwrite: start again in ``out``, removing its run (config, log, checkpoints).
             config: further entries for ``config.json`` (the command line's settings).
+            notes: lines printed under the start line of a new run (None: for an agent given by
+                name, where its task family's defaults differ from the class's own,
+                :func:`ivy_rl.console.family_defaults`).
 
         Returns:
             The log's rows, one per epoch.
         """
         checkpoint = prepare_run_folder(out, resume, overwrite, warn=_warn)
         if isinstance(agent, str):
+            if notes is None:
+                notes = messages.family_defaults(agent, environment)
             agent = make(agent, environment=environment)
         if getattr(agent, "differentiable", False):
             agent.bind_environment(environment, dict(env_kwargs or {}))
@@ -255,6 +261,8 @@ class Trainer:
                 self._report_finished(checkpoint)
                 return self.logger.rows
             self.console.start(self._start_line(checkpoint))
+            if checkpoint is None and notes:
+                self.console.print("\n".join(notes))
             self._session_start = (time.monotonic(), self._total_steps())
             with self._interruptible():
                 try:

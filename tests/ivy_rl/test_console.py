@@ -5,7 +5,9 @@ finished run."""
 
 from __future__ import annotations
 
+import functools
 import io
+import json
 import os
 import re
 import signal
@@ -17,9 +19,11 @@ import pytest
 
 import ivy_rl
 from ivy_rl import _cli, train
+from ivy_rl import trainer as trainer_module
 from ivy_rl.checkpoints import checkpoints
 from ivy_rl.console import Console, format_duration
 from ivy_rl.trainer import Trainer, TrainingInterrupted
+from tests.ivy_rl.conftest import quick
 
 PPO_TINY = {"hidden_sizes": [16], "segment_size": 8, "batch_size": 16, "epochs": 1}
 TIME_COLUMNS = ("train/seconds", "train/epoch_seconds", "train/steps_per_second", "test/seconds")
@@ -100,12 +104,12 @@ class _StoppedPPO(ivy_rl.PPO):
         return logs
 
 
-def _run(out, steps, *, stop_at=None, presses=1, resume=False, quiet=True):
+def _run(out, steps, f, *, stop_at=None, presses=1, resume=False, quiet=True):
     agent = _StoppedPPO(**PPO_TINY)
     agent.stop_at, agent.presses = stop_at, presses
     trainer = Trainer(steps, epoch_steps=32, test_episodes=1, show_progress=not quiet)
     return trainer.run(
-        agent, "CartPole-v1", workers=2, seed=5, f="torch", compile=False, out=str(out),
+        agent, "CartPole-v1", workers=2, seed=5, f=f, compile=f == "jax", out=str(out),
         resume=resume,
     )  # fmt: skip
 
@@ -114,31 +118,36 @@ def _rows(rows):
     return [{k: v for k, v in r.items() if k not in TIME_COLUMNS} for r in rows]
 
 
-def test_ctrl_c_saves_where_it_stops_and_the_run_resumes_as_if_uninterrupted(tmp_path, capsys):
+def test_ctrl_c_saves_where_it_stops_and_the_run_resumes_as_if_uninterrupted(
+    diff_backend, tmp_path, capsys
+):
     if threading.current_thread() is not threading.main_thread():
         pytest.skip("Python delivers signals to the main thread only")
-    full = _run(tmp_path / "full", 64)
+    full = _run(tmp_path / "full", 64, diff_backend)
     out = tmp_path / "run"
     with pytest.raises(TrainingInterrupted) as stop:
-        _run(out, 64, stop_at=40)  # within the second epoch (steps 33 to 64)
+        _run(out, 64, diff_backend, stop_at=40)  # within the second epoch (steps 33 to 64)
     assert stop.value.checkpoint == str(out / "checkpoints" / "step_40")
     err = capsys.readouterr().err
     assert "Ctrl-C: stopping after this step (saving a checkpoint)" in err
     assert f"interrupted at step 40 of 64: saved {out}/checkpoints/step_40" in err
     assert f"resume with: python -m ivy_rl.train --out {out} --resume" in err
-    rows = _run(out, 64, resume=True, quiet=False)
-    captured = capsys.readouterr()
-    assert (
-        "resuming _StoppedPPO on CartPole-v1 with torch (float32, cpu, eager) from step 40 ("
-        in (captured.out)
+    rows = _run(out, 64, diff_backend, resume=True, quiet=False)
+    said = capsys.readouterr().out.splitlines()[0]
+    mode = "compiled" if diff_backend == "jax" else "eager"
+    assert said == (
+        f"resuming _StoppedPPO on CartPole-v1 with {diff_backend} (float32, cpu, {mode}) from "
+        f"step 40 (checkpoints/step_40) to 64 steps -> {out}"
     )
     assert _rows(rows) == _rows(full)  # the epoch's values before Ctrl-C were kept
     # a second Ctrl-C stops at once, without saving
     with pytest.raises(TrainingInterrupted) as stop:
-        _run(tmp_path / "twice", 64, stop_at=40, presses=2)
+        _run(tmp_path / "twice", 64, diff_backend, stop_at=40, presses=2)
     assert stop.value.checkpoint is None
     assert "not saved (the last checkpoint is step_32)" in capsys.readouterr().err
-    # the command line exits with 130 and no traceback
+
+
+def test_the_command_line_exits_after_ctrl_c_with_130_and_no_traceback(capsys):
     for interrupt, said in (
         (TrainingInterrupted(None, 3), ""),
         (KeyboardInterrupt(), "interrupted\n"),
@@ -153,22 +162,42 @@ def test_ctrl_c_saves_where_it_stops_and_the_run_resumes_as_if_uninterrupted(tmp
 
 
 def test_the_command_prints_a_start_line_progress_and_a_summary_and_quiet_keeps_it(
-    tmp_path, capsys
+    backend, tmp_path, capsys, monkeypatch
 ):
-    out = str(tmp_path / "run")
-    base = ["--agent", "Uniform", "--workers", "2", "--epoch-steps", "16", "--test-episodes", "1"]
-    rows = train.main([*base, "--steps", "32", "--out", out])
+    # on each backend, in the default folder (which names the framework): PPO where it learns,
+    # random actions on numpy (no autodiff)
+    monkeypatch.chdir(tmp_path)
+    learns = backend != "numpy"
+    agent = ["--agent", "PPO", "--agent-kwargs", json.dumps(PPO_TINY)] if learns else []
+    agent = agent or ["--agent", "Uniform"]
+    base = [*agent, "-f", backend, *quick(backend), "--workers", "2"]
+    base += ["--epoch-steps", "16", "--test-episodes", "1"]
+    name = "PPO" if learns else "Uniform"
+    out = f"runs/{name}-CartPole-v1-{backend}-0"
+    mode = "compiled" if backend == "jax" else "eager"
+    rows = train.main([*base, "--steps", "32"])
     captured = capsys.readouterr()
     lines = captured.out.splitlines()
     assert lines[0] == (
-        f"training Uniform on CartPole-v1 with torch (float32, cpu, compiled): 32 steps, "
+        f"training {name} on CartPole-v1 with {backend} (float32, cpu, {mode}): 32 steps, "
         f"2 workers, seed 0 -> {out}"
     )
+    assert os.path.isfile(os.path.join(out, "config.json"))
+    if learns:  # the family's defaults where they differ from PPO()'s, the user's left out
+        assert lines[1] == "defaults of the classic_discrete family where they differ from PPO()'s:"
+        notes = lines[
+            2 : lines.index("  every setting: python -m ivy_rl.agents.defaults PPO CartPole-v1")
+        ]
+        assert "actor_lr 0.001 (PPO(): 0.0003)" in " ".join(notes)
+        assert not any(key in " ".join(notes) for key in PPO_TINY)
+    else:
+        assert not any("defaults of" in line for line in lines)
     assert "| test/episode_score/mean" in captured.out  # the epochs' tables
-    assert re.search(r"100% \[#+\] 32/32 steps \| .* \| elapsed 0:00:0\d \| left", captured.err)
+    assert re.search(r"100% \[#+\] 32/32 steps \| .* \| elapsed 0:00:\d\d \| left", captured.err)
+    assert [r["train/steps"] for r in rows] == [16, 32]  # --steps is exact
     best = max(r["test/episode_score/mean"] for r in rows)
     summary = lines[-6:]
-    assert re.fullmatch(r"finished: 32 steps in 0:00:0\d \([\d,]+ steps/s\)", summary[0])
+    assert re.fullmatch(r"finished: 32 steps in 0:00:\d\d \([\d,]+ steps/s\)", summary[0])
     assert summary[1].startswith(f"test score: best {best:.2f} at step ")
     assert summary[2:] == [
         f"run folder: {out}",
@@ -186,6 +215,38 @@ def test_the_command_prints_a_start_line_progress_and_a_summary_and_quiet_keeps_
     assert said.startswith(f"the run in {out} has done its 48 steps (its last checkpoint, step_48")
     assert "resume with --steps above 48" in said and len(again) == 3
     assert [os.path.basename(p) for p in checkpoints(out)] == ["step_32", "step_48"]
+    # resumed (without --out: the default folder), the run says from which step
+    rows = train.main([*base, "--resume", "--steps", "64"])
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0] == (
+        f"resuming {name} on CartPole-v1 with {backend} (float32, cpu, {mode}) from step 48 "
+        f"(checkpoints/step_48) to 64 steps -> {out}"
+    )
+    assert lines[1].startswith("-----")  # the epoch's table: no defaults again
+    assert [r["train/steps"] for r in rows] == [16, 32, 48, 64]
+    # a --steps that is not whole steps of the workers is refused before anything is written
+    with pytest.raises(ValueError, match=r"--steps 50 is not a multiple of --workers 3.*48 or 51"):
+        train.main([*base, "--steps", "50", "--workers", "3", "--out", "x"])
+    assert not os.path.exists("x")
+
+
+def test_a_compiling_run_says_so_and_how_long_it_took(graph_backend, tmp_path, capsys, monkeypatch):
+    # jax.jit and tf.function (torch.compile takes minutes: its line is the same code, tested
+    # with a counter in test_a_long_call_that_compiles_is_announced_and_timed)
+    monkeypatch.setattr(trainer_module, "Console", functools.partial(Console, compile_seconds=0.01))
+    agent = ["--agent", "PPO", "--agent-kwargs", json.dumps(PPO_TINY), "-f", graph_backend]
+    train.main(
+        [*agent, "--workers", "2", "--steps", "16", "--test-episodes", "0", "--out", str(tmp_path)]
+    )
+    captured = capsys.readouterr()
+    assert captured.out.startswith(
+        f"training PPO on CartPole-v1 with {graph_backend} (float32, cpu, compiled)"
+    )
+    lines = [line for line in captured.err.splitlines() if "compil" in line]
+    assert lines and lines[0].startswith(
+        f"compiling the PPO's functions on {graph_backend} (its first calls"
+    )
+    assert re.fullmatch(r"compiled in \d:\d\d:\d\d", lines[1]), lines
 
 
 def test_predict_and_evaluate_as_in_stable_baselines3():
