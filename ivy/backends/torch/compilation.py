@@ -20,6 +20,13 @@ and restored under a lock: the first of the compiled calls running at once (in a
 saves it and switches it on, the last one to finish restores it, and other ``torch.compile``
 users in the process find it as they left it once no ivy-compiled call runs.
 
+Scalars read inside the graph: inductor lowers a ``scan`` whose body holds a ``while_loop``
+(both kept as loops: see ``control_flow.py``; a physics step's RK4 stages around its solver)
+to a loop that reads its step count with ``.item()``. dynamo refuses that read unless its
+``capture_scalar_outputs`` is on, and the whole function then fell back to eager mode (with the
+fallback's warning). It is switched on for each call with ``trace_autograd_ops``, in the same
+way.
+
 Fallback: where ``torch.compile`` cannot run (dynamo unsupported on this Python or platform, or
 the inductor backend fails to build, e.g. without a C++ compiler), the function runs eagerly
 instead, with one warning; its results are the same, only slower.
@@ -34,7 +41,9 @@ import warnings
 import torch
 
 _flag_lock = threading.Lock()
-_flag_state = {"calls": 0, "saved": None}  # ivy-compiled calls running now, the user's value
+_flag_state = {"calls": 0, "saved": None}  # ivy-compiled calls running now, the user's values
+#: dynamo's settings that each ivy-compiled call switches on while it runs (see above)
+_FLAGS = ("trace_autograd_ops", "capture_scalar_outputs")
 
 
 def _warn_fallback(reason: str) -> None:
@@ -58,8 +67,9 @@ def compile_native(fn, /, *, static_argnums=None, static_argnames=None, donate_a
         # Read when dynamo traces, which happens inside the call (first call, recompiles).
         with _flag_lock:
             if _flag_state["calls"] == 0:
-                _flag_state["saved"] = config.trace_autograd_ops
-                config.trace_autograd_ops = True
+                _flag_state["saved"] = {name: getattr(config, name) for name in _FLAGS}
+                for name in _FLAGS:
+                    setattr(config, name, True)
             _flag_state["calls"] += 1
         try:
             return current[0](*args, **kwargs)
@@ -73,7 +83,8 @@ def compile_native(fn, /, *, static_argnums=None, static_argnames=None, donate_a
             with _flag_lock:
                 _flag_state["calls"] -= 1
                 if _flag_state["calls"] == 0:
-                    config.trace_autograd_ops = _flag_state["saved"]
+                    for name, value in _flag_state["saved"].items():
+                        setattr(config, name, value)
 
     compiled.__wrapped__ = fn
     return compiled

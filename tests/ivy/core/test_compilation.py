@@ -178,6 +178,40 @@ def test_torch_falls_back_to_eager_when_compile_cannot_run(request, monkeypatch)
     assert fn is torch.sin
 
 
+def test_torch_compiles_a_scan_around_a_while_loop(request):
+    """A loop kept as torch's ``scan`` operator around a ``while_loop`` (a physics step's RK4
+    stages around its solver) compiles: inductor reads the scan's step with ``.item()``, which
+    dynamo captures only with ``capture_scalar_outputs``. Without it the whole function ran
+    eagerly, with the fallback's warning. The user's dynamo settings are left as they were."""
+    if "torch" not in request.config.ivy_backends:
+        pytest.skip("torch not selected")
+    import torch
+
+    xp = ivy.torch
+
+    def fn(x):
+        def stage(carry, w):
+            def halve(state):
+                return state[0] * 0.5 + w, state[1] + 1
+
+            out, _ = xp.while_loop(
+                lambda s: s[1] < 3, halve, (carry, xp.zeros((), dtype=xp.int32)), pure=True
+            )
+            return out, out
+
+        carry, ys = xp.scan(stage, x, xp.asarray([1.0, 2.0, 3.0, 4.0]), pure=True)
+        return carry + xp.sum(ys, axis=0)
+
+    config = torch._dynamo.config
+    before = (config.capture_scalar_outputs, config.trace_autograd_ops)
+    x = torch.linspace(0.0, 1.0, 3)
+    with warnings.catch_warnings():
+        warnings.filterwarnings("error", message="torch.compile cannot run")
+        compiled = ivy.compile_fn(fn)(x)
+    torch.testing.assert_close(compiled, fn(x), rtol=1e-6, atol=1e-6)
+    assert (config.capture_scalar_outputs, config.trace_autograd_ops) == before
+
+
 def test_tensorflow_calls_after_the_first_skip_argument_matching_and_stay_correct(rng, request):
     """tensorflow's compile_fn calls a known trace's flat entry point directly from the second
     call of a signature on (see ivy/backends/tensorflow/compilation.py). Every kind of call
