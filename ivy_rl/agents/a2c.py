@@ -84,35 +84,20 @@ class A2C(Agent):
     segment, then ``critic_iterations`` passes of value regression on the λ-returns.
 
     Args:
-        model: the model part (default: an :class:`~ivy_rl.models.ActorCriticModel` of the
-            settings below).
+        model: the model part (default: an :class:`~ivy_rl.models.ActorCriticModel` built from
+            the flat settings).
         replay: the replay part (default: a :class:`~ivy_rl.replays.Segment`).
         actor_updater: default :class:`~ivy_rl.updaters.StochasticPolicyGradient`.
         critic_updater: default :class:`~ivy_rl.updaters.ValueRegression`.
-        settings: flat settings of the parts not given (those below; see :attr:`parts`):
-        hidden_sizes: hidden sizes of the actor's torso.
-        critic_hidden_sizes: of the critic's torso (default: ``hidden_sizes``).
-        activation: activation of the torsos.
-        head: policy head (``'gaussian'``, ``'squashed_gaussian'`` for Box;
-            ``'categorical'`` for Discrete); default by action space.
-        log_std_init: initial log standard deviation of Gaussian heads.
-        segment_size: steps per worker between updates.
-        discount: γ.
-        trace_decay: λ of the λ-returns.
-        actor_lr, critic_lr: Adam learning rates.
-        critic_iterations: passes of critic regression per update.
-        batch_size: transitions per critic mini-batch (None: the whole segment).
-        entropy_coeff: weight of the entropy bonus.
-        actor_gradient_clip, critic_gradient_clip: global norm of gradients (0: no clipping).
-        normalize_observations: normalise observations by their running mean and std.
-        normalize_returns: the critic predicts returns normalised by their running mean and std.
-        normalize_advantages: standardise the advantages of each segment.
-        fusion: what one compiled function holds: ``'update'`` (the whole update: returns and
-            every optimisation step), ``'steps'`` (the critic's values, and each optimisation
-            step, as separate compiled functions; the loops on the host), or ``'auto'`` (default:
-            ``'update'`` where ``ivy.compile_fn`` compiles ``ivy.scan`` as a loop, ``'steps'``
-            where it unrolls it, as ``torch.compile`` does; see :func:`compiled_scan_unrolls`).
-            Same numbers either way.
+        settings: the flat settings of the parts not given (routed by :attr:`parts`), and the
+            agent's own ``fusion`` (:mod:`ivy_rl.agents.fusion`; the same numbers either way).
+
+    Settings: the flat settings (``A2C(batch_size=...)``, the command line's
+    ``--agent-kwargs``) are those its parts declare, each once, with its type, default and
+    meaning (the ``settings`` of each part's class, :mod:`ivy_rl.settings`), and the agent's
+    defaults where they differ: ``A2C.settings()`` lists them, and ``python -m
+    ivy_rl.agents.defaults A2C CartPole-v1`` prints them beside the task family's defaults
+    (:func:`~ivy_rl.agents.defaults.settings_table`).
 
     Example:
         >>> A2C(segment_size=64, actor_lr=1e-3).config["segment_size"]

@@ -33,17 +33,19 @@ class APG(DifferentiableAgent):
     global norm clipped at ``actor_gradient_clip``.
 
     Args:
-        hidden_sizes, activation: the policy's MLP.
-        actor_lr: Adam's learning rate: a number or a linear schedule of the run's progress
-            (``"linear:1e-3"``, :mod:`ivy_rl.schedules`).
-        actor_gradient_clip: global norm of the gradient (0: no clipping).
-        discount: γ of the return.
-        batch_size: rollouts per update.
-        horizon: steps per rollout.
-        update_every: trainer steps between updates.
-        exploration_noise: scale of the Gaussian noise on the actions taken in the trainer's
-            environments (the rollouts use the deterministic policy).
-        fusion: ``'update'``, ``'steps'`` or ``'auto'`` (see :mod:`ivy_rl.agents.through_gym`).
+        settings: the flat settings of its parts (an
+            :class:`~ivy_rl.models.ActorValueModel`, :class:`~ivy_rl.replays.Rollouts`, a
+            :class:`~ivy_rl.explorations.NormalNoise` on the actions taken in the trainer's
+            environments, an :class:`~ivy_rl.updaters.AnalyticPolicyGradient`), and ``fusion``
+            (:mod:`ivy_rl.agents.through_gym`). Learning rates take a number or a schedule of
+            the run's progress (:mod:`ivy_rl.schedules`).
+
+    Settings: the flat settings (``APG(batch_size=...)``, the command line's
+    ``--agent-kwargs``) are those its parts declare, each once, with its type, default and
+    meaning (the ``settings`` of each part's class, :mod:`ivy_rl.settings`), and the agent's
+    defaults where they differ: ``APG.settings()`` lists them, and ``python -m
+    ivy_rl.agents.defaults APG ivy_gym/Pendulum-v1`` prints them beside the task family's defaults
+    (:func:`~ivy_rl.agents.defaults.settings_table`).
 
     Example:
         >>> APG(horizon=64, actor_lr=1e-3).config["horizon"]

@@ -29,9 +29,15 @@ class D4PG(DDPG):
     """DDPG with a categorical distributional critic.
 
     Args:
-        v_min, v_max: the range of the critic's support.
-        atoms: the number of atoms of the support.
-        Others: as for :class:`~ivy_rl.agents.DDPG`.
+        As for :class:`~ivy_rl.agents.DDPG` (the support of the critic, ``v_min`` below
+        ``v_max`` and ``atoms``, is its model's).
+
+    Settings: the flat settings (``D4PG(batch_size=...)``, the command line's
+    ``--agent-kwargs``) are those its parts declare, each once, with its type, default and
+    meaning (the ``settings`` of each part's class, :mod:`ivy_rl.settings`), and the agent's
+    defaults where they differ: ``D4PG.settings()`` lists them, and ``python -m
+    ivy_rl.agents.defaults D4PG Pendulum-v1`` prints them beside the task family's defaults
+    (:func:`~ivy_rl.agents.defaults.settings_table`).
 
     Example:
         >>> agent = D4PG(v_min=-1000.0, v_max=0.0, atoms=51)    # Pendulum's returns are <= 0

@@ -62,10 +62,18 @@ class DDPG(OffPolicyAgent):
     (:class:`~ivy_rl.off_policy_updaters.DeterministicQLearning`).
 
     Args:
-        exploration: ``'normal'``, ``'ornstein_uhlenbeck'`` or ``'none'`` (or an exploration
-            part).
-        exploration_scale: the noise's scale (actions in ``[-1, 1]``).
-        Others: as for :class:`~ivy_rl.agents.off_policy.OffPolicyAgent`.
+        model, replay, exploration, actor_updater, critic_updater: the parts (default: built
+            from the flat settings, see Parts); ``exploration`` also takes a name:
+            ``'normal'``, ``'ornstein_uhlenbeck'`` or ``'none'``.
+        settings: the flat settings of the parts not given, and ``fusion``
+            (:mod:`ivy_rl.agents.fusion`).
+
+    Settings: the flat settings (``DDPG(batch_size=...)``, the command line's
+    ``--agent-kwargs``) are those its parts declare, each once, with its type, default and
+    meaning (the ``settings`` of each part's class, :mod:`ivy_rl.settings`), and the agent's
+    defaults where they differ: ``DDPG.settings()`` lists them, and ``python -m
+    ivy_rl.agents.defaults DDPG Pendulum-v1`` prints them beside the task family's defaults
+    (:func:`~ivy_rl.agents.defaults.settings_table`).
 
     Example:
         >>> DDPG(hidden_sizes=(64, 64), exploration_scale=0.2).config["exploration_scale"]

@@ -46,13 +46,17 @@ class DQN(OffPolicyAgent):
     (:class:`~ivy_rl.off_policy_updaters.QLearning`).
 
     Args:
-        dueling: a dueling head (state value plus centred advantages).
-        double: double Q-learning targets (the online network chooses, the target evaluates).
-        epsilon_start, epsilon_end, epsilon_decay_steps: the ε-greedy schedule (environment
-            steps).
-        critic_lr: Adam learning rate of the Q-network.
-        Others: as for :class:`~ivy_rl.agents.off_policy.OffPolicyAgent` (``hidden_sizes`` is
-        the Q-network's torso).
+        model, replay, exploration, updater: the parts (default: built from the flat settings,
+            see Parts; ``hidden_sizes`` is the Q-network's torso).
+        settings: the flat settings of the parts not given, and ``fusion``
+            (:mod:`ivy_rl.agents.fusion`).
+
+    Settings: the flat settings (``DQN(batch_size=...)``, the command line's
+    ``--agent-kwargs``) are those its parts declare, each once, with its type, default and
+    meaning (the ``settings`` of each part's class, :mod:`ivy_rl.settings`), and the agent's
+    defaults where they differ: ``DQN.settings()`` lists them, and ``python -m
+    ivy_rl.agents.defaults DQN CartPole-v1`` prints them beside the task family's defaults
+    (:func:`~ivy_rl.agents.defaults.settings_table`).
 
     Example:
         >>> DQN(hidden_sizes=(64, 64), epsilon_decay_steps=10_000).config["hidden_sizes"]

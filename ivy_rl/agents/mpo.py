@@ -50,15 +50,15 @@ class MPO(DDPG):
     """Maximum a posteriori policy optimisation with decoupled KL constraints.
 
     Args:
-        num_samples: actions sampled per state (E-step and critic targets).
-        epsilon: KL bound of the E-step (the temperature's dual).
-        epsilon_mean, epsilon_std: per-dimension KL bounds of the policy's mean and scale.
-        initial_log_temperature, initial_log_alpha_mean, initial_log_alpha_std: initial dual
-            variables (before a softplus).
-        min_log_dual: lower bound of the dual variables.
-        dual_lr: Adam learning rate of the dual variables.
-        Others: as for :class:`~ivy_rl.agents.off_policy.OffPolicyAgent` (MPO explores by
-        sampling its policy).
+        As for :class:`~ivy_rl.agents.DDPG`; MPO explores by sampling its policy, the dual
+        variables and their KL bounds are its actor updater's.
+
+    Settings: the flat settings (``MPO(batch_size=...)``, the command line's
+    ``--agent-kwargs``) are those its parts declare, each once, with its type, default and
+    meaning (the ``settings`` of each part's class, :mod:`ivy_rl.settings`), and the agent's
+    defaults where they differ: ``MPO.settings()`` lists them, and ``python -m
+    ivy_rl.agents.defaults MPO Pendulum-v1`` prints them beside the task family's defaults
+    (:func:`~ivy_rl.agents.defaults.settings_table`).
 
     Example:
         >>> MPO(hidden_sizes=(256, 256), num_samples=20).config["num_samples"]

@@ -41,23 +41,10 @@ __all__ = ["OffPolicyAgent"]
 class OffPolicyAgent(Agent):
     """Base of the off-policy agents (DDPG, TD3, SAC, MPO, D4PG, DQN).
 
-    Args (settings shared by every off-policy agent):
-        hidden_sizes: hidden sizes of the actor's (or Q-network's) torso.
-        critic_hidden_sizes: of the critics' torsos (default: ``hidden_sizes``).
-        activation: activation of the torsos.
-        replay_size: transitions kept (all workers together).
-        return_steps: n of the n-step returns.
-        batch_size: transitions per optimisation step.
-        start_steps: environment steps of uniformly random actions at the start.
-        update_after: environment steps before the first update.
-        update_every: environment steps between updates.
-        batch_iterations: optimisation steps per update.
-        discount: γ.
-        actor_lr, critic_lr: Adam learning rates.
-        target_tau: step of the targets' soft updates (1: copy).
-        gradient_clip: global norm of gradients (0: no clipping).
-        normalize_observations: normalise observations by their running mean and std.
-        fusion: ``'auto'``, ``'update'`` or ``'steps'`` (see :mod:`ivy_rl.agents.fusion`).
+    The settings they share are those of the parts they share (the model's torsos, the
+    replay, the targets' soft updates, the updaters' learning rates and clipping), each declared
+    once by its part (:mod:`ivy_rl.settings`), and ``fusion`` (:mod:`ivy_rl.agents.fusion`):
+    ``DDPG.settings()``, ``python -m ivy_rl.agents.defaults DDPG Pendulum-v1`` list them.
     """
 
     learns = True

@@ -37,12 +37,14 @@ class PPO(A2C):
     Its actor updater is a :class:`~ivy_rl.updaters.ClippedRatio`.
 
     Args:
-        ratio_clip: ε of the clipped ratio ``[1 - ε, 1 + ε]``.
-        kl_threshold: KL between the old and the current policy beyond which the actor stops
-            (None: never).
-        epochs: passes over the segment per update.
-        batch_size: transitions per mini-batch (None: the whole segment).
-        Others: as for :class:`~ivy_rl.agents.A2C`.
+        As for :class:`~ivy_rl.agents.A2C` (``epochs`` is the replay's passes over the segment).
+
+    Settings: the flat settings (``PPO(batch_size=...)``, the command line's
+    ``--agent-kwargs``) are those its parts declare, each once, with its type, default and
+    meaning (the ``settings`` of each part's class, :mod:`ivy_rl.settings`), and the agent's
+    defaults where they differ: ``PPO.settings()`` lists them, and ``python -m
+    ivy_rl.agents.defaults PPO CartPole-v1`` prints them beside the task family's defaults
+    (:func:`~ivy_rl.agents.defaults.settings_table`).
 
     Example:
         >>> agent = PPO(ratio_clip=0.2, kl_threshold=0.015, epochs=10, batch_size=64)

@@ -48,11 +48,15 @@ class SAC(DDPG):
     ``critic_updater`` (:class:`~ivy_rl.off_policy_updaters.TwinCriticSoftQLearning`).
 
     Args:
-        initial_temperature: α at the start.
-        temperature_lr: Adam learning rate of ``log_alpha`` (0: α stays fixed).
-        target_entropy: the entropy α steers towards (None: ``-action dimensions``).
-        Others: as for :class:`~ivy_rl.agents.off_policy.OffPolicyAgent` (SAC explores by
-        sampling its policy: it has no exploration noise).
+        As for :class:`~ivy_rl.agents.DDPG`; SAC explores by sampling its policy (no exploration
+        noise), its temperature is part of its actor updater.
+
+    Settings: the flat settings (``SAC(batch_size=...)``, the command line's
+    ``--agent-kwargs``) are those its parts declare, each once, with its type, default and
+    meaning (the ``settings`` of each part's class, :mod:`ivy_rl.settings`), and the agent's
+    defaults where they differ: ``SAC.settings()`` lists them, and ``python -m
+    ivy_rl.agents.defaults SAC Pendulum-v1`` prints them beside the task family's defaults
+    (:func:`~ivy_rl.agents.defaults.settings_table`).
 
     Example:
         >>> SAC(initial_temperature=0.1, temperature_lr=3e-4).config["initial_temperature"]

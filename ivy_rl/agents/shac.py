@@ -45,19 +45,16 @@ class SHAC(DifferentiableAgent):
     """Short-horizon actor-critic through an ivy_gym environment.
 
     Args:
-        horizon: K, steps per rollout (the gradient's horizon).
-        batch_size: simulated environments carried across updates.
-        critic_hidden_sizes: the critic's MLP (default: ``hidden_sizes``).
-        critic_lr: the critic's Adam learning rate (a number or a linear schedule).
-        critic_gradient_clip: global norm of the critic's gradients (0: no clipping).
-        trace_decay: λ of the TD(λ) targets.
-        critic_iterations: passes over a rollout's transitions per update.
-        critic_batches: mini-batches per pass.
-        target_update: step of the target critic towards the critic per update (1: copy).
-        normalize_returns: the critic predicts its targets normalised by their running mean and
-            standard deviation (values of a task's scale, e.g. -1000, are slow to reach for a
-            network whose outputs start near 0).
-        Others: as for :class:`~ivy_rl.agents.APG`.
+        settings: as for :class:`~ivy_rl.agents.APG`, with those of its critic (an
+            :class:`~ivy_rl.models.ActorValueModel` with a critic and its target, regressed on
+            TD(λ) targets, optionally normalised by their running mean and standard deviation).
+
+    Settings: the flat settings (``SHAC(batch_size=...)``, the command line's
+    ``--agent-kwargs``) are those its parts declare, each once, with its type, default and
+    meaning (the ``settings`` of each part's class, :mod:`ivy_rl.settings`), and the agent's
+    defaults where they differ: ``SHAC.settings()`` lists them, and ``python -m
+    ivy_rl.agents.defaults SHAC ivy_gym/Pendulum-v1`` prints them beside the task family's defaults
+    (:func:`~ivy_rl.agents.defaults.settings_table`).
 
     Example:
         >>> SHAC(horizon=32, critic_iterations=16).config["critic_iterations"]

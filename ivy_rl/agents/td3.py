@@ -38,10 +38,15 @@ class TD3(DDPG):
     :class:`~ivy_rl.off_policy_updaters.TwinCriticDeterministicQLearning`.
 
     Args:
-        policy_delay: critic steps per actor step (``batch_iterations`` is a multiple of it).
-        target_noise: scale of the target policy's smoothing noise.
-        target_noise_clip: bound of that noise.
-        Others: as for :class:`~ivy_rl.agents.DDPG`.
+        As for :class:`~ivy_rl.agents.DDPG`, and the agent's own ``policy_delay`` (critic steps
+        per actor step; ``batch_iterations`` must be a multiple of it).
+
+    Settings: the flat settings (``TD3(batch_size=...)``, the command line's
+    ``--agent-kwargs``) are those its parts declare, each once, with its type, default and
+    meaning (the ``settings`` of each part's class, :mod:`ivy_rl.settings`), and the agent's
+    defaults where they differ: ``TD3.settings()`` lists them, and ``python -m
+    ivy_rl.agents.defaults TD3 Pendulum-v1`` prints them beside the task family's defaults
+    (:func:`~ivy_rl.agents.defaults.settings_table`).
 
     Example:
         >>> TD3(hidden_sizes=(64, 64), policy_delay=2).config["policy_delay"]

@@ -34,12 +34,14 @@ class TRPO(A2C):
     so no ``actor_lr``).
 
     Args:
-        max_kl: the trust region's radius δ (mean KL between the old and new policies).
-        cg_steps: conjugate-gradient iterations.
-        damping: added to the Fisher-vector products (``F + damping I``).
-        backtrack_steps: candidate steps of the line search.
-        backtrack_coefficient: shrink factor between candidates.
-        **settings: the other settings, as for :class:`~ivy_rl.agents.A2C`.
+        As for :class:`~ivy_rl.agents.A2C`.
+
+    Settings: the flat settings (``TRPO(batch_size=...)``, the command line's
+    ``--agent-kwargs``) are those its parts declare, each once, with its type, default and
+    meaning (the ``settings`` of each part's class, :mod:`ivy_rl.settings`), and the agent's
+    defaults where they differ: ``TRPO.settings()`` lists them, and ``python -m
+    ivy_rl.agents.defaults TRPO CartPole-v1`` prints them beside the task family's defaults
+    (:func:`~ivy_rl.agents.defaults.settings_table`).
 
     Example:
         >>> agent = TRPO(max_kl=0.01, cg_steps=10, backtrack_steps=10)
