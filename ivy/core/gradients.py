@@ -40,6 +40,7 @@ __all__ = [
     "grad",
     "jacobian",
     "stop_gradient",
+    "with_gradient_of",
     "variable",
 ]
 
@@ -276,6 +277,45 @@ def stop_gradient(x: Array, /, *, f: Framework = None) -> Array:
     Example:
         >>> ivy.stop_gradient(torch.ones(2, requires_grad=True)).requires_grad
         False
+    """
+
+
+@dispatch("value", "args")
+def with_gradient_of(value: Nest, fn: Callable, args: Sequence, /, *, f: Framework = None) -> Nest:
+    """``value``, differentiated as ``fn(*args)``: its value is ``value``'s and its derivatives
+    (reverse and forward mode) are those of ``fn(*args)`` with respect to ``args``.
+
+    The straight-through pattern ``stop_gradient(value) + fn(*args) - stop_gradient(fn(*args))``,
+    with one difference: ``fn`` is called only where a derivative is taken. Use it where the
+    value comes from a computation that is not differentiated (an iterative solver run to
+    convergence) and ``fn`` is a cheap function with the right derivative at that point (one
+    Newton step from the solution: the implicit function theorem). Per backend: jax a
+    ``custom_jvp`` (a compiled function that takes no derivative never runs ``fn``); torch
+    calls ``fn`` only while gradients are recorded for one of ``args`` (``requires_grad`` with
+    grad mode on, or ``torch.func``'s and forward-mode AD's transforms); tensorflow, which cannot
+    tell whether a tape watches, always calls it; backends without autodiff never do.
+
+    Args:
+        value: an array or a nest of arrays.
+        fn: a function of ``*args`` returning arrays of ``value``'s structure, shapes and dtypes;
+            it is differentiated only through ``args`` (arrays it captures are constants).
+        args: the arrays (or nests of arrays) to differentiate ``fn`` by.
+
+    Returns:
+        ``value`` (detached from its own derivatives), with ``fn``'s.
+
+    Example:
+        The square root by Newton's method, run without derivatives, then given the derivative
+        of one Newton step from its result (which is ``1 / (2 sqrt(a))``):
+
+        >>> a = jnp.asarray(2.0)
+        >>> def root(a):
+        ...     x = jnp.asarray(1.0)
+        ...     for _ in range(30):
+        ...         x = ivy.stop_gradient(0.5 * (x + a / x))
+        ...     return ivy.with_gradient_of(x, lambda a: 0.5 * (x + a / x), (a,))
+        >>> round(float(root(a)), 6), round(float(jax.grad(root)(a)), 6)
+        (1.414214, 0.353553)
     """
 
 

@@ -28,5 +28,9 @@ def stop_gradient(x, /):
     return x
 
 
+def with_gradient_of(value, fn, args, /):
+    return value  # no derivatives are taken: fn is never needed
+
+
 def variable(x, /):
     return x

@@ -32,5 +32,22 @@ def stop_gradient(x, /):
     return jax.lax.stop_gradient(x)
 
 
+def with_gradient_of(value, fn, args, /):
+    """A ``custom_jvp`` whose primal is ``value``: ``fn`` enters only the tangent rule, so a
+    function that takes no derivative never evaluates it (reverse mode transposes the rule)."""
+
+    @jax.custom_jvp
+    def carried(value, args):
+        return _stop(value)
+
+    @carried.defjvp
+    def _tangents(primals, tangents):
+        value, args = primals
+        _, tangent = jax.jvp(lambda *a: fn(*a), tuple(args), tuple(tangents[1]))
+        return _stop(value), tangent
+
+    return carried(value, tuple(args))
+
+
 def variable(x, /):
     return jnp.asarray(x)

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import tensorflow as tf
 
-from ivy.nest import map_nest
+from ivy.nest import map_nest, multi_map_nest
 
 _ZERO = tf.UnconnectedGradients.ZERO
 
@@ -56,6 +56,12 @@ def jacobian_native(fn, x, /, *, retain_grads=False):
 
 def stop_gradient(x, /):
     return tf.stop_gradient(x)
+
+
+def with_gradient_of(value, fn, args, /):
+    # whether a tape or a forward accumulator watches args is not known: fn always runs
+    out = fn(*args)
+    return multi_map_nest(lambda v, o: tf.stop_gradient(v) + (o - tf.stop_gradient(o)), value, out)
 
 
 def variable(x, /):

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import torch
 
-from ivy.nest import map_nest
+from ivy.nest import map_nest, multi_map_nest, nest_leaves
 
 
 def _input(x, retain_grads):
@@ -97,6 +97,24 @@ def _batched_rows(flat, x, retain_grads):
 
 def stop_gradient(x, /):
     return x.detach()
+
+
+def with_gradient_of(value, fn, args, /):
+    if not _differentiated(nest_leaves(args)):
+        return map_nest(lambda v: v.detach() if isinstance(v, torch.Tensor) else v, value)
+    out = fn(*args)
+    return multi_map_nest(lambda v, o: v.detach() + (o - o.detach()), value, out)
+
+
+def _differentiated(leaves) -> bool:
+    """Whether a derivative may be taken through ``leaves``: grad mode with a leaf that
+    requires grad, a ``torch.func`` transform's wrapped tensor, or a forward-mode AD level."""
+    tensors = [t for t in leaves if isinstance(t, torch.Tensor)]
+    if torch.autograd.forward_ad._current_level >= 0:
+        return True
+    if any(torch._C._functorch.is_functorch_wrapped_tensor(t) for t in tensors):
+        return True
+    return torch.is_grad_enabled() and any(t.requires_grad for t in tensors)
 
 
 def variable(x, /):
