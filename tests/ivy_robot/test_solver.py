@@ -6,7 +6,8 @@ several states batched in one problem whose rows sit in a padded layout, inactiv
 garbage values interleaved. Newton on Gymnasium's hopper, walker2d, half_cheetah and ant; PGS on
 the humanoid (MuJoCo's iterates are matched, not just its fixed point); a scene with friction
 loss, an equality and limits under both solvers; warm starts from previous steps and cold
-starts; gradients against central differences; compiled equals eager; float32.
+starts; gradients against central differences; compiled equals eager; float32. (torch.compile
+of the solver, inside a step's RK4 scan: ``test_dynamics.py::test_first_use_inside_torch_compile``.)
 """
 
 from __future__ import annotations
@@ -424,28 +425,6 @@ def test_compiled_equals_eager(graph_backend, oracles):
     compiled, _ = _solve(graph_backend, options, problems, compiled=True)
     for a, b in zip(compiled, eager):
         np.testing.assert_allclose(numpy_of(a), numpy_of(b), rtol=1e-12, atol=1e-9)
-
-
-def test_torch_compile(oracles):
-    """torch.compile is slow to start: one case. The solver's loops stay torch's loop operators,
-    nested in a scan as in an RK4 step (``fullgraph``: no graph break and no eager fallback;
-    their bodies capture no two views of one tensor and no constant made while tracing)."""
-    torch = pytest.importorskip("torch")
-    options, problems = oracles("hopper")
-    kinds, layout = _padded(problems, np.random.default_rng(0))
-    problem = _problem(layout, "torch", np.float64)
-    warm = native(layout["qacc_warmstart"], "torch")
-    xp = ivy.torch
-
-    def stages(problem, warm):
-        def stage(carry, _):
-            return carry, tuple(S.solve(xp, problem, kinds, warm, options))
-
-        return xp.scan(stage, warm * 0.0, None, length=2, pure=True)[1]
-
-    solutions = torch.compile(stages, fullgraph=True)(problem, warm)
-    for k in range(2):
-        _assert_matches(S.ConstraintSolution(*[a[k] for a in solutions]), problems, layout)
 
 
 # ----------------------------------------------------------------------------------------------

@@ -108,11 +108,15 @@ def with_gradient_of(value, fn, args, /):
 
 def _differentiated(leaves) -> bool:
     """Whether a derivative may be taken through ``leaves``: grad mode with a leaf that
-    requires grad, a ``torch.func`` transform's wrapped tensor, or a forward-mode AD level."""
+    requires grad, a forward-mode AD level, or (eagerly: dynamo cannot trace the test, and
+    inside torch.compile the tensors' ``requires_grad`` says it) a ``torch.func`` transform's
+    wrapped tensor."""
     tensors = [t for t in leaves if isinstance(t, torch.Tensor)]
     if torch.autograd.forward_ad._current_level >= 0:
         return True
-    if any(torch._C._functorch.is_functorch_wrapped_tensor(t) for t in tensors):
+    if not torch.compiler.is_compiling() and any(
+        torch._C._functorch.is_functorch_wrapped_tensor(t) for t in tensors
+    ):
         return True
     return torch.is_grad_enabled() and any(t.requires_grad for t in tensors)
 
