@@ -17,9 +17,9 @@ reports its peak resident memory above the same process at batch 1.
 Threads: one intra-op thread by default (``--threads``: XLA's pool and torch's), as MuJoCo's
 call runs on one; on a shared machine XLA's pool also made solves up to 100x slower. A torch
 step that inductor cannot compile is an error here (``ivy.compile_fn`` would run it eagerly,
-with a warning, and its eager time would be reported as compiled); dynamo captures scalar
-outputs (``torch._dynamo.config.capture_scalar_outputs``), without which inductor fails on the
-RK4 scan (see ``_set_threads``).
+with a warning, and its eager time would be reported as compiled). The torch step is compiled
+as users compile it: ``ivy.compile_fn`` (which switches on dynamo's ``capture_scalar_outputs``
+for its calls: inductor reads the RK4 scan's step with ``.item()``).
 
 MJX is not a dependency of the project: point ``--mjx-path`` at a folder where ``mujoco-mjx``
 (and its requirements ``etils``, ``trimesh``) are installed, e.g. ``pip install --no-deps
@@ -239,13 +239,6 @@ def _set_threads(threads: int, backends) -> None:
     for name in backends:
         if threads and importlib.util.find_spec(name):
             ivy.set_threads(name, threads)
-    if importlib.util.find_spec("torch"):
-        import torch
-
-        # inductor rewrites the RK4 scan as a while loop that reads its step with .item(); not
-        # captured (the default), its compilation fails where dynamo did not get the whole step
-        # as one graph, as under ivy.compile_fn (no fullgraph), and the step would run eagerly
-        torch._dynamo.config.capture_scalar_outputs = True
 
 
 def _warnings():
