@@ -1128,6 +1128,12 @@ def _gradients_control_flow_compilation() -> None:
     pair = PerBackend(lambda xp: lambda x: (xp.multiply(x, x), ()), "square_aux")
     CASES["jacobian_native"] = [C(pair, a([1.0, 2.0], "float64"), _backends=DIFFERENTIABLE)]
     CASES["stop_gradient"] = [C(F32)]
+    triple = PerBackend(lambda xp: lambda x: xp.multiply(x, 3.0), "triple")
+    pair = PerBackend(lambda xp: lambda x: (xp.multiply(x, 3.0), xp.add(x, 1.0)), "pair")
+    CASES["with_gradient_of"] = [
+        C(F32, triple, (F32,)),  # the value, on every backend (fn runs on tensorflow alone)
+        C((F32, F32), pair, (F32,)),  # a nest of values
+    ]
     CASES["variable"] = [C(F32, _post=lambda v, xp: xp.to_numpy(v))]
     step = PerBackend(lambda xp: lambda c, x: (xp.add(c, x), xp.multiply(c, 2.0)), "step")
     CASES["scan"] = [
