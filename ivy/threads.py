@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import importlib
 import importlib.util
+import operator
 import os
 import sys
 import warnings
@@ -70,9 +71,13 @@ def set_threads(framework: Any, threads: int) -> str:
         >>> ivy.set_threads("numpy", 1)
         'not settable'
     """
-    if isinstance(threads, bool) or not _is_integer(threads) or threads < 1:
+    try:
+        count = None if isinstance(threads, bool) else operator.index(threads)
+    except TypeError:
+        count = None
+    if count is None or count < 1:
         raise ValueError(f"threads must be an integer >= 1, got {threads!r}")
-    threads = int(threads)
+    threads = count
     name = framework if isinstance(framework, str) else getattr(framework, "backend", None)
     if not isinstance(name, str):
         raise TypeError(
@@ -135,13 +140,6 @@ def _set_xla_flags(package: str, bridge: Any, threads: int) -> str:
         return f"{package}: not changed (already started)"
     os.environ["XLA_FLAGS"] = f"{current} {_XLA_ONE_THREAD}".strip()
     return f"{package}: XLA_FLAGS {_XLA_ONE_THREAD}"
-
-
-def _is_integer(value: Any) -> bool:
-    if isinstance(value, int):
-        return True
-    numpy = sys.modules.get("numpy")  # a numpy integer, where numpy is already imported
-    return numpy is not None and isinstance(value, numpy.integer)
 
 
 def _warn(message: str) -> None:

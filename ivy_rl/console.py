@@ -421,7 +421,7 @@ def family_defaults(agent: str, environment: Any, given: Sequence[str] = ()) -> 
     rows = [
         row
         for row in settings_table(name, environment)
-        if row["name"] not in given and not _same_value(row["family_default"], row["agent_default"])
+        if row["name"] not in given and row["differs"]
     ]
     if not rows:
         return []
@@ -442,10 +442,6 @@ def family_defaults(agent: str, environment: Any, given: Sequence[str] = ()) -> 
         *(f"  {line}" for line in lines),
         "  every setting: " + command("python", "-m", "ivy_rl.agents.defaults", name, environment),
     ]
-
-
-def _same_value(a: Any, b: Any) -> bool:
-    return (list(a) if isinstance(a, tuple) else a) == (list(b) if isinstance(b, tuple) else b)
 
 
 def _shown(value: Any) -> str:

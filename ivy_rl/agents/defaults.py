@@ -284,7 +284,8 @@ def defaults_for(name: str, environment: Any = None) -> dict[str, Any]:
 def settings_table(name: str, environment: Any = None) -> list[dict[str, Any]]:
     """Every setting of the agent ``name``: its part, what it takes, the agent's default
     (``SAC()``'s), the default of ``environment``'s family (``make(name, environment=...)``'s
-    and the command line's; the agent's where the family row does not set it) and its meaning.
+    and the command line's; the agent's where the family row does not set it), whether the two
+    differ (``differs``: a tuple and a list of the same values do not) and its meaning.
 
     Example:
         >>> row = settings_table("SAC", "Pendulum-v1")[0]
@@ -298,17 +299,23 @@ def settings_table(name: str, environment: Any = None) -> list[dict[str, Any]]:
     family = defaults_for(key, environment)
     rows = []
     for setting, (spec, default, role) in sorted(AGENTS[key].settings().items()):
+        family_default = family.get(setting, default)
         rows.append(
             {
                 "name": setting,
                 "part": role or "agent",
                 "takes": describe(spec),
                 "agent_default": default,
-                "family_default": family.get(setting, default),
+                "family_default": family_default,
+                "differs": _as_list(family_default) != _as_list(default),
                 "meaning": spec.meaning,
             }
         )
     return rows
+
+
+def _as_list(value: Any) -> Any:
+    return list(value) if isinstance(value, tuple) else value
 
 
 def _main(argv: list[str] | None = None) -> None:
@@ -324,7 +331,7 @@ def _main(argv: list[str] | None = None) -> None:
     column = f"{environment} ({family})" if family else "family (none)"
     print(f"{'setting':24} {'part':15} {'SAC()'.replace('SAC', args[0]):>14} {column:>28}")
     for row in settings_table(args[0], environment):
-        changed = "*" if row["family_default"] != row["agent_default"] else " "
+        changed = "*" if row["differs"] else " "
         print(
             f"{row['name']:24} {row['part']:15} {str(row['agent_default']):>14} "
             f"{str(row['family_default']):>27}{changed} {row['meaning']}"

@@ -43,7 +43,7 @@ def with_gradient_of(value, fn, args, /):
     @carried.defjvp
     def _tangents(primals, tangents):
         value, args = primals
-        _, tangent = jax.jvp(lambda *a: fn(*a), tuple(args), tuple(tangents[1]))
+        _, tangent = jax.jvp(fn, tuple(args), tuple(tangents[1]))
         return _stop(value), tangent
 
     return carried(value, tuple(args))
