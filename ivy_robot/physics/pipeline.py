@@ -334,7 +334,7 @@ def forward(xp, model: Model, data: Data) -> Data:
         ((6,), 8)
     """
     model.check_dynamics()
-    return compiled(xp, model, "forward", lambda d: _forward(xp, model, d))(data)
+    return compiled(xp, model, "forward", lambda d: _forward(xp, model, d))(_unshared(xp, data))
 
 
 def _forward(xp, model: Model, data: Data) -> Data:
@@ -496,7 +496,18 @@ def step(xp, model: Model, data: Data) -> Data:
         ((6,), (6,))
     """
     model.check_dynamics()
-    return compiled(xp, model, "step", lambda d: _step(xp, model, d))(data)
+    return compiled(xp, model, "step", lambda d: _step(xp, model, d))(_unshared(xp, data))
+
+
+def _unshared(xp, data: Data) -> Data:
+    """The data with each field in memory of its own, on backends whose arrays can share it
+    (``mutable_arrays``): torch's loop operators, which keep the RK4 stages and the solver's
+    iterations as loops under ``torch.compile``, refuse two captured tensors that share memory,
+    as the slices of one state vector (``qpos``, ``qvel``) do. Elsewhere the data itself."""
+    if not getattr(getattr(xp, "capabilities", None), "mutable_arrays", False):
+        return data
+    fields = data.fields().items()
+    return data.replace(**{k: xp.asarray(v, copy=True) for k, v in fields if v is not None})
 
 
 def _step(xp, model: Model, data: Data) -> Data:

@@ -321,14 +321,21 @@ def test_compiled_equals_eager(graph_backend, trees):
 def test_first_use_inside_torch_compile():
     """A fresh tree whose first use is torch.compile's trace, compiling a step as users do
     (``ivy.compile_fn``: no graph break may fall back to eager mode): its RK4 stages and the
-    solver's loops inside them stay torch's loop operators. One case: compiling is slow."""
-    pytest.importorskip("torch")
+    solver's loops inside them stay torch's loop operators. The positions and velocities are
+    slices of one state vector, as ivy_gym's tasks carry them (torch's loop operators refuse
+    captured tensors that share memory). One case: compiling is slow."""
+    torch = pytest.importorskip("torch")
     tree = ivy_robot.KinematicTree.from_mjcf(GYMNASIUM["inverted_pendulum"])
     _, states, _ = _constrained_oracle(GYMNASIUM["inverted_pendulum"], seed=2)
     q, v, u = (native(states[k], "torch") for k in ("qpos", "qvel", "ctrl"))
+    nq = q.shape[-1]
+
+    def step(state, ctrl):
+        return _steps(tree, 1)(state[..., :nq], state[..., nq:], ctrl)
+
     with warnings.catch_warnings():
         warnings.filterwarnings("error", message="torch.compile cannot run")
-        compiled = ivy.compile_fn(_steps(tree, 1))(q, v, u)
+        compiled = ivy.compile_fn(step)(torch.cat([q, v], -1), u)
     eager = _steps(tree, 1)(q, v, u)
     np.testing.assert_allclose(numpy_of(compiled), numpy_of(eager), rtol=1e-12, atol=1e-12)
 
