@@ -95,6 +95,10 @@ class _Facade:
         self.xp = ivy.get_framework(f=framework)
         #: Where the core's arrays live (None: the backend's default device).
         self.device = device
+        # The arrays the facade makes are placed on a named device: jax compiles a function
+        # once per pattern of committed (placed) inputs and commits its outputs, so a state
+        # drawn without a device would compile the step a second time at the second step.
+        self._device = device if device is not None else self.xp.dev(self.xp.zeros((1,)))
         self._to_numpy = self.xp.to_numpy  # the backend's own: no dispatch at every step
         self.framework = self.xp.backend
         self.dtype = _dtype_name(_default_dtype(core, self.xp) if dtype is None else dtype)
@@ -141,7 +145,7 @@ class _Facade:
 
     def _to_backend(self, states: np.ndarray):
         """Draws of the reset box as initial states: ``(state, observation, reset info)``."""
-        x = self.xp.asarray(np.asarray(states, np.float64), dtype=self.dtype, device=self.device)
+        x = self.xp.asarray(np.asarray(states, np.float64), dtype=self.dtype, device=self._device)
         return self._fresh(x)
 
     def _numpy(self, x) -> np.ndarray:
@@ -207,7 +211,7 @@ class _Facade:
             )
 
         def backend(x):
-            return self.xp.asarray(x, dtype=self.dtype, device=self.device)
+            return self.xp.asarray(x, dtype=self.dtype, device=self._device)
 
         self._state = setter(self.xp, self._state, backend(qpos), backend(qvel))
 
@@ -239,7 +243,7 @@ class _Facade:
                     f"{self._name}: actions must be {self._discrete_names}, got {action!r}."
                 )
             core_action = self._discrete_actions.take(a, 0)
-            return self.xp.asarray(core_action, device=self.device)
+            return self.xp.asarray(core_action, device=self._device)
         want = (*batch, self.core.action_dim)
         if a.shape != want:
             raise ValueError(
@@ -256,7 +260,7 @@ class _Facade:
         # hold now (float64 on jax without 64-bit types) is cast to the environment's
         kept = a.dtype in _KEPT_ACTION_DTYPES and hasattr(self.xp, a.dtype.name)
         dtype = a.dtype if kept else self.dtype
-        return self.xp.asarray(a, dtype=dtype, device=self.device)
+        return self.xp.asarray(a, dtype=dtype, device=self._device)
 
     @property
     def backend_state(self):
@@ -335,7 +339,7 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
                 f"{self._name}: the state has shape ({self.core.state_dim},) "
                 f"{self.core.state_names}; got shape {value.shape}."
             )
-        self._state = self.xp.asarray(value, dtype=self.dtype, device=self.device)
+        self._state = self.xp.asarray(value, dtype=self.dtype, device=self._device)
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
         super().reset(seed=seed)
@@ -467,7 +471,7 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
             draws[restart] = self.core.draw_initial(self.np_random, restarts)
             fresh, fresh_obs, fresh_info = self._to_backend(draws)
             state_np[restart] = self._numpy(fresh)[restart]
-            state = self.xp.asarray(state_np, device=self.device)
+            state = self.xp.asarray(state_np, device=self._device)
             if not obs.flags.writeable:
                 obs = obs.copy()
             obs[restart] = self._observation(fresh_obs)[restart]

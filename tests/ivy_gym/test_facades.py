@@ -260,3 +260,28 @@ def test_default_host_draw_is_gymnasiums_uniform_box():
     draws = core.draw_initial(np.random.default_rng(0), (3,))
     np.testing.assert_array_equal(draws, np.random.default_rng(0).uniform(low, high, (3, 2)))
     assert core.draw_initial(np.random.default_rng(0)).shape == (2,)
+
+
+def test_jax_facade_compiles_its_step_once():
+    """The state that a reset draws is placed as the step's outputs are (jax compiles once per
+    pattern of placed inputs): stepping and resetting again compile nothing more."""
+    jax = pytest.importorskip("jax")
+    env = gymnasium.make("ivy_gym/InvertedPendulum-v5", framework="jax")
+    env.reset(seed=0)
+    action = env.action_space.sample() * 0.0
+    env.step(action)  # the first step compiles
+    compiles = []
+
+    def listener(event, duration, **kwargs):
+        if "backend_compile" in event:
+            compiles.append(event)
+
+    jax.monitoring.register_event_duration_secs_listener(listener)
+    try:
+        for seed in (1, 2):
+            env.reset(seed=seed)
+            env.step(action)
+            env.step(action)
+    finally:
+        jax.monitoring.unregister_event_duration_listener(listener)
+    assert compiles == []
