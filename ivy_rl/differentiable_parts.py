@@ -52,6 +52,8 @@ class ActorValueModel:
         critic_hidden_sizes: of the critic's MLP (None: ``hidden_sizes``).
         normalize_returns: the critic predicts its targets normalised by their running mean
             and standard deviation.
+        normalize_observations: the policy and the critic see observations normalised by the
+            running mean and standard deviation of the rollouts' observations (SHAC's paper).
 
     Example:
         >>> model = ivy_rl.differentiable_parts.ActorValueModel((64, 64), critic=True)
@@ -63,6 +65,9 @@ class ActorValueModel:
         "activation": _s.ACTIVATION,
         "critic_hidden_sizes": _s.CRITIC_SIZES,
         "normalize_returns": _s.Setting("bool", meaning="the critic predicts normalised returns"),
+        "normalize_observations": _s.Setting(
+            "bool", meaning="normalise observations by the rollouts' running mean and std"
+        ),
     }
 
     def __init__(
@@ -72,6 +77,7 @@ class ActorValueModel:
         critic: bool = False,
         critic_hidden_sizes: Sequence[int] | None = None,
         normalize_returns: bool = True,
+        normalize_observations: bool = False,
     ) -> None:
         self.hidden_sizes, self.activation = tuple(hidden_sizes), activation
         self.has_critic = bool(critic)
@@ -79,6 +85,7 @@ class ActorValueModel:
             None if critic_hidden_sizes is None else tuple(critic_hidden_sizes)
         )
         self.normalize_returns = bool(normalize_returns)
+        self.normalize_observations = bool(normalize_observations)
 
     def initialize(
         self,
@@ -122,6 +129,7 @@ class AnalyticPolicyGradient(GradientUpdater):
     Args:
         lr: Adam's learning rate (a number or a schedule).
         gradient_clip: global norm of the gradient (0: no clipping).
+        beta1, beta2: Adam's decay rates (SHAC's paper: 0.7 and 0.95).
 
     Example:
         >>> updater = ivy_rl.differentiable_parts.AnalyticPolicyGradient(lr=1e-2)
@@ -129,21 +137,38 @@ class AnalyticPolicyGradient(GradientUpdater):
         0.01
     """
 
-    settings = {"lr": _s.LR, "gradient_clip": _s.CLIP}
+    settings = {"lr": _s.LR, "gradient_clip": _s.CLIP, "beta1": _s.BETA1, "beta2": _s.BETA2}
 
-    def __init__(self, lr: Any = 1e-3, gradient_clip: float = 1.0) -> None:
+    def __init__(
+        self, lr: Any = 1e-3, gradient_clip: float = 1.0, beta1: float = 0.9, beta2: float = 0.999
+    ) -> None:
         super().__init__(lr, gradient_clip)
+        self.beta1, self.beta2 = float(beta1), float(beta2)
 
     def minimize(self, loss_fn: Callable, v: Nest, state: Nest, lr: Any = None):
         """A step on ``loss_fn(v) -> (loss, infos)``: ``(v, state, {'loss', 'gradient_norm',
-        **infos})``."""
+        'skipped', **infos})``.
+
+        A gradient that is not finite (a rollout through a contact whose derivative overflowed)
+        is not applied: the weights and the optimiser's state stay as they were, and
+        ``skipped`` is 1 (else 0), so that one bad rollout does not turn every weight into NaN.
+        """
         xp = self.xp
         loss, grads, aux = xp.execute_with_gradients(loss_fn, v)
         norm = _global_norm(xp, grads)
+        finite = xp.isfinite(norm)
+        grads = ivy.nest.map_nest(lambda g: xp.where(finite, g, xp.zeros_like(g)), grads)
         if self.gradient_clip:
             grads = xp.clip_by_global_norm(grads, self.gradient_clip)[0]
-        v, state = at_rate(self.optimizer, lr).step(v, grads, state)
-        return v, state, {"loss": loss, "gradient_norm": norm, **aux}
+        new_v, new_state = at_rate(self.optimizer, lr).step(v, grads, state)
+
+        def keep(new, old):
+            return xp.where(finite, new, old)
+
+        kept = ivy.nest.multi_map_nest(keep, new_v, v)
+        kept_state = ivy.nest.multi_map_nest(keep, new_state, state)
+        skipped = 1.0 - xp.astype(finite, norm.dtype)
+        return kept, kept_state, {"loss": loss, "gradient_norm": norm, "skipped": skipped, **aux}
 
 
 class TargetValueRegression(GradientUpdater):
@@ -158,6 +183,7 @@ class TargetValueRegression(GradientUpdater):
         iterations: passes over a rollout's transitions per update.
         batches: mini-batches per pass.
         target_update: step of the target critic per update (1: copy).
+        beta1, beta2: Adam's decay rates.
 
     Example:
         >>> updater = ivy_rl.differentiable_parts.TargetValueRegression(iterations=8, batches=4)
@@ -171,6 +197,8 @@ class TargetValueRegression(GradientUpdater):
         "iterations": _s.Setting("int", 1, meaning="passes of critic regression per update"),
         "batches": _s.Setting("int", 1, meaning="critic mini-batches per pass"),
         "target_update": _s.Setting("float", 0.0, 1.0, meaning="step of the target critic"),
+        "beta1": _s.BETA1,
+        "beta2": _s.BETA2,
     }
 
     def __init__(
@@ -181,8 +209,11 @@ class TargetValueRegression(GradientUpdater):
         iterations: int = 8,
         batches: int = 4,
         target_update: float = 0.8,
+        beta1: float = 0.9,
+        beta2: float = 0.999,
     ) -> None:
         super().__init__(lr, gradient_clip)
+        self.beta1, self.beta2 = float(beta1), float(beta2)
         self.trace_decay, self.target_update = trace_decay, target_update
         self.iterations, self.batches = int(iterations), int(batches)
 

@@ -50,7 +50,7 @@ from ivy_rl.checkpoints import (
     write_config,
 )
 from ivy_rl.console import Console
-from ivy_rl.environments import Workers, make_env
+from ivy_rl.environments import Workers, make_env, run_env_kwargs
 from ivy_rl.logger import Logger
 
 __all__ = [
@@ -205,6 +205,8 @@ class Trainer:
             if notes is None:
                 notes = messages.family_defaults(agent, environment)
             agent = make(agent, environment=environment)
+        # an ivy_gym MuJoCo task runs on the run's framework where it compiles loops
+        env_kwargs = run_env_kwargs(environment, env_kwargs, _framework_of(agent, f))
         if getattr(agent, "differentiable", False):
             agent.bind_environment(environment, dict(env_kwargs or {}))
         self.workers = Workers(

@@ -269,10 +269,14 @@ class GradientUpdater:
         self.lr, self.gradient_clip = lr, gradient_clip
         self.xp = None
 
+    #: Adam's decay rates of its moment estimates (the updaters that declare them set them)
+    beta1, beta2 = 0.9, 0.999
+
     def initialize(self, xp: Any) -> GradientUpdater:
         """Create the optimiser for the backend namespace ``xp``."""
         self.xp = xp
-        self.optimizer = ivy.Adam(as_schedule(self.lr)(0.0), f=xp)
+        lr = as_schedule(self.lr)(0.0)
+        self.optimizer = ivy.Adam(lr, beta1=self.beta1, beta2=self.beta2, f=xp)
         return self
 
     def init_state(self, v: Nest) -> Nest:

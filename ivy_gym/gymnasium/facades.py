@@ -137,11 +137,10 @@ class _Facade:
             caps = self.xp.capabilities
             compile = caps.compilation and caps.compiled_loops
         self.compiled = bool(compile)
-        self._step = functools.partial(core.kernel_step_info, self.xp)
-        self._fresh = functools.partial(_fresh, core, self.xp)
         if self.compiled:
-            self._step = ivy.compile_fn(self._step, f=self.xp)
-            self._fresh = ivy.compile_fn(self._fresh, f=self.xp)
+            self._step, self._fresh = _compiled_kernels(core, self.xp)
+        else:
+            self._step, self._fresh = _kernels(core, self.xp)
 
     def _to_backend(self, states: np.ndarray):
         """Draws of the reset box as initial states: ``(state, observation, reset info)``."""
@@ -274,6 +273,32 @@ class _Facade:
     @property
     def _name(self) -> str:
         return f"ivy_gym {type(self.core).__name__} ({self.framework})"
+
+
+def _kernels(core: Env, xp) -> tuple:
+    """The step and the reset's kernels of ``core`` on the namespace ``xp``."""
+    return functools.partial(core.kernel_step_info, xp), functools.partial(_fresh, core, xp)
+
+
+#: Compiled kernels shared by the facades of equal cores (same class, parameters and reset
+#: box, on one backend): the copies of a vector environment and a trainer's test environment
+#: compile the step once, not once each (4 s each for Hopper on jax). The most recent kept.
+_SHARED: dict = {}
+_SHARED_SIZE = 16
+
+
+def _compiled_kernels(core: Env, xp) -> tuple:
+    """The compiled step and reset kernels of ``core``, shared with equal cores."""
+    key = (type(core), core.params, core.reset_scale, xp.__name__)
+    try:
+        hash(key)
+    except TypeError:  # parameters that are arrays: kernels of its own
+        return tuple(ivy.compile_fn(k, f=xp) for k in _kernels(core, xp))
+    if key not in _SHARED:
+        if len(_SHARED) >= _SHARED_SIZE:
+            del _SHARED[next(iter(_SHARED))]
+        _SHARED[key] = tuple(ivy.compile_fn(k, f=xp) for k in _kernels(core, xp))
+    return _SHARED[key]
 
 
 def _fresh(core: Env, xp, draws) -> tuple:

@@ -58,15 +58,18 @@ class APG(DifferentiableAgent):
         self.v = self._placed({"actor": self.actor.v})
         self.optimizer_states = {"actor": self.actor_optimizer.init(self.v["actor"])}
 
-    def _update_fn(self, v, states, start, scheduled):
+    def _update_fn(self, v, states, obs_moments, start, scheduled):
         """One Adam step of the actor from rollouts of the initial states ``start``, at the
-        scheduled learning rate."""
-        actor_v, actor_state, logs = self._actor_step(
-            v["actor"], states["actor"], start, scheduled["actor_lr"]
+        scheduled learning rate; the observations' moments with the rollouts' added."""
+        actor_v, actor_state, logs, observations = self._actor_step(
+            v["actor"], states["actor"], self._obs_stats(obs_moments), start, scheduled["actor_lr"]
         )
-        return {"actor": actor_v}, {"actor": actor_state}, logs
+        obs_moments = self._fold_observations(obs_moments, observations)
+        return {"actor": actor_v}, {"actor": actor_state}, obs_moments, logs
 
-    def policy_loss(self, actor_v: Any, start: Any) -> tuple[Any, dict[str, Any]]:
+    def policy_loss(
+        self, actor_v: Any, start: Any, obs_stats: Any = None
+    ) -> tuple[Any, dict[str, Any]]:
         """APG's loss: ``-mean_b sum_t discount**t r_t / horizon`` of ``horizon``-step rollouts
         of the policy with variables ``actor_v`` from the initial states ``start``, a
         differentiable function of both.
@@ -74,9 +77,12 @@ class APG(DifferentiableAgent):
         Args:
             actor_v: the policy's variables (``agent.v['actor']``).
             start: ``(batch, state_dim)`` initial states of the environment's core.
+            obs_stats: ``{'mean', 'std'}`` that normalise the policy's observations (None:
+                none; with ``normalize_observations``, the agent passes its running ones).
 
         Returns:
-            ``(loss, {'rollout_reward': mean reward per step})``.
+            ``(loss, {'rollout_reward': mean reward per step, 'observations': the rollouts'
+            observations})``.
 
         Example:
             >>> import gymnasium as gym, ivy_gym, torch, ivy
@@ -93,24 +99,30 @@ class APG(DifferentiableAgent):
         self._check_initialized()
         xp = self.xp
         horizon = self.config["horizon"]
-        traj = self._rollout(actor_v, start, horizon)
+        traj = self._rollout(actor_v, start, horizon, obs_stats=obs_stats)
         rewards = traj.rewards
         discounted = xp.sum(rewards * self._discounts(horizon, rewards.dtype), axis=0)
         reward = xp.stop_gradient(xp.mean(rewards))
-        return -xp.mean(discounted) / horizon, {"rollout_reward": reward}
+        observations = xp.stop_gradient(traj.observations)
+        return -xp.mean(discounted) / horizon, {
+            "rollout_reward": reward,
+            "observations": observations,
+        }
 
-    def _actor_step(self, actor_v, actor_state, start, lr):
+    def _actor_step(self, actor_v, actor_state, obs_stats, start, lr):
         def loss_fn(w):
-            return self.policy_loss(w, start)
+            return self.policy_loss(w, start, obs_stats)
 
         actor_v, actor_state, infos = self._actor_minimize(loss_fn, actor_v, actor_state, lr)
-        return actor_v, actor_state, {f"actor/{k}": x for k, x in infos.items()}
+        observations = infos.pop("observations")
+        logs = {f"actor/{k}": x for k, x in infos.items()}
+        return actor_v, actor_state, logs, observations
 
     def _learn(self) -> dict[str, float]:
         c = self.config
         start = self._asarray(self._initial_states(c["batch_size"]))
-        self.v, self.optimizer_states, logs = self._update(
-            self.v, self.optimizer_states, start, self._scheduled_arrays()
+        self.v, self.optimizer_states, self.obs_moments, logs = self._update(
+            self.v, self.optimizer_states, self.obs_moments, start, self._scheduled_arrays()
         )
         self.simulated_steps += c["batch_size"] * c["horizon"]
         return self._logs(logs)

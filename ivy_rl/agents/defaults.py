@@ -40,7 +40,15 @@ FAMILIES: dict[str, str] = {
     "classic_continuous": "classic control, continuous actions (Pendulum, MountainCarContinuous)",
     "mujoco": "MuJoCo locomotion and manipulation (Hopper, HalfCheetah, Walker2d, Ant, Reacher)",
     "ivy_gym": "ivy_gym's differentiable environments (ivy_gym/<Name>-v<N>)",
+    "ivy_gym_locomotion": (
+        "ivy_gym's MuJoCo locomotion tasks (ivy_gym/Hopper-v5, Walker2d-v5, HalfCheetah-v5, "
+        "Ant-v5, Swimmer-v5, Humanoid-v5); an agent without a row here takes its mujoco row"
+    ),
 }
+
+#: Where a family has no row for an agent, the family whose row it takes instead: ivy_gym's
+#: locomotion tasks are Gymnasium's MuJoCo tasks, batched and differentiable.
+FALLBACK: dict[str, str] = {"ivy_gym_locomotion": "mujoco"}
 
 # Off-policy agents: small torsos and updates every 50 steps (50 optimisation steps), so that
 # the 20k-step Pendulum budget of the issue runs fast (SAC -120, TD3 -119 after 20k steps on
@@ -71,6 +79,26 @@ _TD3_MUJOCO = dict(hidden_sizes=(400, 300), normalize_observations=False)
 # The RL zoo's settings (rl-baselines3-zoo, hyperparams/ppo.yml, a2c.yml, trpo.yml) where they
 # carry over; learning rates and clipping are constant here. CartPole's PPO row is measured in
 # docs/ivy_rl.md (test score 500 in 100k steps on torch, jax and tensorflow).
+# SHAC's published settings (Xu et al. 2022, their Hopper configuration): 32-step windows,
+# an ELU policy of (128, 64, 32) and critic of (64, 64), Adam with decay rates 0.7 and 0.95,
+# learning rates decaying linearly from 2e-3 (policy) and 2e-4 (critic), gradients clipped at a
+# global norm of 1, observations normalised by running moments, returns not; the critic: 16
+# passes of 4 mini-batches on TD(0.95) targets, its target moved 80% of the way per update.
+# Their Hopper runs 256 environments; 64 here (their Ant's): an update at 256 takes 4x as long
+# on a 2-core CPU, for the same steps per second. APG takes the policy's side.
+_SHAC_PAPER_ACTOR = dict(
+    batch_size=64,
+    horizon=32,
+    update_every=1,
+    hidden_sizes=(128, 64, 32),
+    activation="elu",
+    actor_lr="linear:2e-3",
+    actor_gradient_clip=1.0,
+    adam_beta1=0.7,
+    adam_beta2=0.95,
+    discount=0.99,
+    normalize_observations=True,
+)
 DEFAULTS: dict[str, dict[str, dict[str, Any]]] = {
     "PPO": {
         "classic_discrete": dict(
@@ -136,11 +164,24 @@ DEFAULTS: dict[str, dict[str, dict[str, Any]]] = {
         ),
     },
     # ivy_gym's Pendulum and Reacher (benchmarks/rl_sample_efficiency.py)
-    "APG": {"ivy_gym": dict(batch_size=16, horizon=32, update_every=1, actor_lr=1e-2)},
+    "APG": {
+        "ivy_gym": dict(batch_size=16, horizon=32, update_every=1, actor_lr=1e-2),
+        "ivy_gym_locomotion": dict(_SHAC_PAPER_ACTOR),
+    },
     "SHAC": {
         "ivy_gym": dict(
             batch_size=16, horizon=32, update_every=1, actor_lr=1e-2, critic_iterations=4
-        )
+        ),
+        "ivy_gym_locomotion": dict(
+            _SHAC_PAPER_ACTOR,
+            critic_hidden_sizes=(64, 64),
+            critic_lr="linear:2e-4",
+            critic_iterations=16,
+            critic_batches=4,
+            target_update=0.8,
+            trace_decay=0.95,
+            normalize_returns=False,
+        ),
     },
     "TRPO": {
         "classic_discrete": dict(
@@ -217,7 +258,8 @@ def task_family(environment: Any) -> str | None:
         return _family_of_space(getattr(environment, "action_space", None), None)
     env_id = environment.split(":", 1)[-1]
     if env_id.startswith("ivy_gym/"):
-        return "ivy_gym"
+        locomotion = env_id.split("/")[-1].split("-v")[0] in _LOCOMOTION
+        return "ivy_gym_locomotion" if locomotion else "ivy_gym"
     name = env_id.split("/")[-1].split("-v")[0]
     if name in _MUJOCO:
         return "mujoco"
@@ -252,6 +294,7 @@ def _family_of_space(space: Any, default: str | None) -> str | None:
     return default
 
 
+_LOCOMOTION = {"Ant", "HalfCheetah", "Hopper", "Humanoid", "Swimmer", "Walker2d"}
 _MUJOCO = {
     "Ant",
     "HalfCheetah",
@@ -278,7 +321,10 @@ def defaults_for(name: str, environment: Any = None) -> dict[str, Any]:
         32
     """
     family = task_family(environment)
-    return dict(DEFAULTS.get(name, {}).get(family, {})) if family else {}
+    rows = DEFAULTS.get(name, {})
+    if family not in rows:
+        family = FALLBACK.get(family)
+    return dict(rows.get(family, {})) if family else {}
 
 
 def settings_table(name: str, environment: Any = None) -> list[dict[str, Any]]:

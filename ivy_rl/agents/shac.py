@@ -73,6 +73,7 @@ class SHAC(DifferentiableAgent):
                 "activation": "activation",
                 "critic_hidden_sizes": "critic_hidden_sizes",
                 "normalize_returns": "normalize_returns",
+                "normalize_observations": "normalize_observations",
             },
         ),
         "critic_updater": (
@@ -84,6 +85,8 @@ class SHAC(DifferentiableAgent):
                 "critic_iterations": "iterations",
                 "critic_batches": "batches",
                 "target_update": "target_update",
+                "adam_beta1": "beta1",
+                "adam_beta2": "beta2",
             },
         ),
     }
@@ -104,10 +107,7 @@ class SHAC(DifferentiableAgent):
                 f"SHAC: critic_batches must divide batch_size * horizon = {size}, got "
                 f"{c['critic_batches']!r}"
             )
-        self.moments = {
-            k: self._asarray(np.asarray(x, self.np_dtype))
-            for k, x in (("count", 0.0), ("mean", 0.0), ("mean_sq", 1.0))
-        }
+        self.moments = self._moments()
         # the simulated environments (an agent that only acts, as in play, has no environment
         # bound: then they are drawn at the first update)
         bound = self.core is not None
@@ -118,15 +118,18 @@ class SHAC(DifferentiableAgent):
     # Pure functions
     # ------------------------------------------------------------------------------------------
 
-    def _update_fn(self, v, states, moments, start, orders, scheduled):
+    def _update_fn(self, v, states, moments, obs_moments, start, orders, scheduled):
         """The whole update from the states ``start`` with the critic's mini-batches
-        ``orders``, at the scheduled learning rates: ``(v, states, moments, final_states,
-        restart, logs)``."""
+        ``orders``, at the scheduled learning rates: ``(v, states, moments, obs_moments,
+        final_states, restart, logs)``. The rollout, the critic's values and its regression
+        see the observations normalised by the moments before this update's rollout."""
         stats = self._return_stats(moments)
+        obs_stats = self._obs_stats(obs_moments)
         actor_v, actor_state, data, logs = self._actor_step(
-            v["actor"], states["actor"], v["critic"], stats, start, scheduled["actor_lr"]
+            v["actor"], states["actor"], v["critic"], stats, obs_stats, start, scheduled["actor_lr"]
         )
-        batch, moments = self._critic_batch(v["target"], stats, moments, start, data)
+        batch, moments = self._critic_batch(v["target"], stats, obs_stats, moments, start, data)
+        obs_moments = self._fold_observations(obs_moments, data["observations"])
         (critic_v, critic_state), ys = self._run_loop(
             "critic_step",
             self._critic_step,
@@ -139,7 +142,7 @@ class SHAC(DifferentiableAgent):
         target_v = self.critic_updater.update_target(v["target"], critic_v)
         new_v = {"actor": actor_v, "critic": critic_v, "target": target_v}
         new_states = {"actor": actor_state, "critic": critic_state}
-        return new_v, new_states, moments, data["final_state"], data["ended"], logs
+        return new_v, new_states, moments, obs_moments, data["final_state"], data["ended"], logs
 
     def _return_stats(self, moments):
         """``{'mean', 'std'}`` of the critic's targets (None without ``normalize_returns``)."""
@@ -148,18 +151,18 @@ class SHAC(DifferentiableAgent):
         std = _standard_deviation(self.xp, moments["mean"], moments["mean_sq"], 1e-2)
         return {"mean": moments["mean"], "std": std}
 
-    def _actor_step(self, actor_v, actor_state, critic_v, stats, start, lr):
+    def _actor_step(self, actor_v, actor_state, critic_v, stats, obs_stats, start, lr):
         xp = self.xp
         horizon = self.config["horizon"]
         gamma = self.config["discount"]
 
         def loss_fn(w):
-            traj = self._rollout(w, start, horizon)
+            traj = self._rollout(w, start, horizon, obs_stats=obs_stats)
             rewards = traj.rewards
             discounted = xp.sum(rewards * self._discounts(horizon, rewards.dtype), axis=0)
             last = traj.observations[horizon - 1]
             alive = xp.logical_and(traj.valid[horizon - 1], xp.logical_not(traj.terminated[-1]))
-            values = self.critic(last, None, stats, v=critic_v)
+            values = self.critic(last, obs_stats, stats, v=critic_v)
             bootstrap = xp.where(alive, values, xp.zeros_like(values))
             loss = -xp.mean(discounted + gamma**horizon * bootstrap) / horizon
             ended = xp.logical_not(alive)
@@ -179,19 +182,21 @@ class SHAC(DifferentiableAgent):
             "actor/loss": infos.pop("loss"),
             "actor/gradient_norm": infos.pop("gradient_norm"),
             "actor/rollout_reward": infos.pop("rollout_reward"),
+            "actor/skipped": infos.pop("skipped"),
         }
         return actor_v, actor_state, infos, logs
 
-    def _critic_batch(self, target_v, stats, moments, start, data):
+    def _critic_batch(self, target_v, stats, obs_stats, moments, start, data):
         """The critic's regression data, flattened to ``[horizon * batch]``: the observation
-        before each step, its TD(λ) target (normalised with the moments updated by this
-        rollout's targets) and its weight (0 after a termination); and the new moments."""
+        before each step (normalised by ``obs_stats``), its TD(λ) target (normalised with the
+        moments updated by this rollout's targets) and its weight (0 after a termination); and
+        the new moments."""
         xp, c = self.xp, self.config
         observations = data["observations"]
         steps, batch = tuple(data["rewards"].shape)
         first = xp.expand_dims(self.core.observe(start, f=xp), axis=0)
         before = xp.concat([first, observations[: steps - 1]], axis=0)
-        next_values = xp.stop_gradient(self.critic(observations, None, stats, v=target_v))
+        next_values = xp.stop_gradient(self.critic(observations, obs_stats, stats, v=target_v))
         no_resets = xp.zeros_like(data["rewards"])
         terminations = xp.astype(data["terminated"], data["rewards"].dtype)
         targets = _lambda_returns(
@@ -218,7 +223,7 @@ class SHAC(DifferentiableAgent):
             new_stats = self._return_stats(moments)
             targets = (targets - new_stats["mean"]) / new_stats["std"]
         batch = {
-            "observations": xp.reshape(before, (size, -1)),
+            "observations": self.critic.encoder(xp.reshape(before, (size, -1)), obs_stats),
             "targets": targets,
             "weights": xp.reshape(xp.astype(data["valid"], targets.dtype), (size,)),
         }
@@ -240,10 +245,11 @@ class SHAC(DifferentiableAgent):
         c, xp = self.config, self.xp
         if self._states is None:
             self._states = self._initial_states(c["batch_size"])
-        v, states, self.moments, final, ended, logs = self._update(
+        v, states, self.moments, self.obs_moments, final, ended, logs = self._update(
             self.v,
             self.optimizer_states,
             self.moments,
+            self.obs_moments,
             self._asarray(self._states),
             self._asarray(self._orders()),
             self._scheduled_arrays(),

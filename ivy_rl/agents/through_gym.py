@@ -41,10 +41,12 @@ from typing import Any
 
 import numpy as np
 
+import ivy
 from ivy_rl.agents.agent import Agent
 from ivy_rl.agents.fusion import FUSION, check_fusion, fusion_level
 from ivy_rl.differentiable_parts import ActorValueModel, AnalyticPolicyGradient
 from ivy_rl.explorations import NormalNoise
+from ivy_rl.normalizers import _fold_moments, _standard_deviation
 from ivy_rl.replays import Rollouts
 
 __all__ = ["DifferentiableAgent", "environment_core"]
@@ -130,7 +132,11 @@ class DifferentiableAgent(Agent):
     parts = {
         "model": (
             ActorValueModel,
-            {"hidden_sizes": "hidden_sizes", "activation": "activation"},
+            {
+                "hidden_sizes": "hidden_sizes",
+                "activation": "activation",
+                "normalize_observations": "normalize_observations",
+            },
         ),
         "replay": (
             Rollouts,
@@ -144,7 +150,12 @@ class DifferentiableAgent(Agent):
         "exploration": (NormalNoise, {"exploration_noise": "scale"}),
         "actor_updater": (
             AnalyticPolicyGradient,
-            {"actor_lr": "lr", "actor_gradient_clip": "gradient_clip"},
+            {
+                "actor_lr": "lr",
+                "actor_gradient_clip": "gradient_clip",
+                "adam_beta1": "beta1",
+                "adam_beta2": "beta2",
+            },
         ),
     }
 
@@ -201,6 +212,9 @@ class DifferentiableAgent(Agent):
             f=xp,
         )
         self.actor, self.critic = self.model.actor, self.model.critic
+        # running moments of the rollouts' observations (None: not normalised)
+        normalized = self.model.normalize_observations
+        self.obs_moments = self._moments((self._obs_dim,)) if normalized else None
         low, high = (
             self.action_space.low.astype(np.float64),
             self.action_space.high.astype(np.float64),
@@ -233,29 +247,60 @@ class DifferentiableAgent(Agent):
         """Create ``self.v`` (``{'actor': ...}`` and more) and ``self.optimizer_states``."""
         raise NotImplementedError
 
+    def _moments(self, shape: tuple[int, ...] = ()) -> dict[str, Any]:
+        """Running moments before any value: count 0, mean 0, mean of squares 1."""
+        return {
+            k: self._asarray(np.full(s, x, self.np_dtype))
+            for k, s, x in (("count", (), 0.0), ("mean", shape, 0.0), ("mean_sq", shape, 1.0))
+        }
+
     # ------------------------------------------------------------------------------------------
     # Pure functions
     # ------------------------------------------------------------------------------------------
 
-    def _policy(self) -> Callable:
-        """``policy(obs, v)`` in the action space, for ``ivy_gym.rollout``."""
+    def _obs_stats(self, moments):
+        """``{'mean', 'std'}`` of the observations from their moments (None: not normalised)."""
+        if moments is None:
+            return None
+        std = _standard_deviation(self.xp, moments["mean"], moments["mean_sq"], 1e-2)
+        return {"mean": moments["mean"], "std": std}
+
+    def _fold_observations(self, moments, observations):
+        """The moments with a rollout's observations ``[..., obs_dim]`` added (None: None)."""
+        if moments is None:
+            return None
+        xp = self.xp
+        flat = xp.reshape(xp.stop_gradient(observations), (-1, self._obs_dim))
+        count, mean, mean_sq = _fold_moments(
+            moments["count"],
+            moments["mean"],
+            moments["mean_sq"],
+            float(flat.shape[0]),
+            xp.sum(flat, axis=0),
+            xp.sum(flat * flat, axis=0),
+        )
+        return {"count": count, "mean": mean, "mean_sq": mean_sq}
+
+    def _policy(self, obs_stats=None) -> Callable:
+        """``policy(obs, v)`` in the action space, for ``ivy_gym.rollout``, on observations
+        normalised by ``obs_stats``."""
         xp = self.xp
 
         def policy(obs, v):
-            unit = self.actor(obs, None, v=v).mode()
+            unit = self.actor(obs, obs_stats, v=v).mode()
             low = xp.asarray(self._action_low, dtype=obs.dtype)
             half = xp.asarray(self._action_half, dtype=obs.dtype)
             return low + (unit + 1.0) * half
 
         return policy
 
-    def _rollout(self, actor_v, states, horizon, window=None):
+    def _rollout(self, actor_v, states, horizon, window=None, obs_stats=None):
         import ivy_gym
 
         return ivy_gym.rollout(
             self.core,
             states,
-            policy=self._policy(),
+            policy=self._policy(obs_stats),
             v=actor_v,
             horizon=horizon,
             window=window,
@@ -272,8 +317,8 @@ class DifferentiableAgent(Agent):
         scheduled value, a scalar array)."""
         return self.actor_updater.minimize(loss_fn, actor_v, actor_state, lr)
 
-    def _mode_fn(self, actor_v, observations):
-        return self.actor(observations, None, v=actor_v).mode()
+    def _mode_fn(self, actor_v, obs_moments, observations):
+        return self.actor(observations, self._obs_stats(obs_moments), v=actor_v).mode()
 
     def _update_fn(self, v, states, *args):
         """The whole update (pure, compiled with ``fusion='update'``); its last argument is
@@ -306,7 +351,7 @@ class DifferentiableAgent(Agent):
 
     def _unit_actions(self, observations: Any) -> np.ndarray:
         obs = self._observations(observations)
-        mode = self._mode(self.v["actor"], self._asarray(obs))
+        mode = self._mode(self.v["actor"], self.obs_moments, self._asarray(obs))
         return np.asarray(self.xp.to_numpy(mode), np.float64)
 
     def step(self, observations: Any) -> np.ndarray:
@@ -318,9 +363,12 @@ class DifferentiableAgent(Agent):
         return self._env_actions(self._unit_actions(observations))
 
     def _initial_states(self, count: int) -> np.ndarray:
-        """``count`` initial states of the core, uniform in its reset box (agent's generator)."""
-        low, high = self.core.initial_bounds()
-        return (low + (high - low) * self.rng.random((count, low.size))).astype(self.np_dtype)
+        """``count`` initial states of the core, drawn by the agent's generator as the core's
+        Gymnasium reset draws them (:meth:`ivy_gym.Env.draw_initial`; the parts a MuJoCo task
+        carries, its warm start and tracked position, filled in as its reset does)."""
+        draws = self.core.draw_initial(self.rng, count)
+        states = self.core.kernel_initial(ivy.get_framework(f="numpy"), draws)
+        return np.asarray(states, self.np_dtype)
 
     def update(self, observations, rewards, resets, terminations) -> dict[str, float]:
         """Learn from ``batch_size`` differentiable rollouts every ``update_every`` calls (the
@@ -354,11 +402,17 @@ class DifferentiableAgent(Agent):
     # ------------------------------------------------------------------------------------------
 
     def _arrays(self) -> dict[str, Any]:
-        return {"v": self.v, "optimizer": self.optimizer_states}
+        arrays = {"v": self.v, "optimizer": self.optimizer_states}
+        if self.obs_moments is not None:
+            arrays["observation_moments"] = self.obs_moments
+        return arrays
 
     def _load_arrays(self, arrays: dict[str, Any]) -> None:
         self.v = self._to_backend(arrays["v"], self.v)
         self.optimizer_states = self._to_backend(arrays["optimizer"], self.optimizer_states)
+        if self.obs_moments is not None and "observation_moments" in arrays:
+            moments = arrays["observation_moments"]
+            self.obs_moments = self._to_backend(moments, self.obs_moments)
 
     def _meta(self) -> dict[str, Any]:
         return {

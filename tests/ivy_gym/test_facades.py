@@ -285,3 +285,19 @@ def test_jax_facade_compiles_its_step_once():
     finally:
         jax.monitoring.unregister_event_duration_listener(listener)
     assert compiles == []
+
+
+def test_facades_of_equal_tasks_share_their_compiled_step():
+    """A vector environment's copies and a trainer's test environment compile the step once:
+    facades of equal cores share it; other parameters get their own; each steps its state."""
+    pytest.importorskip("jax")
+    one, two = (gymnasium.make("ivy_gym/Pendulum-v1", framework="jax").unwrapped for _ in "ab")
+    other = gymnasium.make("ivy_gym/Pendulum-v1", framework="jax", g=9.0).unwrapped
+    assert one._step is two._step and one._fresh is two._fresh
+    assert other._step is not one._step
+    one.reset(seed=0)
+    two.reset(seed=0)
+    start = two.state
+    one.step(np.array([2.0], np.float32))
+    np.testing.assert_array_equal(two.state, start)
+    assert not np.array_equal(one.state, start)

@@ -12,6 +12,7 @@ import pytest
 import ivy
 import ivy_gym  # noqa: F401  (registers the ivy_gym ids)
 import ivy_rl
+from ivy_gym.mujoco_env import gymnasium_asset
 from ivy_rl.agents import APG, SHAC
 
 PENDULUM = "ivy_gym/Pendulum-v1"
@@ -294,9 +295,10 @@ def test_core_parameters_reach_the_core():
 
 
 def test_checkpoint_continues_exactly(tmp_path, diff_backend):
-    def make():
+    def make():  # the observations' moments are part of the checkpoint
         return _bound(
             SHAC(
+                normalize_observations=True,
                 hidden_sizes=(8,),
                 batch_size=2,
                 horizon=4,
@@ -317,3 +319,121 @@ def test_checkpoint_continues_exactly(tmp_path, diff_backend):
     second = make().load(tmp_path / "agent")
     assert second.simulated_steps == 8
     assert second.update(obs, zeros, flags, flags) == expected
+
+
+# ----------------------------------------------------------------------------------------------
+# SHAC's published settings: observation normalisation, Adam's decay rates, the family row
+# ----------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("cls", [APG, SHAC])
+def test_observation_moments_are_those_of_every_rollout(diff_backend, cls):
+    """With ``normalize_observations``, after two updates the moments are the mean and mean of
+    squares of every observation of both updates' rollouts (numpy float64 of the rollouts run
+    again from the recorded starts), and acting normalises by them."""
+    agent = _bound(
+        cls(normalize_observations=True, hidden_sizes=(8,), batch_size=4, horizon=3),
+        seed=1,
+        f=diff_backend,
+        dtype="float64",
+    )
+    xp, observations = agent.xp, []
+    for _ in range(2):
+        moments, actor_v = agent.obs_moments, agent.v["actor"]
+        if cls is SHAC:
+            start = agent._states.copy()
+        else:  # APG draws its starts in the update: replay the generator
+            state = agent.rng.bit_generator.state
+            start = agent._initial_states(4)
+            agent.rng.bit_generator.state = state
+        traj = agent._rollout(actor_v, xp.asarray(start), 3, obs_stats=agent._obs_stats(moments))
+        observations.append(np.asarray(xp.to_numpy(traj.observations)).reshape(-1, 3))
+        agent._learn()
+    seen = np.concatenate(observations)
+    got = {k: np.asarray(xp.to_numpy(v)) for k, v in agent.obs_moments.items()}
+    assert got["count"] == len(seen) == 24
+    np.testing.assert_allclose(got["mean"], seen.mean(0), rtol=1e-10, atol=1e-12)
+    np.testing.assert_allclose(got["mean_sq"], (seen**2).mean(0), rtol=1e-10, atol=1e-12)
+    obs = np.array([[0.3, -0.2, 4.0]])
+    std = np.maximum(np.sqrt(np.maximum(seen.var(0), 0.0)), 1e-2)
+    normalized = np.clip((obs - seen.mean(0)) / std, -10.0, 10.0)
+    mode = agent.actor(xp.asarray(normalized), None, v=agent.v["actor"]).mode()
+    expected = 2.0 * np.asarray(xp.to_numpy(mode))  # Pendulum's torque bound is 2
+    np.testing.assert_allclose(agent.test_step(obs), expected, rtol=1e-6)  # float32 actions
+
+
+def test_adam_decay_rates_reach_the_optimiser(diff_backend):
+    """Two steps of the policy's updater with SHAC's decay rates equal Adam written in numpy."""
+    from ivy_rl.differentiable_parts import AnalyticPolicyGradient
+
+    xp = ivy.get_framework(f=diff_backend)
+    updater = AnalyticPolicyGradient(lr=0.1, gradient_clip=0.0, beta1=0.7, beta2=0.95)
+    updater.initialize(xp)
+    target = np.array([1.0, -2.0, 0.5])
+    v = {"w": xp.asarray(np.zeros(3))}
+    state = updater.init_state(v)
+    w, m, s = np.zeros(3), np.zeros(3), np.zeros(3)
+    for t in (1, 2):
+        v, state, _ = updater.minimize(
+            lambda v: (xp.sum((v["w"] - xp.asarray(target)) ** 2), {}), v, state
+        )
+        g = 2.0 * (w - target)
+        m, s = 0.7 * m + 0.3 * g, 0.95 * s + 0.05 * g * g
+        w = w - 0.1 * (m / (1 - 0.7**t)) / (np.sqrt(s / (1 - 0.95**t)) + 1e-8)
+    np.testing.assert_allclose(np.asarray(xp.to_numpy(v["w"])), w, rtol=1e-6)
+
+
+def test_locomotion_family_takes_shacs_settings_and_the_mujoco_rows():
+    from ivy_rl.agents.defaults import defaults_for, task_family
+
+    assert task_family("ivy_gym/Hopper-v5") == "ivy_gym_locomotion"
+    assert task_family("ivy_gym/Reacher-v5") == "ivy_gym"
+    shac = ivy_rl.agents.make("SHAC", environment="ivy_gym/Ant-v5")
+    assert shac.config["normalize_observations"] and shac.config["adam_beta1"] == 0.7
+    assert shac.config["hidden_sizes"] == (128, 64, 32) and shac.config["activation"] == "elu"
+    assert shac.critic_updater.beta2 == shac.actor_updater.beta2 == 0.95
+    # agents without a locomotion row take their row for Gymnasium's MuJoCo tasks
+    assert defaults_for("PPO", "ivy_gym/Hopper-v5") == defaults_for("PPO", "Hopper-v5") != {}
+
+
+def test_initial_states_are_drawn_as_the_task_resets():
+    """The starts of the rollouts on the Ant carry the torso's position as MuJoCo computes it
+    (the forward reward's first step reads it), from Gymnasium's reset draws."""
+    mujoco = pytest.importorskip("mujoco")
+    agent = SHAC(batch_size=5)
+    agent.bind_environment("ivy_gym/Ant-v5", {})
+    agent.rng, agent.np_dtype = np.random.default_rng(3), np.float64
+    states = agent._initial_states(5)
+    core = agent.core
+    model = mujoco.MjModel.from_xml_path(gymnasium_asset(core.params.xml_file))
+    data = mujoco.MjData(model)
+    nq, nv = model.nq, model.nv
+    for state in states:
+        data.qpos[:], data.qvel[:] = state[:nq], state[nq : nq + nv]
+        mujoco.mj_forward(model, data)
+        np.testing.assert_allclose(state[-2:], data.body("torso").xpos[:2], atol=1e-12)
+    noise = states[:, :nq] - core.init_qpos
+    assert np.abs(noise).max() <= 0.1 and noise.std() > 0.01
+
+
+def test_a_gradient_that_is_not_finite_is_not_applied(diff_backend):
+    """A rollout whose derivative overflows leaves the policy and Adam's state as they were
+    (and says so in ``skipped``); the next finite gradient is applied as usual."""
+    from ivy_rl.differentiable_parts import AnalyticPolicyGradient
+
+    xp = ivy.get_framework(f=diff_backend)
+    updater = AnalyticPolicyGradient(lr=0.1).initialize(xp)
+    v = {"w": xp.asarray(np.array([0.0, 1.0]))}
+    state = updater.init_state(v)
+
+    def overflowing(v):  # sqrt's derivative at 0 is infinite
+        return xp.sum(xp.sqrt(v["w"])), {}
+
+    new_v, new_state, infos = updater.minimize(overflowing, v, state)
+    assert float(xp.to_numpy(infos["skipped"])) == 1.0
+    assert not np.isfinite(float(xp.to_numpy(infos["gradient_norm"])))
+    for new, old in zip(ivy.nest.nest_leaves((new_v, new_state)), ivy.nest.nest_leaves((v, state))):
+        np.testing.assert_array_equal(np.asarray(xp.to_numpy(new)), np.asarray(xp.to_numpy(old)))
+    new_v, _, infos = updater.minimize(lambda v: (xp.sum(v["w"] ** 2), {}), v, state)
+    assert float(xp.to_numpy(infos["skipped"])) == 0.0
+    np.testing.assert_allclose(np.asarray(xp.to_numpy(new_v["w"])), [0.0, 0.9], atol=1e-6)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import os
 import struct
@@ -451,3 +452,26 @@ def test_the_replay_saves_its_filled_rows_and_loads_them_into_the_whole_ring():
     full = {**replay.state_dict(), **{f"arrays.{k}": v for k, v in replay.arrays.items()}}
     again.load_state_dict(full, xp)
     np.testing.assert_array_equal(again.arrays["rewards"], replay.arrays["rewards"])
+
+
+def test_ivy_gym_mujoco_tasks_run_on_the_runs_compiling_framework():
+    """An ivy_gym MuJoCo task's workers and test environment run on the run's framework where
+    its compiler keeps loops (a compiled Hopper step is 18x faster on jax than on numpy);
+    elsewhere, and for the classic tasks and Gymnasium's own, the facade's default; a
+    framework the user gives is kept."""
+    from ivy_rl.environments import run_env_kwargs
+
+    pytest.importorskip("jax")
+    assert run_env_kwargs("ivy_gym/Hopper-v5", None, "jax") == {"framework": "jax"}
+    assert run_env_kwargs("ivy_gym/Ant-v5", {"healthy_reward": 2.0}, ivy.jax) == {
+        "healthy_reward": 2.0,
+        "framework": "jax",
+    }
+    assert run_env_kwargs("ivy_gym/Hopper-v5", {"framework": "numpy"}, "jax") == {
+        "framework": "numpy"
+    }
+    assert run_env_kwargs("ivy_gym/Hopper-v5", {}, "numpy") == {}
+    assert run_env_kwargs("ivy_gym/Pendulum-v1", {}, "jax") == {}
+    assert run_env_kwargs("Hopper-v5", {}, "jax") == {}
+    if importlib.util.find_spec("torch") is not None:  # torch.compile unrolls loops
+        assert run_env_kwargs("ivy_gym/Hopper-v5", {}, "torch") == {}
