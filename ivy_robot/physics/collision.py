@@ -296,12 +296,15 @@ def _capsule_capsule(xp, pos1, mat1, size1, pos2, mat2, size2, margin) -> _Raw:
     mc = _dot(xp, axis2, axis2)
     u = -_dot(xp, axis1, dif)
     v = _dot(xp, axis2, dif)
-    det = ma * mc - mb * mb
-    parallel = xp.abs(det) < PARALLEL_SIN2 * ma * mc
     # the contacts' points on segment 1: the point of line 1 nearest to line 2 (general
-    # configuration; the second contact unused), or its ends -z and +z (parallel axes)
+    # configuration; the second contact unused), or its ends -z and +z (parallel axes).
+    # Parallel is decided on |axis1 x axis2|², the divisor below (= ma mc - mb², MuJoCo's
+    # determinant, in exact arithmetic): in float32 the determinant of near-parallel axes can
+    # pass the test while the cross product is 0, and the division's derivative is then NaN.
     normal = xp.cross(axis1, axis2)
-    safe_sqr = xp.where(parallel, xp.ones_like(det), _dot(xp, normal, normal))
+    sqr = _dot(xp, normal, normal)
+    parallel = sqr < PARALLEL_SIN2 * ma * mc
+    safe_sqr = xp.where(parallel, xp.ones_like(sqr), sqr)
     nearest = _dot(xp, xp.cross(-dif, axis2), normal) / safe_sqr
     first = xp.where(parallel, -xp.ones_like(nearest), xp.clip(nearest, -1.0, 1.0))
     x1 = xp.stack([first, xp.ones_like(first)], axis=-1)

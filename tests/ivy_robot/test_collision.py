@@ -664,3 +664,27 @@ def test_compiled_equals_eager(graph_backend):
     compiled = _collider(graph_backend, table)(pos, mat)
     for a, b in zip(eager, compiled):
         np.testing.assert_allclose(numpy_of(b), numpy_of(a), rtol=1e-12, atol=1e-12)
+
+
+def test_near_parallel_capsules_in_float32_have_finite_gradients(diff_backend):
+    """A float32 Hopper pose met in training (the thigh and leg angles cancel to 1e-9, so the
+    torso, thigh and leg capsules are parallel to within float32's resolution): the contacts'
+    gradients are finite. The parallel test used to read MuJoCo's determinant while dividing
+    by the cross product's square, which float32 rounded to 0 where the determinant was not."""
+    from ivy_robot.physics import kinematics, read_model
+
+    model = read_model(mujoco.MjModel.from_xml_path(GYMNASIUM["hopper"]))
+    qpos = np.array(
+        [-1.3134272e-03, 1.2449507e00, 1.0505068e-03, 1.1393814e-03, -1.1393793e-03, 1.6544214e-03],
+        np.float32,
+    )[None]
+    xp = getattr(ivy, diff_backend)
+
+    def fn(q):
+        kin = kinematics(xp, model, q)
+        found = C.collide(xp, model.contacts, kin["geom_xpos"], kin["geom_xmat"])
+        return xp.concat([found.dist, xp.reshape(found.pos, (1, -1))], axis=-1)
+
+    weights = np.random.default_rng(0).standard_normal((1, 14 * 4)).astype(np.float32)
+    value, (grad,) = native_value_and_grads(diff_backend, fn, [qpos], weights)
+    assert grad.dtype == np.float32 and np.isfinite(value) and np.all(np.isfinite(grad))
