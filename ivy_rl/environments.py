@@ -52,7 +52,7 @@ __all__ = [
     "resolve_wrappers",
 ]
 
-VECTORIZATION_MODES = ("sync", "async", "ray")
+VECTORIZATION_MODES = ("sync", "async", "ray", "batched")
 ASYNC_START_METHOD = "forkserver"  # how async workers start (multiprocessing's start method)
 
 
@@ -316,7 +316,10 @@ def make_vector_env(
         workers: number of environments.
         vectorization: ``'sync'`` (one process), ``'async'`` (one subprocess per environment,
             started by multiprocessing's ``forkserver``, never a fork of this process, which may
-            have framework threads running) or ``'ray'`` (Ray actors; the ``[distributed]`` extra).
+            have framework threads running), ``'ray'`` (Ray actors; the ``[distributed]`` extra)
+            or ``'batched'`` (ivy_gym's tasks: every copy in one batched, compiled call of the
+            physics, :class:`ivy_gym.gymnasium.GymnasiumVectorEnv`; hundreds or thousands of
+            copies cost little more than one).
         env_kwargs: keyword arguments of ``gymnasium.make``.
         time_feature: append the remaining time to the observations.
         ray_groups: with ``'ray'``, the number of actors (default: one per environment).
@@ -333,6 +336,24 @@ def make_vector_env(
         raise ValueError(f"workers must be >= 1, got {workers}")
     check_environment_id(env_id)
     wrap = _wrappers(wrappers, time_feature)  # unknown wrappers fail here, in this process
+    if vectorization == "batched":
+        if not env_id.split(":", 1)[-1].startswith("ivy_gym/"):
+            raise ValueError(
+                f"vectorization 'batched' steps every copy of an ivy_gym task in one call; "
+                f"{env_id!r} is not one: use 'sync' or 'async'"
+            )
+        if wrap:
+            raise ValueError(
+                "vectorization 'batched' takes no wrappers or time feature (they wrap single "
+                "environments): use 'sync' or 'async' with them"
+            )
+        return gym.make_vec(
+            env_id,
+            num_envs=workers,
+            vectorization_mode="vector_entry_point",
+            autoreset_mode=gym.vector.AutoresetMode.DISABLED,
+            **(env_kwargs or {}),
+        )
     if vectorization == "ray":
         from ivy_rl.distributed import RayVectorEnv
 

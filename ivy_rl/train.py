@@ -118,8 +118,9 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--workers", type=int, help="parallel environments (default 8)")
     p.add_argument(
         "--vectorization",
-        choices=("sync", "async", "ray"),
-        help="environment workers: one process, subprocesses, or Ray actors",
+        choices=("sync", "async", "ray", "batched"),
+        help="environment workers: one process, subprocesses, Ray actors, or (ivy_gym) one "
+        "batched call",
     )
     p.add_argument("--ray-groups", type=int, help="Ray actors (with --vectorization ray)")
     p.add_argument(

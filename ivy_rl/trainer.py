@@ -181,7 +181,8 @@ class Trainer:
             dtype: float dtype of the agent (default ``'float32'``).
             compile: compile the agent's functions (False: eager).
             device: where the agent's arrays live (``'cpu'``, ``'gpu:0'``).
-            vectorization: ``'sync'``, ``'async'`` or ``'ray'``.
+            vectorization: ``'sync'``, ``'async'``, ``'ray'`` or ``'batched'`` (ivy_gym's tasks,
+                every worker in one call: :func:`ivy_rl.environments.make_vector_env`).
             env_kwargs: keyword arguments of ``gymnasium.make``.
             time_feature: append the remaining time to the observations, and treat time limits
                 as terminal (False: time limits are resets that agents bootstrap through).

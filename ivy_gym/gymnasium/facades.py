@@ -399,12 +399,20 @@ class GymnasiumEnv(_Facade, gymnasium.Env):
 
 class GymnasiumVectorEnv(_Facade, VectorEnv):
     """A native Gymnasium ``VectorEnv``: ``num_envs`` copies of an ivy_gym core stepped by one
-    batched array call, with Gymnasium's next-step autoreset and a time limit.
+    batched array call, with Gymnasium's next-step autoreset (or none) and a time limit.
 
     At the step after an environment terminated or was truncated it restarts instead: its
     action is ignored, the observation is a fresh initial one, the reward 0 and both flags
     False (``metadata["autoreset_mode"]`` is ``AutoresetMode.NEXT_STEP``, as Gymnasium's own
     vectorised CartPole).
+
+    With ``autoreset_mode=AutoresetMode.DISABLED`` nothing restarts by itself: the caller resets
+    the environments it chooses, ``reset(seed=seeds, options={"reset_mask": mask})``, as
+    Gymnasium's ``SyncVectorEnv`` with that mode allows (ivy_rl's trainer drives its workers so).
+    Each copy then has its own generator, as each environment of a ``SyncVectorEnv`` has: a seed
+    ``s`` for copy ``i`` (a list of seeds, or ``seed + i`` for a number) draws its state as
+    ``gymnasium.make(...).reset(seed=s)`` draws it; a copy reset without a seed continues its
+    own generator.
 
     Args:
         core: the environment's core.
@@ -414,6 +422,8 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         compile: run the batched step (and the reset's kernels) through ``ivy.compile_fn``; by
             default where the compiler keeps loops (jax, tensorflow: they also start in a
             second; torch.compile takes ~20 s).
+        autoreset_mode: ``AutoresetMode.NEXT_STEP`` (default) or ``AutoresetMode.DISABLED``
+            (or their names).
 
     Example:
         >>> envs = GymnasiumVectorEnv(ivy_gym.CartPole(), 1024, framework="jax", discrete=True)
@@ -433,8 +443,17 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         discrete: bool = False,
         compile: bool | None = None,
         device: str | None = None,
+        autoreset_mode: AutoresetMode | str = AutoresetMode.NEXT_STEP,
     ) -> None:
         self._setup(core, framework, dtype, discrete, device, compile)
+        modes = (AutoresetMode.NEXT_STEP, AutoresetMode.DISABLED)
+        mode = AutoresetMode(autoreset_mode) if isinstance(autoreset_mode, str) else autoreset_mode
+        if mode not in modes:
+            raise ValueError(
+                f"ivy_gym: autoreset_mode must be one of {[m.value for m in modes]}, got "
+                f"{autoreset_mode!r}."
+            )
+        self._autoreset = mode is AutoresetMode.NEXT_STEP
         if int(num_envs) < 1:
             raise ValueError(f"ivy_gym: num_envs must be at least 1, got {num_envs}.")
         if render_mode not in (None, "rgb_array"):
@@ -444,7 +463,7 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         self.metadata = {
             "render_modes": ["rgb_array"],
             "render_fps": core.render_fps,
-            "autoreset_mode": AutoresetMode.NEXT_STEP,
+            "autoreset_mode": mode,
         }
         self.num_envs = int(num_envs)
         self.render_mode = render_mode
@@ -456,19 +475,58 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
         self._state = None
         self._steps = np.zeros(self.num_envs, np.int64)
         self._prev_done = np.zeros(self.num_envs, bool)
+        self._rngs: list | None = None  # the copies' own generators (without autoreset)
 
     @property
     def state(self) -> np.ndarray | None:
         """The cores' states as a float64 numpy array ``(num_envs, state_dim)``."""
         return None if self._state is None else np.asarray(ivy.to_numpy(self._state), np.float64)
 
-    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
+    def reset(self, *, seed: int | list | None = None, options: dict[str, Any] | None = None):
+        if not self._autoreset:
+            return self._masked_reset(seed, options)
         super().reset(seed=seed)
         draws = self.core.draw_initial(self.np_random, self.num_envs)
         self._state, obs, info = self._to_backend(draws)
         self._steps[:] = 0
         self._prev_done[:] = False
         return self._observation(obs), self._vector_info(info, self.action_dtype)
+
+    def _masked_reset(self, seed, options):
+        """A reset without autoreset: the copies of ``options['reset_mask']`` (all by default)
+        draw from their own generators, seeded by ``seed``; the others keep their state."""
+        n = self.num_envs
+        mask = np.ones(n, bool) if not options else options.get("reset_mask", np.ones(n, bool))
+        mask = np.asarray(mask, bool)
+        if mask.shape != (n,):
+            raise ValueError(f"{self._name}: reset_mask must have shape ({n},), got {mask.shape}.")
+        if self._state is None and not mask.all():
+            raise RuntimeError(f"{self._name}: the first reset() must reset every copy.")
+        if seed is None or isinstance(seed, (list, tuple, np.ndarray)):
+            seeds = [None] * n if seed is None else list(seed)
+            if len(seeds) != n:
+                raise ValueError(f"{self._name}: {len(seeds)} seeds for {n} environments.")
+        else:
+            seeds = [int(seed) + i for i in range(n)]
+        if self._rngs is None:
+            self._rngs = [gymnasium.utils.seeding.np_random(s)[0] for s in seeds]
+        else:
+            for i in np.flatnonzero(mask):
+                if seeds[i] is not None:
+                    self._rngs[i] = gymnasium.utils.seeding.np_random(seeds[i])[0]
+        draws = np.zeros((n, self.core.state_dim)) if self._state is None else self.state
+        for i in np.flatnonzero(mask):
+            draws[i] = self.core.draw_initial(self._rngs[i])
+        # the whole batch through the reset's kernels (one compiled shape); kept copies after
+        fresh, obs, info = self._to_backend(draws)
+        state_np, obs = self._numpy(fresh), self._observation(obs)
+        if not mask.all():  # the others keep their state and last observation
+            state_np = np.where(mask[:, None], state_np, self._numpy(self._state))
+            obs = np.where(mask[:, None], obs, self._last_obs)
+        self._state = self.xp.asarray(state_np, device=self._device)
+        self._steps[mask] = 0
+        self._last_obs = obs
+        return obs, self._vector_info(info, self.action_dtype)
 
     def step(self, actions):
         if self._state is None:
@@ -484,7 +542,7 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
             truncated = np.zeros(self.num_envs, bool)
         else:
             truncated = steps >= self.max_episode_steps
-        restart = self._prev_done
+        restart = self._prev_done if self._autoreset else np.zeros(self.num_envs, bool)
         restarts = np.count_nonzero(restart)
         if restarts:
             # Gymnasium's next-step autoreset, in place on numpy copies of this step's outputs;
@@ -509,6 +567,7 @@ class GymnasiumVectorEnv(_Facade, VectorEnv):
             obs = obs.copy()  # the caller's to change: not a view of the state
         self._state = state
         self._prev_done = terminated | truncated
+        self._last_obs = obs
         return obs, reward, terminated, truncated, info
 
     def _restart_info(self, info: dict, fresh_info: dict, restart: np.ndarray) -> dict:

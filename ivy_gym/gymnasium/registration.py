@@ -95,6 +95,7 @@ def make_vector_env(
     max_episode_steps: int | None = None,
     compile: bool | None = None,
     device: str | None = None,
+    autoreset_mode: Any = "NextStep",
     **core_kwargs: Any,
 ) -> GymnasiumVectorEnv:
     """The Gymnasium vector entry point of ``ivy_gym/<task>``.
@@ -113,6 +114,7 @@ def make_vector_env(
         discrete=discrete,
         compile=compile,
         device=device,
+        autoreset_mode=autoreset_mode,
     )
 
 

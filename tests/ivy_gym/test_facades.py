@@ -301,3 +301,40 @@ def test_facades_of_equal_tasks_share_their_compiled_step():
     one.step(np.array([2.0], np.float32))
     np.testing.assert_array_equal(two.state, start)
     assert not np.array_equal(one.state, start)
+
+
+def test_vector_env_without_autoreset_resets_the_copies_asked(backend):
+    """``autoreset_mode=Disabled``: a terminated copy is not restarted by the next step; a reset
+    with a mask restarts only those copies, each from its seed as a single environment's reset,
+    and leaves the others' states and observations."""
+    envs = gymnasium.make_vec(
+        "ivy_gym/CartPole-v1",
+        num_envs=3,
+        vectorization_mode="vector_entry_point",
+        framework=backend,
+        autoreset_mode=AutoresetMode.DISABLED,
+    )
+    assert envs.metadata["autoreset_mode"] is AutoresetMode.DISABLED
+    single = gymnasium.make("ivy_gym/CartPole-v1", framework=backend)
+    obs, _ = envs.reset(seed=[4, 5, 6])
+    np.testing.assert_array_equal(obs, [single.reset(seed=s)[0] for s in (4, 5, 6)])
+    push = np.array([1, 1, 0])
+    for _ in range(60):  # pushed one way, the first two fall
+        obs, _, terminated, _, _ = envs.step(push)
+        if terminated[:2].all():
+            break
+    assert terminated[:2].all()
+    after, _, still, _, _ = envs.step(push)  # no restart: the fallen keep falling
+    assert still[:2].all() and np.all(np.abs(after[:2, 2]) > np.abs(obs[:2, 2]))
+    kept = envs.unwrapped.state
+    fresh, _ = envs.reset(seed=[None, 8, None], options={"reset_mask": [False, True, False]})
+    np.testing.assert_array_equal(fresh[[0, 2]], after[[0, 2]])
+    np.testing.assert_array_equal(envs.unwrapped.state[[0, 2]], kept[[0, 2]])
+    np.testing.assert_array_equal(fresh[1], single.reset(seed=8)[0])
+    with pytest.raises(ValueError, match="autoreset_mode must be one of"):
+        gymnasium.make_vec(
+            "ivy_gym/CartPole-v1",
+            num_envs=2,
+            vectorization_mode="vector_entry_point",
+            autoreset_mode=AutoresetMode.SAME_STEP,
+        )

@@ -10,9 +10,9 @@ import numpy as np
 from ivy_rl import environments
 
 
-def observed(mode, count, seed, actions, **kwargs):
+def observed(mode, count, seed, actions, env_id="CartPole-v1", **kwargs):
     """Everything a run of Workers returns for fixed actions."""
-    workers = environments.Workers("CartPole-v1", count, seed=seed, vectorization=mode, **kwargs)
+    workers = environments.Workers(env_id, count, seed=seed, vectorization=mode, **kwargs)
     seen = [workers.start()]
     for a in actions:
         obs, infos = workers.step(a)

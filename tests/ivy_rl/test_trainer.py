@@ -288,6 +288,29 @@ def test_async_workers_match_sync_workers():
     np.testing.assert_allclose(after_one[:, -1], 1.0 - 1.0 / 500, rtol=1e-6)
 
 
+def test_batched_workers_match_sync_workers_and_restore_from_checkpoints():
+    """``vectorization='batched'``: every worker of an ivy_gym task in one call of the physics,
+    with what sync workers of the same task see (episodes ending and restarting with their own
+    seeds), and a checkpoint's replay brings new workers to the same state."""
+    actions = np.random.default_rng(0).integers(0, 2, size=(80, 5))
+    sync = observed("sync", 5, 2, actions, env_id="ivy_gym/CartPole-v1")
+    assert_same_runs(sync, observed("batched", 5, 2, actions, env_id="ivy_gym/CartPole-v1"))
+    assert sum(resets.sum() for resets in sync[4::4]) >= 5  # episodes ended and restarted
+    first = environments.Workers("ivy_gym/CartPole-v1", 5, seed=2, vectorization="batched")
+    first.start()
+    for a in actions[:30]:
+        first.step(a)
+    arrays, meta = first.state_dict()
+    second = environments.Workers("ivy_gym/CartPole-v1", 5, seed=9, vectorization="batched")
+    np.testing.assert_array_equal(second.load_state_dict(arrays, meta), first.observations)
+    for a in actions[30:]:
+        assert_same_runs([*first.step(a)[1].values()], [*second.step(a)[1].values()])
+    with pytest.raises(ValueError, match="'batched' steps every copy of an ivy_gym task"):
+        environments.Workers("CartPole-v1", 2, vectorization="batched")
+    with pytest.raises(ValueError, match="no wrappers or time feature"):
+        environments.Workers("ivy_gym/CartPole-v1", 2, vectorization="batched", time_feature=True)
+
+
 def test_time_feature_counts_down_to_the_time_limit():
     env = environments.TimeFeature(gym.make("Pendulum-v1"))
     obs, _ = env.reset(seed=0)
