@@ -85,7 +85,13 @@ _TD3_MUJOCO = dict(hidden_sizes=(400, 300), normalize_observations=False)
 # global norm of 1, observations normalised by running moments, returns not; the critic: 16
 # passes of 4 mini-batches on TD(0.95) targets, its target moved 80% of the way per update.
 # Their Hopper runs 256 environments; 64 here (their Ant's): an update at 256 takes 4x as long
-# on a 2-core CPU, for the same steps per second. APG takes the policy's side.
+# on a 2-core CPU, for the same steps per second. APG takes the policy's side. SHAC's windows
+# are 8 steps, not 32: Gymnasium's Hopper-v5 rewards staying up by a constant and a termination,
+# which have no gradient (the paper's dflex Hopper rewards height and angle), so with 32 steps
+# the policy learned to dive (test score 34 after 1M steps, episodes of 19 steps: the windows
+# end terminated and the critic's value never enters the loss); with 8 it stood for the whole
+# episode from 60k steps on (about 1,000), with 16 it stood once and fell again (seed 0, jax;
+# docs/ivy_rl.md, "Learning through contacts").
 _SHAC_PAPER_ACTOR = dict(
     batch_size=64,
     horizon=32,
@@ -174,6 +180,7 @@ DEFAULTS: dict[str, dict[str, dict[str, Any]]] = {
         ),
         "ivy_gym_locomotion": dict(
             _SHAC_PAPER_ACTOR,
+            horizon=8,
             critic_hidden_sizes=(64, 64),
             critic_lr="linear:2e-4",
             critic_iterations=16,
