@@ -26,6 +26,7 @@ from ivy_rl.settings import Setting, check
 
 __all__ = [
     "FAMILIES",
+    "FALLBACK",
     "DEFAULTS",
     "SETTINGS",
     "Setting",
