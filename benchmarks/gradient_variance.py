@@ -47,7 +47,7 @@ def gradients(task: str, horizon: int, rollouts: int, framework: str, dtype: str
     agent.bind_environment(env_id, {})
     agent.initialize(env.observation_space, env.action_space, seed=seed, f=framework, dtype=dtype)
     xp, core = agent.xp, agent.core
-    policy = agent._policy(agent._obs_stats(agent.obs_moments))
+    policy = agent._policy(agent._stats(agent.obs_moments))
     gamma = agent.config["discount"]
     discounts = xp.asarray(np.array([[gamma**t] for t in range(horizon)], dtype), dtype=dtype)
     start = xp.asarray(agent._initial_states(rollouts), dtype=dtype)

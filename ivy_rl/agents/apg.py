@@ -62,7 +62,7 @@ class APG(DifferentiableAgent):
         """One Adam step of the actor from rollouts of the initial states ``start``, at the
         scheduled learning rate; the observations' moments with the rollouts' added."""
         actor_v, actor_state, logs, observations = self._actor_step(
-            v["actor"], states["actor"], self._obs_stats(obs_moments), start, scheduled["actor_lr"]
+            v["actor"], states["actor"], self._stats(obs_moments), start, scheduled["actor_lr"]
         )
         obs_moments = self._fold_observations(obs_moments, observations)
         return {"actor": actor_v}, {"actor": actor_state}, obs_moments, logs

@@ -35,7 +35,7 @@ import numpy as np
 
 from ivy_rl.agents.through_gym import DifferentiableAgent
 from ivy_rl.differentiable_parts import ActorValueModel, TargetValueRegression
-from ivy_rl.normalizers import _fold_moments, _standard_deviation
+from ivy_rl.normalizers import _fold_moments
 from ivy_rl.returns import _lambda_returns
 
 __all__ = ["SHAC"]
@@ -124,7 +124,7 @@ class SHAC(DifferentiableAgent):
         final_states, restart, logs)``. The rollout, the critic's values and its regression
         see the observations normalised by the moments before this update's rollout."""
         stats = self._return_stats(moments)
-        obs_stats = self._obs_stats(obs_moments)
+        obs_stats = self._stats(obs_moments)
         actor_v, actor_state, data, logs = self._actor_step(
             v["actor"], states["actor"], v["critic"], stats, obs_stats, start, scheduled["actor_lr"]
         )
@@ -146,10 +146,7 @@ class SHAC(DifferentiableAgent):
 
     def _return_stats(self, moments):
         """``{'mean', 'std'}`` of the critic's targets (None without ``normalize_returns``)."""
-        if not self.config["normalize_returns"]:
-            return None
-        std = _standard_deviation(self.xp, moments["mean"], moments["mean_sq"], 1e-2)
-        return {"mean": moments["mean"], "std": std}
+        return self._stats(moments) if self.config["normalize_returns"] else None
 
     def _actor_step(self, actor_v, actor_state, critic_v, stats, obs_stats, start, lr):
         xp = self.xp

@@ -258,8 +258,8 @@ class DifferentiableAgent(Agent):
     # Pure functions
     # ------------------------------------------------------------------------------------------
 
-    def _obs_stats(self, moments):
-        """``{'mean', 'std'}`` of the observations from their moments (None: not normalised)."""
+    def _stats(self, moments):
+        """``{'mean', 'std'}`` from running moments (None: None)."""
         if moments is None:
             return None
         std = _standard_deviation(self.xp, moments["mean"], moments["mean_sq"], 1e-2)
@@ -318,7 +318,7 @@ class DifferentiableAgent(Agent):
         return self.actor_updater.minimize(loss_fn, actor_v, actor_state, lr)
 
     def _mode_fn(self, actor_v, obs_moments, observations):
-        return self.actor(observations, self._obs_stats(obs_moments), v=actor_v).mode()
+        return self.actor(observations, self._stats(obs_moments), v=actor_v).mode()
 
     def _update_fn(self, v, states, *args):
         """The whole update (pure, compiled with ``fusion='update'``); its last argument is

@@ -503,8 +503,10 @@ def _unshared(xp, data: Data) -> Data:
     """The data with each field in memory of its own, on backends whose arrays can share it
     (``mutable_arrays``): torch's loop operators, which keep the RK4 stages and the solver's
     iterations as loops under ``torch.compile``, refuse two captured tensors that share memory,
-    as the slices of one state vector (``qpos``, ``qvel``) do. Elsewhere the data itself."""
-    if not getattr(getattr(xp, "capabilities", None), "mutable_arrays", False):
+    as the slices of one state vector (``qpos``, ``qvel``) do. Elsewhere (no compiler, or
+    arrays that never share memory) the data itself."""
+    capabilities = getattr(xp, "capabilities", None)
+    if not (getattr(capabilities, "mutable_arrays", False) and capabilities.compilation):
         return data
     fields = data.fields().items()
     return data.replace(**{k: xp.asarray(v, copy=True) for k, v in fields if v is not None})

@@ -346,7 +346,7 @@ def test_observation_moments_are_those_of_every_rollout(diff_backend, cls):
             state = agent.rng.bit_generator.state
             start = agent._initial_states(4)
             agent.rng.bit_generator.state = state
-        traj = agent._rollout(actor_v, xp.asarray(start), 3, obs_stats=agent._obs_stats(moments))
+        traj = agent._rollout(actor_v, xp.asarray(start), 3, obs_stats=agent._stats(moments))
         observations.append(np.asarray(xp.to_numpy(traj.observations)).reshape(-1, 3))
         agent._learn()
     seen = np.concatenate(observations)
